@@ -1,0 +1,74 @@
+// Fixed-point and integer helpers shared by every model unit.
+// The model keeps register values in int64_t (or __int128 for the setup dividends); the width a
+// value is allowed to occupy comes from the profile (see widths.h) and is checked here.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace rastersim {
+
+using i128 = __int128;
+
+// Thrown when a value leaves the width the hardware declares for it. In the hardware this would be
+// a silent wrap, so the model treats it as a specification bug, never as data.
+class WidthOverflow : public std::logic_error {
+ public:
+  using std::logic_error::logic_error;
+};
+
+// Smallest two's-complement width b holding v: -2^(b-1) <= v < 2^(b-1).
+constexpr int signed_bits(i128 v) {
+  int bits = 1;
+  while (!(v >= -(i128(1) << (bits - 1)) && v < (i128(1) << (bits - 1)))) ++bits;
+  return bits;
+}
+
+// Smallest unsigned width b holding v >= 0: v < 2^b (at least 1).
+constexpr int unsigned_bits(i128 v) {
+  int bits = 1;
+  while (v >= (i128(1) << bits)) ++bits;
+  return bits;
+}
+
+constexpr bool fits_signed(i128 v, int bits) {
+  return v >= -(i128(1) << (bits - 1)) && v < (i128(1) << (bits - 1));
+}
+
+std::string to_string_i128(i128 v);
+
+// Throws WidthOverflow naming the register when v does not fit a signed register of `bits`.
+inline void check_signed(i128 v, int bits, const char* what) {
+  if (!fits_signed(v, bits))
+    throw WidthOverflow(std::string("value ") + to_string_i128(v) + " of " + what +
+                        " does not fit s" + std::to_string(bits));
+}
+
+// Reduces v modulo 2^bits into the signed range: what a two's-complement register of `bits` holds.
+// Used only for registers the hardware deliberately lets wrap (the plane registers).
+inline int64_t wrap_signed(i128 v, int bits) {
+  const unsigned shift = 128u - unsigned(bits);
+  return int64_t((i128)((unsigned __int128)v << shift) >> shift);
+}
+
+// Floor division (rounds toward minus infinity) with a positive divisor, exactly as the setup
+// unit's divider computes it: an unsigned restoring division of |n| by d, then for a negative
+// dividend q = -q0 - (r0 != 0).
+struct FloorDiv {
+  i128 quotient;
+  i128 remainder;  // 0 <= remainder < divisor
+};
+inline FloorDiv floor_div(i128 n, i128 d) {
+  const unsigned __int128 mag = n < 0 ? (unsigned __int128)(-n) : (unsigned __int128)n;
+  const unsigned __int128 q0 = mag / (unsigned __int128)d;
+  const unsigned __int128 r0 = mag % (unsigned __int128)d;
+  if (n >= 0) return {i128(q0), i128(r0)};
+  if (r0 == 0) return {-i128(q0), 0};
+  return {-i128(q0) - 1, d - i128(r0)};
+}
+
+// Arithmetic shift right = floor division by 2^s for any sign.
+constexpr int64_t asr(int64_t v, int s) { return v >> s; }
+
+}  // namespace rastersim

@@ -1,0 +1,93 @@
+#include "pipeline.h"
+
+#include <algorithm>
+
+namespace rastersim {
+
+Pipeline::Pipeline(const Profile& profile)
+    : profile_(profile),
+      setup_(profile),
+      walker_(profile, setup_.widths()),
+      adders_(setup_.widths(), profile.z_bits, profile.shading == Shading::Gouraud),
+      zbuffer_(profile) {}
+
+void Pipeline::reset() {
+  zbuffer_.clear();
+  walker_counters_ = {};
+  stats_ = {};
+  next_index_ = 0;
+  setup_free_ = walker_free_ = 0;
+  last_busy_ = -1;
+}
+
+// The walker's fragment output, wired to the z-buffer's input.
+template <bool Trace>
+struct Pipeline::Glue {
+  Pipeline& p;
+  TriangleRecord& record;
+  int64_t fragment(int x, int y, const ZAdder& adders, int64_t cycle) {
+    const uint32_t address = uint32_t(y) * uint32_t(p.profile_.width) + uint32_t(x);
+    const int64_t accepted = p.zbuffer_.accept(address, cycle);
+    const uint32_t z = adders.depth();
+    const Rgb color = adders.color();
+    const bool pass = p.zbuffer_.test_and_write(address, z, color);
+    ++record.fragments;
+    record.depth_pass += pass;
+    if (Trace) p.sink_->on_fragment(Fragment{record.index, x, y, z, color, pass, accepted});
+    return accepted;
+  }
+};
+
+template <bool Trace>
+int64_t Pipeline::walk(const SetupResult& s, int64_t load_cycle, TriangleRecord& record) {
+  Glue<Trace> glue{*this, record};
+  return walker_.walk(s, adders_, load_cycle, glue, walker_counters_);
+}
+
+void Pipeline::submit(const SnappedTriangle& tri) {
+  TriangleRecord record;
+  record.index = next_index_++;
+  const SetupResult& s = last_setup_ = setup_.run(tri);
+  record.status = s.status;
+  record.setup_accept = setup_free_;
+  ++stats_.triangles;
+  const int setup_cycles = setup_.cycles(s.status);
+  stats_.setup.busy += setup_cycles;
+  record.setup_done = record.setup_accept + setup_cycles - 1;
+  if (s.status != SetupStatus::Drawn) {
+    switch (s.status) {
+      case SetupStatus::Degenerate: ++stats_.triangles_degenerate; break;
+      case SetupStatus::Culled: ++stats_.triangles_culled; break;
+      default: ++stats_.triangles_offscreen; break;
+    }
+    setup_free_ = record.setup_done + 1;
+    last_busy_ = std::max(last_busy_, record.setup_done);
+  } else {
+    ++stats_.triangles_drawn;
+    // The walker takes the record once the output is valid and the walker is free.
+    record.walker_load = std::max(record.setup_done, walker_free_);
+    stats_.setup.stall += record.walker_load - record.setup_done;
+    setup_free_ = record.walker_load + 1;
+    zbuffer_.begin_triangle();
+    record.walker_end = sink_ ? walk<true>(s, record.walker_load, record) : walk<false>(s, record.walker_load, record);
+    walker_free_ = record.walker_end + 1;
+    if (record.fragments > 0) record.last_write = zbuffer_.last_busy_cycle();
+    last_busy_ = std::max({last_busy_, record.walker_end, zbuffer_.last_busy_cycle()});
+  }
+  if (log_) log_->push_back(record);
+}
+
+const FrameStats& Pipeline::stats() {
+  const ZBufferCounters& z = zbuffer_.counters();
+  stats_.candidates = walker_counters_.candidates;
+  stats_.depth_pass = z.depth_pass;
+  stats_.depth_fail = z.depth_fail;
+  stats_.fragments = z.depth_pass + z.depth_fail;
+  stats_.cycles = last_busy_ + 1;
+  stats_.walker = {walker_counters_.busy, walker_counters_.stall};
+  stats_.z_adder = stats_.walker;  // the adders step in lockstep with the walker
+  stats_.zbuffer = {z.busy, z.stall};
+  return stats_;
+}
+
+}  // namespace rastersim

@@ -1,0 +1,106 @@
+// The pipeline: setup -> walker (+ Z adder) -> z-buffer, with valid/ready coupling, as the RTL top
+// connects them. Computes the fragments, the final buffers and the exact cycle of every event
+// (docs/cycle-model.md). One Pipeline renders one frame; reset() starts another.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "profile.h"
+#include "scanline_walker.h"
+#include "triangle.h"
+#include "triangle_setup.h"
+#include "widths.h"
+#include "z_adder.h"
+#include "zbuffer.h"
+
+namespace rastersim {
+
+struct Fragment {
+  int64_t tri;     // triangle index in submission order
+  int x, y;        // pixel
+  uint32_t z;      // depth entering the test, uN
+  Rgb color;
+  bool pass;       // depth test result
+  int64_t cycle;   // cycle the z-buffer accepted it
+};
+
+class FragmentSink {
+ public:
+  virtual ~FragmentSink() = default;
+  virtual void on_fragment(const Fragment& fragment) = 0;
+};
+
+// The transaction record of one triangle: what the setup unit decided and when each unit handled it.
+struct TriangleRecord {
+  int64_t index = 0;
+  SetupStatus status = SetupStatus::Degenerate;
+  int64_t setup_accept = 0;    // cycle the setup unit accepted the triangle
+  int64_t setup_done = 0;      // cycle its output became valid (drawn) or its last cycle (rejected)
+  int64_t walker_load = -1;    // cycle the walker took the record (handshake), -1 if not drawn
+  int64_t walker_end = -1;     // walker's last cycle on this triangle
+  int64_t fragments = 0;
+  int64_t depth_pass = 0;
+  int64_t last_write = -1;     // cycle of the last z-buffer write of its fragments
+};
+
+struct UnitCounters {
+  int64_t busy = 0;
+  int64_t stall = 0;
+};
+
+struct FrameStats {
+  int64_t triangles = 0;
+  int64_t triangles_culled = 0;
+  int64_t triangles_degenerate = 0;
+  int64_t triangles_offscreen = 0;
+  int64_t triangles_drawn = 0;
+  int64_t candidates = 0;
+  int64_t fragments = 0;
+  int64_t depth_pass = 0;
+  int64_t depth_fail = 0;
+  int64_t cycles = 0;          // first cycle after the last unit's last busy cycle
+  UnitCounters setup, walker, z_adder, zbuffer;
+};
+
+class Pipeline {
+ public:
+  explicit Pipeline(const Profile& profile);
+
+  void reset();
+  // Optional observers; pass nullptr to detach. Tracing costs nothing when detached.
+  void set_fragment_sink(FragmentSink* sink) { sink_ = sink; }
+  void set_triangle_log(std::vector<TriangleRecord>* log) { log_ = log; }
+
+  // Runs one triangle through every unit. The triangle must have been checked (check_screen_triangle).
+  void submit(const SnappedTriangle& tri);
+  const FrameStats& stats();
+
+  const Profile& profile() const { return profile_; }
+  const Widths& widths() const { return setup_.widths(); }
+  const ZBuffer& zbuffer() const { return zbuffer_; }
+  const SetupResult& last_setup() const { return last_setup_; }
+
+ private:
+  template <bool Trace>
+  struct Glue;
+  template <bool Trace>
+  int64_t walk(const SetupResult& s, int64_t load_cycle, TriangleRecord& record);
+
+  Profile profile_;
+  TriangleSetup setup_;
+  ScanlineWalker walker_;
+  ZAdder adders_;
+  ZBuffer zbuffer_;
+  FragmentSink* sink_ = nullptr;
+  std::vector<TriangleRecord>* log_ = nullptr;
+  SetupResult last_setup_;
+  WalkerCounters walker_counters_;
+  FrameStats stats_;
+  int64_t next_index_ = 0;
+  int64_t setup_free_ = 0;       // first cycle the setup unit can accept
+  int64_t walker_free_ = 0;      // first cycle the walker can load
+  int64_t last_busy_ = -1;       // last cycle any unit was busy
+};
+
+}  // namespace rastersim

@@ -1,0 +1,182 @@
+#include "profile.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "input_error.h"
+
+namespace rastersim {
+namespace {
+
+template <typename E, size_t N>
+std::optional<E> parse_enum(const std::string& s, const char* const (&names)[N]) {
+  for (size_t i = 0; i < N; ++i)
+    if (s == names[i]) return E(i);
+  return std::nullopt;
+}
+
+const char* const kDepthFuncNames[] = {"never", "less", "equal", "lequal",
+                                       "greater", "notequal", "gequal", "always"};
+const char* const kCullNames[] = {"none", "back", "front"};
+const char* const kFrontFaceNames[] = {"ccw", "cw"};
+const char* const kTraversalNames[] = {"bbox", "span"};
+const char* const kShadingNames[] = {"flat", "gouraud"};
+
+template <size_t N>
+std::string choices(const char* const (&names)[N]) {
+  std::string out;
+  for (size_t i = 0; i < N; ++i) out += (i ? ", " : "") + std::string(names[i]);
+  return out;
+}
+
+// Strict integer parse: the whole text must be a base-10 integer.
+bool parse_int(const std::string& text, int64_t& out) {
+  if (text.empty()) return false;
+  size_t pos = 0;
+  try {
+    out = std::stoll(text, &pos, 10);
+  } catch (...) {
+    return false;
+  }
+  return pos == text.size();
+}
+
+bool parse_bool(const std::string& text, bool& out) {
+  if (text == "true" || text == "on" || text == "1") return out = true, true;
+  if (text == "false" || text == "off" || text == "0") return out = false, true;
+  return false;
+}
+
+// The line (1-based) of the first occurrence of `"key"` in text, or 0.
+int line_of_key(const std::string& text, const std::string& key) {
+  const size_t at = text.find("\"" + key + "\"");
+  if (at == std::string::npos) return 0;
+  return 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
+}
+
+}  // namespace
+
+const char* to_string(DepthFunc v) { return kDepthFuncNames[int(v)]; }
+const char* to_string(CullMode v) { return kCullNames[int(v)]; }
+const char* to_string(FrontFace v) { return kFrontFaceNames[int(v)]; }
+const char* to_string(Traversal v) { return kTraversalNames[int(v)]; }
+const char* to_string(Shading v) { return kShadingNames[int(v)]; }
+std::optional<DepthFunc> parse_depth_func(const std::string& s) { return parse_enum<DepthFunc>(s, kDepthFuncNames); }
+std::optional<CullMode> parse_cull(const std::string& s) { return parse_enum<CullMode>(s, kCullNames); }
+std::optional<FrontFace> parse_front_face(const std::string& s) { return parse_enum<FrontFace>(s, kFrontFaceNames); }
+std::optional<Traversal> parse_traversal(const std::string& s) { return parse_enum<Traversal>(s, kTraversalNames); }
+std::optional<Shading> parse_shading(const std::string& s) { return parse_enum<Shading>(s, kShadingNames); }
+
+const std::vector<std::string>& profile_keys() {
+  static const std::vector<std::string> keys = {
+      "width", "height", "subpixel_bits", "z_bits", "z_guard_bits", "depth_func", "depth_write",
+      "depth_clear", "cull", "front_face", "traversal", "shading", "memory_latency"};
+  return keys;
+}
+
+std::vector<std::string> validate(const Profile& p) {
+  std::vector<std::string> errors;
+  auto range = [&](const char* key, int64_t v, int64_t lo, int64_t hi) {
+    if (v < lo || v > hi)
+      errors.push_back(std::string(key) + " is " + std::to_string(v) + "; it must be in " +
+                       std::to_string(lo) + ".." + std::to_string(hi));
+  };
+  range("width", p.width, 1, 4096);
+  range("height", p.height, 1, 4096);
+  range("subpixel_bits", p.subpixel_bits, 1, 8);
+  range("z_bits", p.z_bits, 16, 32);
+  range("z_guard_bits", p.z_guard_bits, 0, 24);
+  range("memory_latency", p.memory_latency, 1, 64);
+  if (p.z_bits >= 16 && p.z_bits <= 32 && p.depth_clear >= 0 && p.depth_clear > int64_t(p.depth_max()))
+    errors.push_back("depth_clear is " + std::to_string(p.depth_clear) + "; it must be in 0.." +
+                     std::to_string(p.depth_max()) + " for z_bits " + std::to_string(p.z_bits));
+  if (p.depth_clear < -1) errors.push_back("depth_clear must not be negative");
+  return errors;
+}
+
+std::string set_profile_key(Profile& p, const std::string& key, const std::string& value) {
+  int64_t n = 0;
+  auto integer = [&](int& field) -> std::string {
+    if (!parse_int(value, n) || n < INT32_MIN || n > INT32_MAX)
+      return key + " takes an integer, not '" + value + "'";
+    field = int(n);
+    return "";
+  };
+  auto enumeration = [&](auto parsed, auto& field, const std::string& allowed) -> std::string {
+    if (!parsed) return key + " is '" + value + "'; it must be one of " + allowed;
+    field = *parsed;
+    return "";
+  };
+  if (key == "width") return integer(p.width);
+  if (key == "height") return integer(p.height);
+  if (key == "subpixel_bits") return integer(p.subpixel_bits);
+  if (key == "z_bits") return integer(p.z_bits);
+  if (key == "z_guard_bits") return value == "auto" ? (p.z_guard_bits = 0, "") : integer(p.z_guard_bits);
+  if (key == "memory_latency") return integer(p.memory_latency);
+  if (key == "depth_clear") {
+    if (value == "max") return p.depth_clear = -1, "";
+    if (!parse_int(value, n) || n < 0) return key + " takes a non-negative integer or 'max', not '" + value + "'";
+    p.depth_clear = n;
+    return "";
+  }
+  if (key == "depth_write") {
+    if (!parse_bool(value, p.depth_write)) return key + " takes true or false, not '" + value + "'";
+    return "";
+  }
+  if (key == "depth_func") return enumeration(parse_depth_func(value), p.depth_func, choices(kDepthFuncNames));
+  if (key == "cull") return enumeration(parse_cull(value), p.cull, choices(kCullNames));
+  if (key == "front_face") return enumeration(parse_front_face(value), p.front_face, choices(kFrontFaceNames));
+  if (key == "traversal") return enumeration(parse_traversal(value), p.traversal, choices(kTraversalNames));
+  if (key == "shading") return enumeration(parse_shading(value), p.shading, choices(kShadingNames));
+  return "unknown profile key '" + key + "'";
+}
+
+void load_profile_file(Profile& profile, const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "cannot open profile file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    const size_t at = std::min(e.byte, text.size());
+    const int line = 1 + int(std::count(text.begin(), text.begin() + long(at == 0 ? 0 : at - 1), '\n'));
+    throw InputError(path, line, std::string("malformed JSON: ") + e.what());
+  }
+  if (!doc.is_object()) throw InputError(path, 1, "a profile must be a JSON object");
+  for (auto it = doc.begin(); it != doc.end(); ++it) {
+    const int line = line_of_key(text, it.key());
+    std::string value;
+    if (it->is_string()) value = it->get<std::string>();
+    else if (it->is_boolean()) value = it->get<bool>() ? "true" : "false";
+    else if (it->is_number_integer()) value = std::to_string(it->get<int64_t>());
+    else throw InputError(path, line, "profile key '" + it.key() + "' must be a string, integer or boolean");
+    const std::string error = set_profile_key(profile, it.key(), value);
+    if (!error.empty()) throw InputError(path, line, error);
+  }
+}
+
+std::string profile_to_json(const Profile& p, int indent) {
+  nlohmann::ordered_json j;
+  j["width"] = p.width;
+  j["height"] = p.height;
+  j["subpixel_bits"] = p.subpixel_bits;
+  j["z_bits"] = p.z_bits;
+  j["z_guard_bits"] = p.z_guard_bits;
+  j["depth_func"] = to_string(p.depth_func);
+  j["depth_write"] = p.depth_write;
+  j["depth_clear"] = p.depth_clear_value();
+  j["cull"] = to_string(p.cull);
+  j["front_face"] = to_string(p.front_face);
+  j["traversal"] = to_string(p.traversal);
+  j["shading"] = to_string(p.shading);
+  j["memory_latency"] = p.memory_latency;
+  return j.dump(indent);
+}
+
+}  // namespace rastersim

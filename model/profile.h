@@ -1,0 +1,66 @@
+// The hardware profile: the one source of truth for model, RTL and vectors (PRODUCT.md).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rastersim {
+
+enum class DepthFunc { Never, Less, Equal, LEqual, Greater, NotEqual, GEqual, Always };
+enum class CullMode { None, Back, Front };
+enum class FrontFace { CCW, CW };
+// bbox: every pixel of the screen-clipped bounding box is a candidate, one per clock.
+// span: per row the edges' exact crossings bound the span; empty pixels cost no cycles.
+enum class Traversal { BBox, Span };
+enum class Shading { Flat, Gouraud };
+
+struct Profile {
+  int width = 640;            // pixels, 1..4096
+  int height = 480;           // pixels, 1..4096
+  int subpixel_bits = 4;      // S, 1..8
+  int z_bits = 24;            // N, 16..32
+  int z_guard_bits = 0;       // F, fraction bits of the plane registers; 0 = derive (proven minimum)
+  DepthFunc depth_func = DepthFunc::Less;
+  bool depth_write = true;
+  int64_t depth_clear = -1;   // -1 = 2^N - 1
+  CullMode cull = CullMode::None;
+  FrontFace front_face = FrontFace::CCW;
+  Traversal traversal = Traversal::Span;
+  Shading shading = Shading::Gouraud;
+  int memory_latency = 2;     // cycles from a z-buffer read request to its data, 1..64
+
+  uint32_t depth_max() const { return uint32_t((uint64_t(1) << z_bits) - 1); }
+  uint32_t depth_clear_value() const { return depth_clear < 0 ? depth_max() : uint32_t(depth_clear); }
+};
+
+// Every error found, each a sentence naming the key; empty when the profile is valid.
+std::vector<std::string> validate(const Profile& profile);
+
+// Names as they appear in JSON and on the command line.
+const char* to_string(DepthFunc v);
+const char* to_string(CullMode v);
+const char* to_string(FrontFace v);
+const char* to_string(Traversal v);
+const char* to_string(Shading v);
+std::optional<DepthFunc> parse_depth_func(const std::string& s);
+std::optional<CullMode> parse_cull(const std::string& s);
+std::optional<FrontFace> parse_front_face(const std::string& s);
+std::optional<Traversal> parse_traversal(const std::string& s);
+std::optional<Shading> parse_shading(const std::string& s);
+
+// The keys of the profile, in the order they are documented and written.
+const std::vector<std::string>& profile_keys();
+
+// Sets one key from its textual value (a flag or a JSON scalar rendered as text). Returns an error
+// sentence, or an empty string on success.
+std::string set_profile_key(Profile& profile, const std::string& key, const std::string& value);
+
+// Reads a JSON profile file over `profile`. Throws InputError naming file, line and problem.
+void load_profile_file(Profile& profile, const std::string& path);
+
+// The profile as a JSON object text (all keys, resolved values).
+std::string profile_to_json(const Profile& profile, int indent = 2);
+
+}  // namespace rastersim

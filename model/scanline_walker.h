@@ -1,0 +1,123 @@
+// Counter-driven scanline walker: x and y counters step over the triangle, edge functions are
+// updated by additions only, one candidate pixel per clock. Two traversals (profile.traversal):
+//  - bbox: every pixel of the bounding box, row by row, left to right; the edge test decides.
+//  - span: per row, the exact first and last covered pixel come from the edges by stepping a
+//    quotient and remainder (a DDA, additions only); one row cycle, then only covered pixels.
+// Both emit the same fragments in the same order; they differ in cycles (docs/cycle-model.md).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+
+#include "profile.h"
+#include "triangle_setup.h"
+#include "z_adder.h"
+
+namespace rastersim {
+
+struct WalkerCounters {
+  int64_t busy = 0;        // load, row and candidate cycles
+  int64_t stall = 0;       // cycles a fragment waited for the z-buffer
+  int64_t candidates = 0;  // pixel candidates visited (bbox: all bbox pixels; span: span pixels)
+  int64_t rows = 0;
+};
+
+class ScanlineWalker {
+ public:
+  ScanlineWalker(const Profile& profile, const Widths& widths)
+      : traversal_(profile.traversal), load_cycles_(widths.walker_load_cycles), row_cycles_(widths.span_row_cycles) {}
+
+  // Walks one set-up triangle whose record the walker loads in cycle `load_cycle`. For each covered
+  // pixel it calls sink.fragment(x, y, adders, cycle), which returns the cycle the z-buffer
+  // accepted the fragment (>= cycle; the walker holds meanwhile). Returns the walker's last busy
+  // cycle for this triangle.
+  template <class Sink>
+  int64_t walk(const SetupResult& s, ZAdder& adders, int64_t load_cycle, Sink& sink, WalkerCounters& counters) const {
+    adders.load(s);
+    counters.busy += load_cycles_;
+    int64_t cycle = load_cycle + load_cycles_;
+    if (traversal_ == Traversal::BBox) cycle = walk_bbox(s, adders, cycle, sink, counters);
+    else cycle = walk_span(s, adders, cycle, sink, counters);
+    return cycle - 1;
+  }
+
+ private:
+  template <class Sink>
+  static int64_t emit(int x, int y, ZAdder& adders, int64_t cycle, Sink& sink, WalkerCounters& counters) {
+    const int64_t accepted = sink.fragment(x, y, adders, cycle);
+    counters.stall += accepted - cycle;
+    return accepted + 1;
+  }
+
+  template <class Sink>
+  int64_t walk_bbox(const SetupResult& s, ZAdder& adders, int64_t cycle, Sink& sink, WalkerCounters& counters) const {
+    int64_t row0 = s.edge[0].start, row1 = s.edge[1].start, row2 = s.edge[2].start;
+    const int64_t sx0 = s.edge[0].step_x, sx1 = s.edge[1].step_x, sx2 = s.edge[2].step_x;
+    const int64_t width = s.x1 - s.x0 + 1;
+    for (int y = s.y0; y <= s.y1; ++y) {
+      int64_t e0 = row0, e1 = row1, e2 = row2;
+      for (int x = s.x0; x <= s.x1; ++x) {
+        if ((e0 | e1 | e2) >= 0) cycle = emit(x, y, adders, cycle, sink, counters);
+        else ++cycle;
+        e0 += sx0, e1 += sx1, e2 += sx2;
+        adders.step_x();
+      }
+      row0 += s.edge[0].step_y, row1 += s.edge[1].step_y, row2 += s.edge[2].step_y;
+      adders.next_row();
+    }
+    const int64_t pixels = width * (s.y1 - s.y0 + 1);
+    counters.candidates += pixels;
+    counters.busy += pixels;
+    counters.rows += s.y1 - s.y0 + 1;
+    return cycle;
+  }
+
+  template <class Sink>
+  int64_t walk_span(const SetupResult& s, ZAdder& adders, int64_t cycle, Sink& sink, WalkerCounters& counters) const {
+    struct EdgeState {
+      int64_t row_value, quot, rem, divisor, step_x, step_y, step_quot, step_rem;
+    } edge[3];
+    for (int k = 0; k < 3; ++k) {
+      const EdgeSetup& e = s.edge[k];
+      edge[k] = {e.start, e.span_quot, e.span_rem, e.step_x < 0 ? -e.step_x : e.step_x,
+                 e.step_x, e.step_y, e.span_step_quot, e.span_step_rem};
+    }
+    const int64_t last = s.x1 - s.x0;
+    for (int y = s.y0; y <= s.y1; ++y) {
+      // Row cycle: offsets t from x0 with E(t) = row_value + t step_x >= 0 on every edge.
+      int64_t lo = 0, hi = last;
+      for (const EdgeState& e : edge) {
+        if (e.step_x > 0) lo = std::max(lo, -e.quot);       // t >= ceil(-E / d) = -floor(E / d)
+        else if (e.step_x < 0) hi = std::min(hi, e.quot);   // t <= floor(E / d)
+        else if (e.row_value < 0) hi = -1;                  // horizontal edge, row outside
+      }
+      cycle += row_cycles_;
+      counters.busy += row_cycles_;
+      if (lo <= hi) {
+        adders.enter_row_at(lo);
+        for (int64_t t = lo; t <= hi; ++t) {
+          cycle = emit(int(s.x0 + t), y, adders, cycle, sink, counters);
+          adders.step_x();
+        }
+        counters.candidates += hi - lo + 1;
+        counters.busy += hi - lo + 1;
+      }
+      for (EdgeState& e : edge) {
+        e.row_value += e.step_y;
+        if (e.step_x == 0) continue;
+        e.quot += e.step_quot;
+        e.rem += e.step_rem;
+        if (e.rem >= e.divisor) e.rem -= e.divisor, ++e.quot;
+      }
+      adders.next_row();
+    }
+    counters.rows += s.y1 - s.y0 + 1;
+    return cycle;
+  }
+
+  Traversal traversal_;
+  int load_cycles_;
+  int row_cycles_;
+};
+
+}  // namespace rastersim

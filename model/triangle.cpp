@@ -1,0 +1,64 @@
+#include "triangle.h"
+
+#include <cmath>
+
+#include "fixed.h"
+
+namespace rastersim {
+
+int64_t snap_coordinate(double v, int subpixel_bits) {
+  // a = v * 2^S is exact (a power-of-two scale); floor(a + 1/2) is decided on the exact fraction
+  // so that no rounding of the sum can move a value across an integer.
+  const double a = std::ldexp(v, subpixel_bits);
+  const double whole = std::floor(a);
+  return int64_t(whole) + (a - whole >= 0.5 ? 1 : 0);
+}
+
+uint32_t quantize_depth(double z, int z_bits) {
+  // Exact floor(z * (2^N - 1) + 1/2) for z in [0, 1]: z = m / 2^k with integer m < 2^53.
+  const uint64_t scale = (uint64_t(1) << z_bits) - 1;
+  if (z >= 1.0) return uint32_t(scale);
+  if (z < 0x1p-40) return 0;  // z * 2^32 < 1/2
+  int exponent = 0;
+  const double mantissa = std::frexp(z, &exponent);  // z = mantissa * 2^exponent, mantissa in [0.5, 1)
+  const i128 m = i128(std::ldexp(mantissa, 53));   // integer, z = m / 2^(53 - exponent)
+  const int k = 53 - exponent;                      // k <= 93
+  return uint32_t((2 * m * i128(scale) + (i128(1) << k)) >> (k + 1));
+}
+
+std::string check_screen_triangle(const ScreenTriangle& tri, const Profile& p) {
+  static const char* const kVertex[] = {"first", "second", "third"};
+  const int64_t x_lo = -(int64_t(p.width) << p.subpixel_bits), x_hi = int64_t(2 * p.width) << p.subpixel_bits;
+  const int64_t y_lo = -(int64_t(p.height) << p.subpixel_bits), y_hi = int64_t(2 * p.height) << p.subpixel_bits;
+  for (int k = 0; k < 3; ++k) {
+    const ScreenVertex& v = tri.v[k];
+    const std::string who = std::string(kVertex[k]) + " vertex ";
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+      return who + "has a coordinate that is not a finite number";
+    if (v.z < 0.0 || v.z > 1.0) return who + "depth " + std::to_string(v.z) + " is outside [0, 1]";
+    // Compare before converting: a huge double must not overflow the integer snap.
+    if (std::fabs(v.x) > 1e7 || std::fabs(v.y) > 1e7)
+      return who + "is far outside the guard band";
+    const int64_t sx = snap_coordinate(v.x, p.subpixel_bits), sy = snap_coordinate(v.y, p.subpixel_bits);
+    if (sx < x_lo || sx > x_hi)
+      return who + "x " + std::to_string(v.x) + " is outside the guard band [" + std::to_string(-p.width) +
+             ", " + std::to_string(2 * p.width) + "]";
+    if (sy < y_lo || sy > y_hi)
+      return who + "y " + std::to_string(v.y) + " is outside the guard band [" + std::to_string(-p.height) +
+             ", " + std::to_string(2 * p.height) + "]";
+  }
+  return "";
+}
+
+SnappedTriangle snap(const ScreenTriangle& tri, const Profile& p) {
+  SnappedTriangle out;
+  for (int k = 0; k < 3; ++k) {
+    out.v[k].x = int32_t(snap_coordinate(tri.v[k].x, p.subpixel_bits));
+    out.v[k].y = int32_t(snap_coordinate(tri.v[k].y, p.subpixel_bits));
+    out.v[k].z = quantize_depth(tri.v[k].z, p.z_bits);
+    out.v[k].color = tri.v[k].color;
+  }
+  return out;
+}
+
+}  // namespace rastersim

@@ -1,0 +1,48 @@
+// Triangles as the pipeline takes them: screen-space (floating point, as read from .tri or made by
+// the front end) and snapped (the fixed-point words the setup unit accepts).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "profile.h"
+
+namespace rastersim {
+
+struct Rgb {
+  uint8_t r = 255, g = 255, b = 255;
+  bool operator==(const Rgb& o) const { return r == o.r && g == o.g && b == o.b; }
+};
+
+struct ScreenVertex {
+  double x = 0, y = 0;  // pixels, y down
+  double z = 0;         // [0, 1], 0 is near
+  Rgb color;
+};
+
+struct ScreenTriangle {
+  ScreenVertex v[3];
+};
+
+struct SnappedVertex {
+  int32_t x = 0, y = 0;  // subpixels, s(coord_bits-S).S: floor(v * 2^S + 1/2)
+  uint32_t z = 0;        // depth, uN: floor(z * (2^N - 1) + 1/2)
+  Rgb color;             // u8.0 per channel
+};
+
+struct SnappedTriangle {
+  SnappedVertex v[3];
+};
+
+// Why a screen triangle is not acceptable to the setup unit, or an empty string.
+// Checks: finite numbers, z in [0, 1], and every snapped coordinate inside the guard band
+// x in [-W, 2W], y in [-H, 2H] (in subpixels: [-W*2^S, 2W*2^S]).
+std::string check_screen_triangle(const ScreenTriangle& tri, const Profile& profile);
+
+// Snaps a checked triangle to the fixed-point grid of PRODUCT.md.
+SnappedTriangle snap(const ScreenTriangle& tri, const Profile& profile);
+
+int64_t snap_coordinate(double v, int subpixel_bits);
+uint32_t quantize_depth(double z, int z_bits);
+
+}  // namespace rastersim

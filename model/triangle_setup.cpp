@@ -1,0 +1,123 @@
+#include "triangle_setup.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace rastersim {
+
+const char* to_string(SetupStatus status) {
+  switch (status) {
+    case SetupStatus::Drawn: return "drawn";
+    case SetupStatus::Degenerate: return "degenerate";
+    case SetupStatus::Culled: return "culled";
+    case SetupStatus::Offscreen: return "offscreen";
+  }
+  return "?";
+}
+
+TriangleSetup::TriangleSetup(const Profile& profile) : profile_(profile), widths_(derive_widths(profile)) {}
+
+// Plane through the three vertex values, by barycentric weights of the edge functions:
+// P(Q) = (v0 E1(Q) + v1 E2(Q) + v2 E0(Q)) / area2, edge k opposite vertex k+2.
+PlaneSetup TriangleSetup::plane(const i128 value[3], const i128 edge_at_start[3], const int64_t step_x[3],
+                                const int64_t step_y[3], i128 area2, int reg_bits, const char* what) const {
+  const int F = widths_.guard_bits;
+  auto weighted = [&](auto edge) { return value[0] * edge(1) + value[1] * edge(2) + value[2] * edge(0); };
+  const i128 start_num = weighted([&](int k) { return edge_at_start[k]; });
+  const i128 step_x_num = weighted([&](int k) { return i128(step_x[k]); });
+  const i128 step_y_num = weighted([&](int k) { return i128(step_y[k]); });
+  for (i128 num : {start_num, step_x_num, step_y_num}) {
+    const i128 dividend = num * (i128(1) << F);
+    if (unsigned_bits(dividend < 0 ? -dividend : dividend) > widths_.divider_bits)
+      throw WidthOverflow(std::string(what) + " dividend exceeds divider_bits");
+  }
+  PlaneSetup p;
+  p.start = wrap_signed(floor_div(start_num << F, area2).quotient, reg_bits);
+  p.step_x = wrap_signed(floor_div(step_x_num << F, area2).quotient, reg_bits);
+  p.step_y = wrap_signed(floor_div(step_y_num << F, area2).quotient, reg_bits);
+  return p;
+}
+
+SetupResult TriangleSetup::run(const SnappedTriangle& input) const {
+  const Widths& w = widths_;
+  const int S = profile_.subpixel_bits;
+  SetupResult r;
+  SnappedVertex v[3] = {input.v[0], input.v[1], input.v[2]};
+  for (const SnappedVertex& vertex : v) {
+    check_signed(vertex.x, w.coord_bits, "vertex x");
+    check_signed(vertex.y, w.coord_bits, "vertex y");
+  }
+  r.flat_color = v[0].color;
+
+  // Front stage: area, facing, cull, bounding box.
+  const int64_t area2 = int64_t(v[1].x - v[0].x) * (v[2].y - v[0].y) - int64_t(v[2].x - v[0].x) * (v[1].y - v[0].y);
+  check_signed(area2, w.area_bits, "area2");
+  r.area2 = area2;
+  if (area2 == 0) return r.status = SetupStatus::Degenerate, r;
+  // y points down, so area2 > 0 is clockwise as the viewer sees the screen.
+  r.front_facing = profile_.front_face == FrontFace::CCW ? area2 < 0 : area2 > 0;
+  if ((profile_.cull == CullMode::Back && !r.front_facing) || (profile_.cull == CullMode::Front && r.front_facing))
+    return r.status = SetupStatus::Culled, r;
+  if (area2 < 0) std::swap(v[1], v[2]);  // either winding rasterizes: order to area2 > 0
+  const int64_t area = area2 < 0 ? -area2 : area2;
+
+  const int64_t half = int64_t(1) << (S - 1);
+  const int64_t x_min = std::min({v[0].x, v[1].x, v[2].x}), x_max = std::max({v[0].x, v[1].x, v[2].x});
+  const int64_t y_min = std::min({v[0].y, v[1].y, v[2].y}), y_max = std::max({v[0].y, v[1].y, v[2].y});
+  // Pixel i is a candidate when its centre i 2^S + 2^(S-1) lies in [min, max].
+  r.x0 = int(std::max<int64_t>(0, (x_min - half + (int64_t(1) << S) - 1) >> S));
+  r.x1 = int(std::min<int64_t>(profile_.width - 1, (x_max - half) >> S));
+  r.y0 = int(std::max<int64_t>(0, (y_min - half + (int64_t(1) << S) - 1) >> S));
+  r.y1 = int(std::min<int64_t>(profile_.height - 1, (y_max - half) >> S));
+  if (r.x0 > r.x1 || r.y0 > r.y1) return r.status = SetupStatus::Offscreen, r;
+  r.status = SetupStatus::Drawn;
+
+  // Edge functions at the first candidate's centre.
+  const int64_t px = (int64_t(r.x0) << S) + half, py = (int64_t(r.y0) << S) + half;
+  i128 unbiased[3];
+  int64_t step_x[3], step_y[3];
+  for (int k = 0; k < 3; ++k) {
+    const SnappedVertex& a = v[k];
+    const SnappedVertex& b = v[(k + 1) % 3];
+    const int64_t dx = b.x - a.x, dy = b.y - a.y;
+    check_signed(dx, w.delta_bits, "edge dx");
+    check_signed(dy, w.delta_bits, "edge dy");
+    EdgeSetup& e = r.edge[k];
+    // Interior to the right (dy < 0) is a left edge; horizontal with interior below (dx > 0) is top.
+    e.top_left = dy < 0 || (dy == 0 && dx > 0);
+    unbiased[k] = i128(dx) * (py - a.y) - i128(dy) * (px - a.x);
+    e.start = int64_t(unbiased[k]) - (e.top_left ? 0 : 1);
+    e.step_x = -dy * (int64_t(1) << S);
+    e.step_y = dx * (int64_t(1) << S);
+    check_signed(unbiased[k], w.edge_bits, "edge start");
+    check_signed(e.step_x, w.edge_step_x_bits, "edge step_x");
+    check_signed(e.step_y, w.edge_step_y_bits, "edge step_y");
+    step_x[k] = e.step_x;
+    step_y[k] = e.step_y;
+    if (e.step_x != 0) {
+      const int64_t d = e.step_x < 0 ? -e.step_x : e.step_x;
+      const FloorDiv q0 = floor_div(e.start, d), q1 = floor_div(e.step_y, d);
+      e.span_quot = int64_t(q0.quotient);
+      e.span_rem = int64_t(q0.remainder);
+      e.span_step_quot = int64_t(q1.quotient);
+      e.span_step_rem = int64_t(q1.remainder);
+    } else {
+      e.span_quot = e.span_rem = e.span_step_quot = e.span_step_rem = 0;
+    }
+  }
+
+  // Planes: depth always, colour for Gouraud shading.
+  const i128 z[3] = {v[0].z, v[1].z, v[2].z};
+  r.depth = plane(z, unbiased, step_x, step_y, area, w.z_reg_bits, "depth plane");
+  if (profile_.shading == Shading::Gouraud) {
+    const i128 red[3] = {v[0].color.r, v[1].color.r, v[2].color.r};
+    const i128 green[3] = {v[0].color.g, v[1].color.g, v[2].color.g};
+    const i128 blue[3] = {v[0].color.b, v[1].color.b, v[2].color.b};
+    r.color[0] = plane(red, unbiased, step_x, step_y, area, w.color_reg_bits, "red plane");
+    r.color[1] = plane(green, unbiased, step_x, step_y, area, w.color_reg_bits, "green plane");
+    r.color[2] = plane(blue, unbiased, step_x, step_y, area, w.color_reg_bits, "blue plane");
+  }
+  return r;
+}
+
+}  // namespace rastersim

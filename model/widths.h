@@ -1,0 +1,85 @@
+// Every register width of the pipeline, derived from the profile in one place.
+// The derivation is constexpr so that the RTL build can static_assert its package localparams
+// against it. docs/widths.md proves each bound; tests/test_widths.cpp drives the extremes.
+#pragma once
+
+#include "fixed.h"
+#include "profile.h"
+
+namespace rastersim {
+
+struct Widths {
+  // Plane registers: F fraction (guard) bits. Chosen so that the accumulated floor error of the
+  // start value and (W-1)+(H-1) steps stays at most half an LSB: 2^F >= 2 (W + H - 1).
+  int guard_bits;
+  int coord_bits;        // vertex coordinate in subpixels, s(coord_bits-S).S; guard band [-W, 2W]
+  int delta_bits;        // vertex difference, s.S
+  int area_bits;         // twice the signed area and each cross product, s.2S
+  int edge_bits;         // edge function value (biased) at any on-screen pixel centre, s.2S
+  int edge_step_x_bits;  // edge_step_x = -dy * 2^S, s.2S
+  int edge_step_y_bits;  // edge_step_y = dx * 2^S, s.2S
+  int span_rem_bits;     // span walker remainder, 0 <= r < |edge_step_x|, u.2S
+  int divider_bits;      // widest dividend magnitude; the divider takes this many cycles
+  int z_reg_bits;        // depth plane register, s(N+1).F, wraps (modular, see docs/arithmetic.md)
+  int color_reg_bits;    // colour plane register, s9.F, wraps
+  int x_bits;            // pixel x counter, u
+  int y_bits;            // pixel y counter, u
+  int addr_bits;         // z-buffer word address y * W + x
+  // Cycle-model constants (docs/cycle-model.md).
+  int setup_front_cycles;   // accept -> area, cull and bounding-box decision
+  int setup_cycles;         // accept -> output register valid (front + divider + 1)
+  int walker_load_cycles;   // cycles to load a setup record
+  int span_row_cycles;      // per-row span computation (span traversal only)
+};
+
+constexpr int ceil_log2(i128 v) {  // smallest b with 2^b >= v, v >= 1
+  int b = 0;
+  while ((i128(1) << b) < v) ++b;
+  return b;
+}
+
+constexpr int derived_guard_bits(int width, int height) {
+  const int f = ceil_log2(i128(2) * (width + height - 1));
+  return f < 1 ? 1 : f;
+}
+
+constexpr Widths derive_widths(int width, int height, int subpixel_bits, int z_bits, int z_guard_bits) {
+  Widths w{};
+  const i128 W = width, H = height, M = i128(1) << subpixel_bits;
+  const i128 WH = W * H * M * M;
+  const i128 big = W > H ? W : H;
+  const i128 z_max = (i128(1) << z_bits) - 1;
+  w.guard_bits = z_guard_bits > 0 ? z_guard_bits : derived_guard_bits(width, height);
+  w.coord_bits = signed_bits(2 * big * M);
+  w.delta_bits = signed_bits(3 * big * M);
+  w.area_bits = signed_bits(9 * WH);
+  w.edge_bits = signed_bits(12 * WH + 1);
+  w.edge_step_x_bits = signed_bits(3 * H * M * M);
+  w.edge_step_y_bits = signed_bits(3 * W * M * M);
+  w.span_rem_bits = unsigned_bits(3 * H * M * M);
+  // The depth start numerator sum_k Z_k e_k dominates every other dividend (docs/widths.md).
+  w.divider_bits = unsigned_bits(36 * z_max * WH * (i128(1) << w.guard_bits));
+  w.z_reg_bits = z_bits + w.guard_bits + 1;
+  w.color_reg_bits = 8 + w.guard_bits + 1;
+  w.x_bits = unsigned_bits(W - 1);
+  w.y_bits = unsigned_bits(H - 1);
+  w.addr_bits = unsigned_bits(W * H - 1);
+  w.setup_front_cycles = 2;
+  w.setup_cycles = w.setup_front_cycles + w.divider_bits + 1;
+  w.walker_load_cycles = 1;
+  w.span_row_cycles = 1;
+  return w;
+}
+
+inline Widths derive_widths(const Profile& p) {
+  return derive_widths(p.width, p.height, p.subpixel_bits, p.z_bits, p.z_guard_bits);
+}
+
+// The largest profile must fit the model's storage: plane registers and edge values in int64_t,
+// dividends in i128.
+static_assert(derive_widths(4096, 4096, 8, 32, 0).edge_bits <= 63);
+static_assert(derive_widths(4096, 4096, 8, 32, 0).z_reg_bits <= 63);
+static_assert(derive_widths(4096, 4096, 8, 32, 24).z_reg_bits <= 63);
+static_assert(derive_widths(4096, 4096, 8, 32, 24).divider_bits <= 126);
+
+}  // namespace rastersim

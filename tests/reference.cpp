@@ -1,0 +1,81 @@
+#include "reference.h"
+
+#include <algorithm>
+
+namespace rastersim::reference {
+namespace {
+
+using i128 = __int128;
+
+struct Point {
+  i128 x, y;
+};
+
+i128 cross(Point a, Point b, Point p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
+
+// Is edge a->b a top edge or a left edge of the triangle whose third vertex is c?
+bool is_top_or_left(Point a, Point b, Point c) {
+  if (a.y == b.y) return c.y > a.y;  // horizontal: top when the triangle is below (y down)
+  // Left when the triangle lies to the right of the edge: compare c.x with the edge's x at c.y.
+  const i128 lhs = (c.x - a.x) * (b.y - a.y), rhs = (b.x - a.x) * (c.y - a.y);
+  return (b.y - a.y) > 0 ? lhs > rhs : lhs < rhs;
+}
+
+Point vertex(const SnappedTriangle& t, int k) { return {t.v[k].x, t.v[k].y}; }
+Point centre(int subpixel_bits, int i, int j) {
+  const i128 one = i128(1) << subpixel_bits;
+  return {i128(i) * one + one / 2, i128(j) * one + one / 2};
+}
+
+}  // namespace
+
+bool covers(const SnappedTriangle& tri, int subpixel_bits, int i, int j) {
+  const Point p = centre(subpixel_bits, i, j);
+  const Point v[3] = {vertex(tri, 0), vertex(tri, 1), vertex(tri, 2)};
+  if (cross(v[0], v[1], v[2]) == 0) return false;
+  for (int k = 0; k < 3; ++k) {
+    const Point a = v[k], b = v[(k + 1) % 3], c = v[(k + 2) % 3];
+    const i128 side_c = cross(a, b, c), side_p = cross(a, b, p);
+    if (side_p == 0) {
+      if (!is_top_or_left(a, b, c)) return false;
+    } else if ((side_p > 0) != (side_c > 0)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+Rational plane_at_centre(const SnappedTriangle& tri, const uint32_t value[3], int subpixel_bits, int i, int j) {
+  // Solve value = a x + b y + c through the three vertices by Cramer's rule, then evaluate.
+  const Point p = centre(subpixel_bits, i, j);
+  const i128 x0 = tri.v[0].x, y0 = tri.v[0].y, x1 = tri.v[1].x, y1 = tri.v[1].y, x2 = tri.v[2].x, y2 = tri.v[2].y;
+  const i128 z0 = value[0], z1 = value[1], z2 = value[2];
+  const i128 det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+  const i128 a_num = (z1 - z0) * (y2 - y0) - (z2 - z0) * (y1 - y0);
+  const i128 b_num = (x1 - x0) * (z2 - z0) - (x2 - x0) * (z1 - z0);
+  Rational r{z0 * det + a_num * (p.x - x0) + b_num * (p.y - y0), det};
+  if (r.den < 0) r.num = -r.num, r.den = -r.den;
+  return r;
+}
+
+std::vector<Pixel> covered_pixels(const SnappedTriangle& tri, const Profile& profile) {
+  std::vector<Pixel> out;
+  // Scan only the pixels whose centres can be inside: the vertices' extent, clipped to the screen.
+  const int S = profile.subpixel_bits;
+  auto pixel_of = [&](int64_t v) { return int((v >> S) ); };
+  const int64_t x_min = std::min({tri.v[0].x, tri.v[1].x, tri.v[2].x}), x_max = std::max({tri.v[0].x, tri.v[1].x, tri.v[2].x});
+  const int64_t y_min = std::min({tri.v[0].y, tri.v[1].y, tri.v[2].y}), y_max = std::max({tri.v[0].y, tri.v[1].y, tri.v[2].y});
+  const int i0 = std::max(0, pixel_of(x_min) - 1), i1 = std::min(profile.width - 1, pixel_of(x_max) + 1);
+  const int j0 = std::max(0, pixel_of(y_min) - 1), j1 = std::min(profile.height - 1, pixel_of(y_max) + 1);
+  for (int j = j0; j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i)
+      if (covers(tri, S, i, j)) out.push_back({i, j});
+  return out;
+}
+
+bool within_one_lsb(int64_t integer, const Rational& exact) {
+  const i128 diff = i128(integer) * exact.den - exact.num;
+  return (diff < 0 ? -diff : diff) < exact.den;
+}
+
+}  // namespace rastersim::reference

@@ -1,0 +1,34 @@
+// Independent brute-force reference for the rasterization rules of PRODUCT.md, written from the
+// rules rather than from the model: per pixel centre, exact integer cross products; top and left
+// edges classified geometrically from the third vertex; depth as an exact rational.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "model/profile.h"
+#include "model/triangle.h"
+
+namespace rastersim::reference {
+
+// True when the centre of pixel (i, j) is covered by the snapped triangle (top-left rule).
+bool covers(const SnappedTriangle& tri, int subpixel_bits, int i, int j);
+
+// Exact depth of the plane through the three vertex depths at the centre of pixel (i, j), as
+// numerator / denominator with denominator > 0. Requires a non-degenerate triangle.
+struct Rational {
+  __int128 num;
+  __int128 den;
+};
+Rational plane_at_centre(const SnappedTriangle& tri, const uint32_t value[3], int subpixel_bits, int i, int j);
+
+// All covered on-screen pixels, row by row, left to right.
+struct Pixel {
+  int x, y;
+};
+std::vector<Pixel> covered_pixels(const SnappedTriangle& tri, const Profile& profile);
+
+// |integer - exact| < 1, i.e. within 1 LSB.
+bool within_one_lsb(int64_t integer, const Rational& exact);
+
+}  // namespace rastersim::reference
