@@ -167,7 +167,8 @@ std::string profile_to_json(const Profile& p, int indent) {
   j["height"] = p.height;
   j["subpixel_bits"] = p.subpixel_bits;
   j["z_bits"] = p.z_bits;
-  j["z_guard_bits"] = p.z_guard_bits;
+  if (p.z_guard_bits > 0) j["z_guard_bits"] = p.z_guard_bits;
+  else j["z_guard_bits"] = "auto";
   j["depth_func"] = to_string(p.depth_func);
   j["depth_write"] = p.depth_write;
   j["depth_clear"] = p.depth_clear_value();
