@@ -1,0 +1,135 @@
+// The worked examples in docs/ are checked against the model: the numbers on the page were
+// computed independently (exact rationals from the written rules); the model must reproduce them.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "model/pipeline.h"
+
+namespace rastersim {
+namespace {
+
+const std::string kDocs = RASTERSIM_SOURCE_DIR "/docs/";
+
+// The `key = value` lines of the fenced block with the given info string, in order.
+std::vector<std::pair<std::string, std::string>> doc_block(const std::string& file, const std::string& info) {
+  std::ifstream in(kDocs + file);
+  EXPECT_TRUE(in) << "cannot open docs/" << file;
+  std::vector<std::pair<std::string, std::string>> lines;
+  std::string line;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    if (!inside && line == "```" + info) inside = true;
+    else if (inside && line == "```") break;
+    else if (inside) {
+      const size_t eq = line.find(" = ");
+      if (eq != std::string::npos) lines.emplace_back(line.substr(0, eq), line.substr(eq + 3));
+    }
+  }
+  EXPECT_FALSE(lines.empty()) << "no ```" << info << " block in docs/" << file;
+  return lines;
+}
+
+// The worked .tri: 9 coordinates and a flat colour per line (a deliberately small reader; the
+// CLI's reader is tested on its own).
+std::vector<SnappedTriangle> worked_triangles(const Profile& p) {
+  std::ifstream in(kDocs + "examples/worked.tri");
+  std::vector<SnappedTriangle> out;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    ScreenTriangle t;
+    int r, g, b;
+    for (ScreenVertex& v : t.v) fields >> v.x >> v.y >> v.z;
+    fields >> r >> g >> b;
+    for (ScreenVertex& v : t.v) v.color = Rgb{uint8_t(r), uint8_t(g), uint8_t(b)};
+    EXPECT_EQ(check_screen_triangle(t, p), "");
+    out.push_back(snap(t, p));
+  }
+  return out;
+}
+
+Profile worked_profile() {
+  Profile p;
+  load_profile_file(p, kDocs + "examples/worked.json");
+  EXPECT_TRUE(validate(p).empty());
+  return p;
+}
+
+struct Collect : FragmentSink {
+  std::vector<Fragment> fragments;
+  void on_fragment(const Fragment& f) override { fragments.push_back(f); }
+};
+
+std::string setup_line(const EdgeSetup& e) {
+  return "start " + std::to_string(e.start) + " step_x " + std::to_string(e.step_x) + " step_y " +
+         std::to_string(e.step_y) + " top_left " + std::to_string(int(e.top_left));
+}
+
+TEST(Docs, ArithmeticWorkedExample) {
+  const Profile p = worked_profile();
+  const SnappedTriangle t = worked_triangles(p).at(0);
+  Pipeline pipe(p);
+  Collect collect;
+  pipe.set_fragment_sink(&collect);
+  pipe.submit(t);
+  const SetupResult& s = pipe.last_setup();
+  size_t next_fragment = 0;
+  for (const auto& [key, value] : doc_block("arithmetic.md", "example-setup")) {
+    SCOPED_TRACE(key + " = " + value);
+    if (key == "guard_bits") EXPECT_EQ(std::to_string(pipe.widths().guard_bits), value);
+    else if (key[0] == 'v' && key.size() == 2) {
+      const SnappedVertex& v = t.v[key[1] - '0'];
+      EXPECT_EQ(std::to_string(v.x) + " " + std::to_string(v.y) + " " + std::to_string(v.z), value);
+    } else if (key == "area2") EXPECT_EQ(std::to_string(s.area2), value);
+    else if (key == "bbox")
+      EXPECT_EQ(std::to_string(s.x0) + " " + std::to_string(s.y0) + " " + std::to_string(s.x1) + " " + std::to_string(s.y1), value);
+    else if (key.rfind("edge", 0) == 0) EXPECT_EQ(setup_line(s.edge[key[4] - '0']), value);
+    else if (key == "depth_plane")
+      EXPECT_EQ("start " + std::to_string(s.depth.start) + " step_x " + std::to_string(s.depth.step_x) + " step_y " +
+                    std::to_string(s.depth.step_y), value);
+    else if (key == "fragments") EXPECT_EQ(std::to_string(collect.fragments.size()), value);
+    else if (key == "fragment") {
+      ASSERT_LT(next_fragment, collect.fragments.size());
+      const Fragment& f = collect.fragments[next_fragment++];
+      EXPECT_EQ(std::to_string(f.x) + " " + std::to_string(f.y) + " " + std::to_string(f.z), value);
+    } else ADD_FAILURE() << "unknown key";
+  }
+}
+
+TEST(Docs, CycleModelWorkedExample) {
+  Profile p = worked_profile();
+  std::vector<TriangleRecord> records;
+  FrameStats stats;
+  auto run = [&]() {
+    Pipeline pipe(p);
+    records.clear();
+    pipe.set_triangle_log(&records);
+    for (const SnappedTriangle& t : worked_triangles(p)) pipe.submit(t);
+    stats = pipe.stats();
+  };
+  for (const auto& [key, value] : doc_block("cycle-model.md", "example-timeline")) {
+    SCOPED_TRACE(key + " = " + value);
+    if (key == "traversal") {
+      p.traversal = *parse_traversal(value);
+      run();
+    } else if (key == "divider_bits") EXPECT_EQ(std::to_string(derive_widths(p).divider_bits), value);
+    else if (key == "setup_cycles") EXPECT_EQ(std::to_string(derive_widths(p).setup_cycles), value);
+    else if (key.rfind("tri", 0) == 0) {
+      const TriangleRecord& r = records.at(size_t(key[3] - '0'));
+      EXPECT_EQ("setup_accept " + std::to_string(r.setup_accept) + " setup_done " + std::to_string(r.setup_done) +
+                    " walker_load " + std::to_string(r.walker_load) + " walker_end " + std::to_string(r.walker_end) +
+                    " fragments " + std::to_string(r.fragments) + " last_write " + std::to_string(r.last_write),
+                value);
+    } else if (key == "cycles") EXPECT_EQ(std::to_string(stats.cycles), value);
+    else if (key == "setup_stall") EXPECT_EQ(std::to_string(stats.setup.stall), value);
+    else if (key == "zbuffer_stall") EXPECT_EQ(std::to_string(stats.zbuffer.stall), value);
+    else ADD_FAILURE() << "unknown key";
+  }
+}
+
+}  // namespace
+}  // namespace rastersim
