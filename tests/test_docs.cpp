@@ -131,5 +131,20 @@ TEST(Docs, CycleModelWorkedExample) {
   }
 }
 
+TEST(Docs, WidthsTable) {
+  for (const auto& [key, value] : doc_block("widths.md", "example-widths")) {
+    SCOPED_TRACE(key + " = " + value);
+    std::istringstream profile(key);
+    int width, height, subpixel_bits, z_bits;
+    profile >> width >> height >> subpixel_bits >> z_bits;
+    const Widths w = derive_widths(width, height, subpixel_bits, z_bits, 0);
+    std::ostringstream derived;
+    derived << "guard " << w.guard_bits << " coord " << w.coord_bits << " delta " << w.delta_bits << " area "
+            << w.area_bits << " edge " << w.edge_bits << " divider " << w.divider_bits << " z_reg " << w.z_reg_bits
+            << " color_reg " << w.color_reg_bits << " setup_cycles " << w.setup_cycles;
+    EXPECT_EQ(derived.str(), value);
+  }
+}
+
 }  // namespace
 }  // namespace rastersim
