@@ -28,24 +28,20 @@ uint32_t quantize_depth(double z, int z_bits) {
 
 std::string check_screen_triangle(const ScreenTriangle& tri, const Profile& p) {
   static const char* const kVertex[] = {"first", "second", "third"};
-  const int64_t x_lo = -(int64_t(p.width) << p.subpixel_bits), x_hi = int64_t(2 * p.width) << p.subpixel_bits;
-  const int64_t y_lo = -(int64_t(p.height) << p.subpixel_bits), y_hi = int64_t(2 * p.height) << p.subpixel_bits;
   for (int k = 0; k < 3; ++k) {
     const ScreenVertex& v = tri.v[k];
     const std::string who = std::string(kVertex[k]) + " vertex ";
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
       return who + "has a coordinate that is not a finite number";
     if (v.z < 0.0 || v.z > 1.0) return who + "depth " + std::to_string(v.z) + " is outside [0, 1]";
-    // Compare before converting: a huge double must not overflow the integer snap.
-    if (std::fabs(v.x) > 1e7 || std::fabs(v.y) > 1e7)
-      return who + "is far outside the guard band";
-    const int64_t sx = snap_coordinate(v.x, p.subpixel_bits), sy = snap_coordinate(v.y, p.subpixel_bits);
-    if (sx < x_lo || sx > x_hi)
+    // The guard band of PRODUCT.md, on the coordinate as given: x in [-W, 2W), y in [-H, 2H).
+    // Snapping may then reach 2W * 2^S exactly; the width analysis covers the closed range.
+    if (!(v.x >= -p.width && v.x < 2.0 * p.width))
       return who + "x " + std::to_string(v.x) + " is outside the guard band [" + std::to_string(-p.width) +
-             ", " + std::to_string(2 * p.width) + "]";
-    if (sy < y_lo || sy > y_hi)
+             ", " + std::to_string(2 * p.width) + ")";
+    if (!(v.y >= -p.height && v.y < 2.0 * p.height))
       return who + "y " + std::to_string(v.y) + " is outside the guard band [" + std::to_string(-p.height) +
-             ", " + std::to_string(2 * p.height) + "]";
+             ", " + std::to_string(2 * p.height) + ")";
   }
   return "";
 }
