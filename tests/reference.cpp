@@ -78,4 +78,31 @@ bool within_one_lsb(int64_t integer, const Rational& exact) {
   return (diff < 0 ? -diff : diff) < exact.den;
 }
 
+i128 twice_area(const SnappedTriangle& tri) {
+  return cross(vertex(tri, 0), vertex(tri, 1), vertex(tri, 2));
+}
+
+PixelRect bounding_box(const SnappedTriangle& tri, const Profile& profile) {
+  const int S = profile.subpixel_bits;
+  const i128 x_min = std::min({tri.v[0].x, tri.v[1].x, tri.v[2].x}), x_max = std::max({tri.v[0].x, tri.v[1].x, tri.v[2].x});
+  const i128 y_min = std::min({tri.v[0].y, tri.v[1].y, tri.v[2].y}), y_max = std::max({tri.v[0].y, tri.v[1].y, tri.v[2].y});
+  PixelRect r{profile.width, profile.height, -1, -1};
+  for (int i = 0; i < profile.width; ++i) {
+    const i128 c = centre(S, i, 0).x;
+    if (c >= x_min && c <= x_max) r.x0 = std::min(r.x0, i), r.x1 = std::max(r.x1, i);
+  }
+  for (int j = 0; j < profile.height; ++j) {
+    const i128 c = centre(S, 0, j).y;
+    if (c >= y_min && c <= y_max) r.y0 = std::min(r.y0, j), r.y1 = std::max(r.y1, j);
+  }
+  return r;
+}
+
+std::vector<int> covered_in_row(const SnappedTriangle& tri, const Profile& profile, int j) {
+  std::vector<int> out;
+  for (int i = 0; i < profile.width; ++i)
+    if (covers(tri, profile.subpixel_bits, i, j)) out.push_back(i);
+  return out;
+}
+
 }  // namespace rastersim::reference

@@ -31,4 +31,20 @@ std::vector<Pixel> covered_pixels(const SnappedTriangle& tri, const Profile& pro
 // |integer - exact| < 1, i.e. within 1 LSB.
 bool within_one_lsb(int64_t integer, const Rational& exact);
 
+// Twice the signed area of the snapped triangle (subpixels squared); 0 means degenerate.
+__int128 twice_area(const SnappedTriangle& tri);
+
+// The candidate pixels of PRODUCT.md: those whose centre lies within the vertices' extent (closed),
+// on screen. Found by testing every column and row centre, not by a formula.
+struct PixelRect {
+  int x0, y0, x1, y1;  // inclusive; empty when x0 > x1 or y0 > y1
+  bool empty() const { return x0 > x1 || y0 > y1; }
+  int64_t rows() const { return empty() ? 0 : int64_t(y1) - y0 + 1; }
+  int64_t area() const { return empty() ? 0 : (int64_t(x1) - x0 + 1) * (int64_t(y1) - y0 + 1); }
+};
+PixelRect bounding_box(const SnappedTriangle& tri, const Profile& profile);
+
+// The covered pixels of row j (left to right), testing every pixel of the row.
+std::vector<int> covered_in_row(const SnappedTriangle& tri, const Profile& profile, int j);
+
 }  // namespace rastersim::reference
