@@ -1,0 +1,26 @@
+// Line numbers for the values of a JSON text, by JSON pointer ("/objects/0/color"), so that errors
+// found after parsing (nlohmann::json keeps no positions) can name the line of the offending key.
+#pragma once
+
+#include <map>
+#include <string>
+
+namespace rastersim::frontend {
+
+class JsonLines {
+ public:
+  // `text` must be valid JSON (parse it with nlohmann::json first).
+  explicit JsonLines(const std::string& text);
+  // The 1-based line where the member's key (or the array element) starts; for a pointer that is
+  // not there, the line of its closest recorded ancestor; 1 for the root.
+  int line(const std::string& pointer) const;
+
+  // "/a/b" + "c" with the JSON pointer escapes (~0, ~1).
+  static std::string child(const std::string& pointer, const std::string& key);
+  static std::string child(const std::string& pointer, size_t index) { return pointer + "/" + std::to_string(index); }
+
+ private:
+  std::map<std::string, int> lines_;
+};
+
+}  // namespace rastersim::frontend

@@ -1,0 +1,53 @@
+// A 3D scene (objects, lights, camera settings) and its rendering to screen triangles: transform,
+// light per vertex, clip, map to the viewport. The public entry points are in frontend.h; these are
+// the steps, exposed for tests.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "frontend/camera.h"
+#include "frontend/clip.h"
+#include "frontend/lighting.h"
+#include "frontend/mesh.h"
+
+namespace rastersim::frontend {
+
+struct SceneObject {
+  Mesh mesh;
+  Mat4 model;  // object to world
+  Material material;
+};
+
+struct Scene {
+  std::vector<SceneObject> objects;
+  Lighting lighting = default_lighting();
+  CameraSettings camera;
+};
+
+// Per output triangle: the object it came from and the mesh vertex of each corner (-1 when the
+// corner was made by clipping).
+struct RenderTrace {
+  std::vector<int> object;
+  std::vector<CornerSources> corners;
+};
+
+// The world-space bounding sphere of every object's vertices.
+Sphere scene_bounds(const Scene& scene);
+
+// Objects in order, triangles in mesh order, each clipped polygon fanned in place. A mirroring model
+// matrix (negative determinant) reverses each triangle's corners so front faces stay counter-clockwise.
+std::vector<ScreenTriangle> render_scene(const Scene& scene, const Camera& camera, const Profile& profile,
+                                         RenderTrace* trace = nullptr);
+
+// Scene file (JSON, docs/frontend.md) to a scene; meshes are loaded relative to the file's folder.
+Scene load_scene(const std::string& path);
+Scene parse_scene(const std::string& text, const std::string& file_name, const std::string& base_folder);
+
+// A built-in scene by name; nullptr-like empty optional is not used: unknown names throw InputError.
+Scene make_builtin_scene(const std::string& name);
+
+// The scene load_obj renders: the mesh, light grey, smooth, default lighting, no camera settings.
+Scene obj_scene(Mesh mesh);
+
+}  // namespace rastersim::frontend
