@@ -1,0 +1,52 @@
+// rastersim: one executable, subcommands (PRODUCT.md "Command line").
+// Exit codes: 0 success, 1 a check failed, 2 bad usage or bad input.
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "bench_command.h"
+#include "model/input_error.h"
+#include "render_command.h"
+
+namespace {
+constexpr int kExitBadInput = 2;
+}
+
+int main(int argc, char** argv) {
+  using namespace rastersim;
+  CLI::App app{"rastersim: bit-accurate fixed-point triangle rasterizer model (exit 0 ok, 1 check failed, 2 bad usage or input)"};
+  app.require_subcommand(1);
+  RenderOptions render_options;
+  BenchOptions bench_options;
+  CLI::App* render = add_render_command(app, render_options);
+  CLI::App* bench = add_bench_command(app, bench_options);
+  CLI::App* scenes = add_scenes_command(app);
+
+  // CLI11 would report an unknown subcommand as a missing one; name it instead.
+  const bool known_subcommand = argc > 1 && (render->check_name(argv[1]) || bench->check_name(argv[1]) || scenes->check_name(argv[1]));
+  if (argc > 1 && argv[1][0] != '-' && !known_subcommand) {
+    std::cerr << "rastersim: unknown subcommand '" << argv[1] << "' (render, bench, scenes; see --help)\n";
+    return kExitBadInput;
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);  // prints help (code 0) or the error
+    return code == 0 ? 0 : kExitBadInput;
+  }
+
+  try {
+    if (render->parsed()) return run_render(render_options);
+    if (bench->parsed()) return run_bench(bench_options);
+    if (scenes->parsed()) return run_scenes();
+  } catch (const InputError& e) {
+    std::cerr << "rastersim: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "rastersim: error: " << e.what() << "\n";
+    return kExitBadInput;
+  }
+  std::cerr << "rastersim: no subcommand\n";
+  return kExitBadInput;
+}

@@ -1,0 +1,203 @@
+#include "outputs.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include <OpenImageIO/imageio.h>
+
+#include "model/input_error.h"
+
+namespace rastersim {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+template <typename T>
+void write_image(const std::string& final_path, const std::string& temp_path, int width, int height, int channels,
+                 OIIO::TypeDesc type, const std::vector<T>& pixels) {
+  // The writer is chosen by the final path's extension; the temporary only holds the bytes.
+  auto out = OIIO::ImageOutput::create(final_path);
+  if (!out) throw std::runtime_error(final_path + ": no image writer for this extension: " + OIIO::geterror());
+  OIIO::ImageSpec spec(width, height, channels, type);
+  if (!out->open(temp_path, spec)) throw std::runtime_error(final_path + ": " + out->geterror());
+  if (!out->write_image(type, pixels.data())) throw std::runtime_error(final_path + ": " + out->geterror());
+  if (!out->close()) throw std::runtime_error(final_path + ": " + out->geterror());
+}
+
+}  // namespace
+
+OutputFiles::~OutputFiles() {
+  if (committed_) return;
+  for (const Entry& e : entries_) {
+    std::error_code ec;
+    fs::remove(e.temp_path, ec);
+  }
+}
+
+std::string OutputFiles::add(const std::string& final_path, const std::string& what) {
+  if (final_path.empty()) throw InputError(what + " needs a file name");
+  const fs::path path(final_path);
+  const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec))
+    throw InputError(final_path, 0, "cannot write " + what + ": folder '" + folder.string() + "' does not exist");
+  if (fs::is_directory(path, ec)) throw InputError(final_path, 0, "cannot write " + what + ": it is a folder");
+  if (!path.has_filename()) throw InputError(final_path, 0, "cannot write " + what + ": no file name");
+  for (const Entry& e : entries_) {
+    if (fs::weakly_canonical(e.final_path, ec) == fs::weakly_canonical(path, ec))
+      throw InputError(final_path, 0, "named by two outputs");
+  }
+  const std::string temp_name = "." + path.stem().string() + ".tmp" + std::to_string(getpid()) + "-" +
+                                std::to_string(entries_.size()) + path.extension().string();
+  entries_.push_back({final_path, (folder / temp_name).string()});
+  return entries_.back().temp_path;
+}
+
+void OutputFiles::commit() {
+  for (const Entry& e : entries_) {
+    std::error_code ec;
+    fs::rename(e.temp_path, e.final_path, ec);
+    if (ec) throw std::runtime_error(e.final_path + ": cannot move the finished file into place: " + ec.message());
+  }
+  committed_ = true;
+}
+
+void check_image_format(const std::string& path, const std::string& what) {
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) {
+    OIIO::geterror();  // clear OpenImageIO's pending error
+    throw InputError(path, 0, "cannot write " + what + ": no image format for the extension '" +
+                                  lower_extension(path) + "' (use png, exr, tif, ...)");
+  }
+}
+
+void write_color_image(const std::string& final_path, const std::string& temp_path, const ZBuffer& zbuffer) {
+  const std::vector<uint32_t>& words = zbuffer.color();
+  std::vector<uint8_t> rgb(words.size() * 3);
+  for (size_t i = 0; i < words.size(); ++i) {
+    rgb[3 * i + 0] = uint8_t(words[i] >> 16);
+    rgb[3 * i + 1] = uint8_t(words[i] >> 8);
+    rgb[3 * i + 2] = uint8_t(words[i]);
+  }
+  write_image(final_path, temp_path, zbuffer.width(), zbuffer.height(), 3, OIIO::TypeDesc::UINT8, rgb);
+}
+
+bool depth_image_is_float(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".exr" || ext == ".tif" || ext == ".tiff" || ext == ".pfm";
+}
+
+void write_depth_image(const std::string& final_path, const std::string& temp_path, const ZBuffer& zbuffer,
+                       int z_bits) {
+  const std::vector<uint32_t>& depth = zbuffer.depth();
+  const uint64_t depth_max = (uint64_t(1) << z_bits) - 1;
+  if (depth_image_is_float(final_path)) {
+    std::vector<float> values(depth.size());
+    for (size_t i = 0; i < depth.size(); ++i) values[i] = float(double(depth[i]) / double(depth_max));
+    write_image(final_path, temp_path, zbuffer.width(), zbuffer.height(), 1, OIIO::TypeDesc::FLOAT, values);
+  } else {
+    std::vector<uint16_t> values(depth.size());
+    for (size_t i = 0; i < depth.size(); ++i) values[i] = uint16_t((depth[i] * uint64_t(65535) + depth_max / 2) / depth_max);
+    write_image(final_path, temp_path, zbuffer.width(), zbuffer.height(), 1, OIIO::TypeDesc::UINT16, values);
+  }
+}
+
+FragmentCsvWriter::FragmentCsvWriter(const std::string& path) : path_(path), out_(path, std::ios::binary) {
+  if (!out_) throw std::runtime_error(path + ": cannot create the fragment trace");
+  buffer_.reserve(1 << 16);
+  buffer_ = "tri,x,y,z,pass,r,g,b,cycle\n";
+}
+
+FragmentCsvWriter::~FragmentCsvWriter() = default;
+
+void FragmentCsvWriter::on_fragment(const Fragment& f) {
+  auto field = [this](int64_t value, char separator) {
+    char digits[24];  // any int64 in decimal
+    const std::to_chars_result r = std::to_chars(digits, digits + sizeof digits, value);
+    buffer_.append(digits, r.ptr);
+    buffer_.push_back(separator);
+  };
+  field(f.tri, ',');
+  field(f.x, ',');
+  field(f.y, ',');
+  field(f.z, ',');
+  field(f.pass ? 1 : 0, ',');
+  field(f.color.r, ',');
+  field(f.color.g, ',');
+  field(f.color.b, ',');
+  field(f.cycle, '\n');
+  ++rows_;
+  if (buffer_.size() >= (1 << 16)) flush_buffer();
+}
+
+void FragmentCsvWriter::flush_buffer() {
+  out_.write(buffer_.data(), std::streamsize(buffer_.size()));
+  buffer_.clear();
+}
+
+void FragmentCsvWriter::close() {
+  flush_buffer();
+  out_.close();
+  if (!out_) throw std::runtime_error(path_ + ": write error in the fragment trace");
+}
+
+nlohmann::ordered_json stats_to_json(const FrameStats& s, const Profile& profile) {
+  nlohmann::ordered_json j;
+  j["triangles"] = s.triangles;
+  j["triangles_culled"] = s.triangles_culled;
+  j["triangles_degenerate"] = s.triangles_degenerate;
+  j["triangles_offscreen"] = s.triangles_offscreen;
+  j["triangles_drawn"] = s.triangles_drawn;
+  j["candidates"] = s.candidates;
+  j["fragments"] = s.fragments;
+  j["depth_pass"] = s.depth_pass;
+  j["depth_fail"] = s.depth_fail;
+  j["cycles"] = s.cycles;
+  auto unit = [](const UnitCounters& u) { return nlohmann::ordered_json{{"busy", u.busy}, {"stall", u.stall}}; };
+  j["units"] = {{"setup", unit(s.setup)}, {"walker", unit(s.walker)}, {"z_adder", unit(s.z_adder)},
+                {"zbuffer", unit(s.zbuffer)}};
+  j["profile"] = nlohmann::ordered_json::parse(profile_to_json(profile));
+  return j;
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  out.close();
+  if (!out) throw std::runtime_error(path + ": cannot write");
+}
+
+void print_summary(std::ostream& out, const FrameStats& s) {
+  char line[256];
+  std::snprintf(line, sizeof line, "triangles  %lld (drawn %lld, culled %lld, degenerate %lld, offscreen %lld)\n",
+                (long long)s.triangles, (long long)s.triangles_drawn, (long long)s.triangles_culled,
+                (long long)s.triangles_degenerate, (long long)s.triangles_offscreen);
+  out << line;
+  std::snprintf(line, sizeof line, "fragments  %lld (depth pass %lld, fail %lld) of %lld candidates\n",
+                (long long)s.fragments, (long long)s.depth_pass, (long long)s.depth_fail, (long long)s.candidates);
+  out << line;
+  std::snprintf(line, sizeof line, "cycles     %lld (%.3f fragments per clock)\n", (long long)s.cycles,
+                s.cycles > 0 ? double(s.fragments) / double(s.cycles) : 0.0);
+  out << line;
+  out << "unit            busy       stall\n";
+  const std::pair<const char*, const UnitCounters*> units[] = {
+      {"setup", &s.setup}, {"walker", &s.walker}, {"z_adder", &s.z_adder}, {"zbuffer", &s.zbuffer}};
+  for (const auto& [name, u] : units) {
+    std::snprintf(line, sizeof line, "%-8s %11lld %11lld\n", name, (long long)u->busy, (long long)u->stall);
+    out << line;
+  }
+}
+
+}  // namespace rastersim

@@ -1,0 +1,79 @@
+// The outputs of `rastersim render`: images through OpenImageIO, the fragment trace CSV, the stats
+// JSON and the human summary. Every file is written to a temporary beside its final path and
+// renamed into place only when all of them are complete, so a failed run leaves no partial file.
+#pragma once
+
+#include <cstdint>
+#include <fstream>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "model/pipeline.h"
+
+namespace rastersim {
+
+class OutputFiles {
+ public:
+  OutputFiles() = default;
+  OutputFiles(const OutputFiles&) = delete;
+  OutputFiles& operator=(const OutputFiles&) = delete;
+  ~OutputFiles();  // removes every temporary that was not committed
+
+  // Checks that the final path can be written (its folder exists, it is not a folder, no other
+  // output names it) and returns the temporary path to write instead. Throws InputError naming the
+  // option (`what`, e.g. "-o") and the path. Creates nothing.
+  std::string add(const std::string& final_path, const std::string& what);
+  // Renames every temporary into place.
+  void commit();
+
+ private:
+  struct Entry {
+    std::string final_path, temp_path;
+  };
+  std::vector<Entry> entries_;
+  bool committed_ = false;
+};
+
+// Throws InputError when OpenImageIO has no writer for the path's extension.
+void check_image_format(const std::string& path, const std::string& what);
+
+// Colour buffer (0x00RRGGBB words, row 0 at the top) as 8-bit RGB in the format the final path's
+// extension names, written to temp_path.
+void write_color_image(const std::string& final_path, const std::string& temp_path, const ZBuffer& zbuffer);
+
+// Depth buffer as one channel: float32 depth / (2^N - 1) for exr, tif, tiff, pfm; otherwise (png,
+// ...) uint16 round(depth * 65535 / (2^N - 1)), converted by OpenImageIO where the format needs it.
+void write_depth_image(const std::string& final_path, const std::string& temp_path, const ZBuffer& zbuffer,
+                       int z_bits);
+bool depth_image_is_float(const std::string& path);
+
+// The fragment trace: header `tri,x,y,z,pass,r,g,b,cycle`, one row per fragment in emission order.
+class FragmentCsvWriter : public FragmentSink {
+ public:
+  explicit FragmentCsvWriter(const std::string& path);
+  ~FragmentCsvWriter() override;
+  void on_fragment(const Fragment& fragment) override;
+  void close();  // flushes; throws std::runtime_error on a write error
+  int64_t rows() const { return rows_; }
+
+ private:
+  void flush_buffer();
+  std::string path_;
+  std::ofstream out_;
+  std::string buffer_;
+  int64_t rows_ = 0;
+};
+
+// The stats object of `--stats`: the FrameStats counters, per-unit busy/stall and the profile.
+nlohmann::ordered_json stats_to_json(const FrameStats& stats, const Profile& profile);
+
+// Writes text to a file; throws std::runtime_error on failure.
+void write_text_file(const std::string& path, const std::string& text);
+
+// The short human summary printed after every render.
+void print_summary(std::ostream& out, const FrameStats& stats);
+
+}  // namespace rastersim

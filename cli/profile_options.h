@@ -1,0 +1,26 @@
+// The hardware-profile options shared by the subcommands: --profile FILE and one flag per profile
+// key (`--subpixel-bits` for subpixel_bits). The file is applied first, then the flags.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "model/profile.h"
+
+namespace rastersim {
+
+struct ProfileOptions {
+  std::string profile_file;
+  std::map<std::string, std::string> flag_values;  // by profile key
+  std::map<std::string, CLI::Option*> flags;       // by profile key
+};
+
+void add_profile_options(CLI::App& app, ProfileOptions& options);
+
+// Defaults, then the profile file, then the flags given (in profile_keys() order), then
+// validate(). Throws InputError with every problem found, one a line.
+Profile resolve_profile(const ProfileOptions& options);
+
+}  // namespace rastersim

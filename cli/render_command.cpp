@@ -1,0 +1,132 @@
+#include "render_command.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "backend.h"
+#include "builtin_scenes.h"
+#include "inputs.h"
+#include "outputs.h"
+
+namespace rastersim {
+namespace {
+
+// "done / total triangles" on stderr, only on a terminal, only once the run has taken a second,
+// and at most ten times a second.
+class ProgressLine {
+ public:
+  ProgressLine(size_t total, bool enabled) : total_(total), enabled_(enabled), start_(Clock::now()) {}
+  ~ProgressLine() { finish(); }
+
+  void update(size_t done) {
+    if (!enabled_) return;
+    const Clock::time_point now = Clock::now();
+    if (now - start_ < std::chrono::seconds(1) || now - last_shown_ < std::chrono::milliseconds(100)) return;
+    last_shown_ = now;
+    shown_ = true;
+    std::fprintf(stderr, "\rrendering: %zu / %zu triangles", done, total_);
+    std::fflush(stderr);
+  }
+
+  void finish() {
+    if (!shown_) return;
+    std::fprintf(stderr, "\r\033[K");  // erase the progress line
+    std::fflush(stderr);
+    shown_ = false;
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  size_t total_;
+  bool enabled_;
+  Clock::time_point start_, last_shown_{};
+  bool shown_ = false;
+};
+
+}  // namespace
+
+CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
+  CLI::App* cmd = app.add_subcommand("render", "render a .tri file or a built-in scene through the pipeline");
+  cmd->add_option("input", o.input, "screen-space .tri file (.obj and .json scenes need the 3D front end)")
+      ->type_name("INPUT");
+  cmd->add_option("--scene", o.scene, "built-in scene to render when no INPUT is given (see `rastersim scenes`)")
+      ->type_name("NAME");
+  cmd->add_option("-o,--output", o.color_out, "colour image (png, exr, tif, ...; 8-bit RGB)")->type_name("FILE");
+  cmd->add_option("--depth-out", o.depth_out,
+                  "depth image: float depth/(2^N-1) for exr/tif/pfm, 16-bit scaled otherwise (png)")
+      ->type_name("FILE");
+  cmd->add_option("--fragments", o.fragments_out, "fragment trace CSV: tri,x,y,z,pass,r,g,b,cycle")
+      ->type_name("FILE");
+  cmd->add_option("--stats", o.stats_out, "stats JSON: counters, per-unit busy/stall, resolved profile")
+      ->type_name("FILE");
+  cmd->add_option("--backend", o.backend, "model (rtl, cosim, systemc when built in)")
+      ->check(CLI::IsMember(backend_names()))
+      ->type_name("NAME");
+  add_profile_options(*cmd, o.profile);
+  return cmd;
+}
+
+int run_render(const RenderOptions& o) {
+  // Everything that can be wrong with the command line or the input is found before rendering,
+  // and nothing is written until everything has been computed.
+  const Profile profile = resolve_profile(o.profile);
+  const Backend backend = select_backend(o.backend);
+
+  OutputFiles outputs;
+  std::string color_temp, depth_temp, fragments_temp, stats_temp;
+  if (!o.color_out.empty()) {
+    check_image_format(o.color_out, "-o");
+    color_temp = outputs.add(o.color_out, "-o");
+  }
+  if (!o.depth_out.empty()) {
+    check_image_format(o.depth_out, "--depth-out");
+    depth_temp = outputs.add(o.depth_out, "--depth-out");
+  }
+  if (!o.fragments_out.empty()) fragments_temp = outputs.add(o.fragments_out, "--fragments");
+  if (!o.stats_out.empty()) stats_temp = outputs.add(o.stats_out, "--stats");
+
+  const std::vector<ScreenTriangle> screen = load_input(o.input, o.scene, profile);
+  std::vector<SnappedTriangle> snapped;
+  snapped.reserve(screen.size());
+  for (const ScreenTriangle& t : screen) snapped.push_back(snap(t, profile));
+
+  std::unique_ptr<FragmentCsvWriter> csv;
+  if (!fragments_temp.empty()) csv = std::make_unique<FragmentCsvWriter>(fragments_temp);
+  ProgressLine progress(snapped.size(), isatty(STDERR_FILENO) != 0);
+  const RenderResult result =
+      render_triangles(backend, profile, snapped, csv.get(), [&](size_t done) { progress.update(done); });
+  progress.finish();
+
+  if (csv) csv->close();
+  if (!color_temp.empty()) write_color_image(o.color_out, color_temp, result.buffers);
+  if (!depth_temp.empty()) write_depth_image(o.depth_out, depth_temp, result.buffers, profile.z_bits);
+  if (!stats_temp.empty()) write_text_file(stats_temp, stats_to_json(result.stats, profile).dump(2) + "\n");
+  outputs.commit();
+
+  const std::string source = o.input.empty() ? "scene " + (o.scene.empty() ? std::string("default") : o.scene) : o.input;
+  std::cout << "rendered " << source << " through the " << o.backend << ", " << profile.width << "x"
+            << profile.height << ", " << to_string(profile.traversal) << " traversal\n";
+  print_summary(std::cout, result.stats);
+  for (const std::string* path : {&o.color_out, &o.depth_out, &o.fragments_out, &o.stats_out})
+    if (!path->empty()) std::cout << "wrote " << *path << "\n";
+  return 0;
+}
+
+CLI::App* add_scenes_command(CLI::App& app) {
+  return app.add_subcommand("scenes", "list the built-in scenes (rastersim render --scene NAME)");
+}
+
+int run_scenes() {
+  size_t width = 0;
+  for (const BuiltinScene& s : builtin_scenes()) width = std::max(width, s.name.size());
+  for (const BuiltinScene& s : builtin_scenes())
+    std::cout << s.name << std::string(width + 2 - s.name.size(), ' ') << s.description << "\n";
+  return 0;
+}
+
+}  // namespace rastersim

@@ -1,0 +1,30 @@
+// `rastersim render` and `rastersim scenes`.
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "profile_options.h"
+
+namespace rastersim {
+
+struct RenderOptions {
+  std::string input;
+  std::string scene;
+  std::string color_out;
+  std::string depth_out;
+  std::string fragments_out;
+  std::string stats_out;
+  std::string backend = "model";
+  ProfileOptions profile;
+};
+
+CLI::App* add_render_command(CLI::App& app, RenderOptions& options);
+// Returns the exit code; throws InputError (bad input or usage) and std::exception.
+int run_render(const RenderOptions& options);
+
+CLI::App* add_scenes_command(CLI::App& app);
+int run_scenes();
+
+}  // namespace rastersim

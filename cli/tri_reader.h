@@ -1,0 +1,30 @@
+// The .tri screen-space triangle list (PRODUCT.md "File formats"): reader and writer.
+// One triangle a line: x0 y0 z0 x1 y1 z1 x2 y2 z2 (pixels, y down; depth in [0, 1]), optionally
+// followed by r g b (flat, integers 0..255) or r0 g0 b0 r1 g1 b1 r2 g2 b2 (per vertex). No colour:
+// white. '#' starts a comment, blank lines are ignored.
+#pragma once
+
+#include <istream>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "model/profile.h"
+#include "model/triangle.h"
+
+namespace rastersim {
+
+// Reads every triangle of `in` in line order, each one checked against the profile's guard band
+// (check_screen_triangle). `file_name` only names the source in errors. Throws InputError
+// "file:line: problem" at the first bad line.
+std::vector<ScreenTriangle> read_tri(std::istream& in, const std::string& file_name, const Profile& profile);
+
+// Opens and reads a .tri file; a missing or unreadable file is an InputError naming it.
+std::vector<ScreenTriangle> read_tri_file(const std::string& path, const Profile& profile);
+
+// Writes triangles so that read_tri gives back bit-identical doubles (%.17g) and colours: no colour
+// when all vertices are white, r g b when they share one colour, nine values otherwise.
+// Each line of `comment` (may be empty) is written first as a '#' comment.
+void write_tri(std::ostream& out, const std::vector<ScreenTriangle>& triangles, const std::string& comment = "");
+
+}  // namespace rastersim

@@ -1,0 +1,321 @@
+// The rastersim binary end to end, run in a scratch folder: outputs on good input, their mutual
+// consistency (image = the trace's last passing fragments), and exit 2 with file:line and no output
+// file at all for every kind of bad input.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+
+#include "cli_test_support.h"
+
+namespace rastersim::cli_test {
+namespace {
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// 32x24 screen. Triangle 0 is a flat red triangle over the top-left corner at depth 0.5; triangle 1
+// a Gouraud triangle whose depth crosses 0.5; triangle 2 lies behind triangle 0; triangle 3 has zero
+// area.
+const char* const kSmallTri =
+    "# test scene\n"
+    "0 0 0.5  32 0 0.5  0 24 0.5  255 0 0\n"
+    "4 4 0.25  30 6 0.75  8 22 0.1  0 255 0  0 0 255  255 255 255  # crosses triangle 0\n"
+    "\n"
+    "2 2 0.9  12 2 0.9  2 12 0.9\n"
+    "1 1 0.5  5 5 0.5  9 9 0.5\n";
+
+const std::vector<std::string> kSmallProfile = {"--width", "32", "--height", "24"};
+
+std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+TEST(CliRender, SmallTriWritesConsistentOutputs) {
+  ScratchDir dir;
+  dir.write("small.tri", kSmallTri);
+  const RunResult r = run_rastersim(dir, with({"render", "small.tri", "-o", "color.png", "--depth-out", "depth.exr",
+                                               "--fragments", "frags.csv", "--stats", "stats.json"},
+                                              kSmallProfile));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"small.tri", "color.png", "depth.exr", "frags.csv", "stats.json"}));
+
+  // The human summary.
+  EXPECT_TRUE(contains(r.out, "triangles  4")) << r.out;
+  EXPECT_TRUE(contains(r.out, "fragments per clock")) << r.out;
+  for (const char* unit : {"setup", "walker", "z_adder", "zbuffer"}) EXPECT_TRUE(contains(r.out, unit)) << r.out;
+
+  const Image color = read_image(dir.path("color.png"));
+  EXPECT_EQ(color.width, 32);
+  EXPECT_EQ(color.height, 24);
+  EXPECT_EQ(color.channels, 3);
+  EXPECT_EQ(color.format, "uint8");
+  // Pixel (1, 0): centre (1.5, 0.5) is inside triangle 0 only (the others start at x, y >= 1 and
+  // triangle 3 has no area): flat red.
+  const size_t red_pixel = (0 * 32 + 1) * 3;
+  EXPECT_EQ(color.pixels8[red_pixel + 0], 255);
+  EXPECT_EQ(color.pixels8[red_pixel + 1], 0);
+  EXPECT_EQ(color.pixels8[red_pixel + 2], 0);
+  // Pixel (31, 23): centre (31.5, 23.5) is outside every triangle: the clear colour, black.
+  const size_t empty_pixel = (23 * 32 + 31) * 3;
+  EXPECT_EQ(color.pixels8[empty_pixel] + color.pixels8[empty_pixel + 1] + color.pixels8[empty_pixel + 2], 0);
+
+  const Csv csv = read_fragments_csv(dir.path("frags.csv"));
+  EXPECT_EQ(csv.header, "tri,x,y,z,pass,r,g,b,cycle");
+  const nlohmann::json stats = read_json(dir.path("stats.json"));
+  EXPECT_EQ(int64_t(csv.rows.size()), stats.at("fragments").get<int64_t>());
+  int64_t passes = 0;
+  for (const CsvRow& row : csv.rows) passes += row.pass;
+  EXPECT_EQ(passes, stats.at("depth_pass").get<int64_t>());
+  EXPECT_EQ(stats.at("depth_pass").get<int64_t>() + stats.at("depth_fail").get<int64_t>(),
+            stats.at("fragments").get<int64_t>());
+  EXPECT_EQ(stats.at("triangles").get<int64_t>(), 4);
+  EXPECT_EQ(stats.at("triangles_degenerate").get<int64_t>(), 1);
+  EXPECT_EQ(stats.at("triangles_drawn").get<int64_t>() + stats.at("triangles_culled").get<int64_t>() +
+                stats.at("triangles_degenerate").get<int64_t>() + stats.at("triangles_offscreen").get<int64_t>(),
+            4);
+  EXPECT_GE(stats.at("candidates").get<int64_t>(), stats.at("fragments").get<int64_t>());
+  EXPECT_GT(stats.at("cycles").get<int64_t>(), 0);
+  for (const char* unit : {"setup", "walker", "z_adder", "zbuffer"}) {
+    EXPECT_TRUE(stats.at("units").at(unit).at("busy").is_number_integer()) << unit;
+    EXPECT_TRUE(stats.at("units").at(unit).at("stall").is_number_integer()) << unit;
+  }
+  EXPECT_EQ(stats.at("profile").at("width").get<int>(), 32);
+  EXPECT_EQ(stats.at("profile").at("height").get<int>(), 24);
+  EXPECT_EQ(stats.at("profile").at("depth_func").get<std::string>(), "less");
+
+  // Independent replay of the trace with the depth test `less` and depth writes from the cleared
+  // buffer (2^24 - 1, black): every pass bit agrees, and the images hold the last passing fragment's
+  // colour and depth. Triangle indices are the line order and fragments of a triangle come
+  // together, in triangle order.
+  const uint32_t depth_max = (1u << 24) - 1;
+  std::vector<uint32_t> depth(32 * 24, depth_max);
+  std::vector<std::array<int64_t, 3>> rgb(32 * 24, {0, 0, 0});
+  int64_t previous_tri = 0;
+  for (const CsvRow& row : csv.rows) {
+    ASSERT_TRUE(row.x >= 0 && row.x < 32 && row.y >= 0 && row.y < 24);
+    ASSERT_GE(row.tri, previous_tri);
+    ASSERT_LE(row.tri, 3);
+    previous_tri = row.tri;
+    const size_t a = size_t(row.y * 32 + row.x);
+    const bool pass = uint32_t(row.z) < depth[a];
+    ASSERT_EQ(row.pass, pass ? 1 : 0) << "fragment of triangle " << row.tri << " at " << row.x << "," << row.y;
+    if (pass) {
+      depth[a] = uint32_t(row.z);
+      rgb[a] = {row.r, row.g, row.b};
+    }
+    if (row.tri == 0) {  // flat red at z = 0.5: Z = floor(0.5 * (2^24 - 1) + 1/2) = 2^23, within 1 LSB
+      EXPECT_EQ((std::array<int64_t, 3>{row.r, row.g, row.b}), (std::array<int64_t, 3>{255, 0, 0}));
+      EXPECT_LE(std::abs(row.z - (int64_t(1) << 23)), 1);
+    }
+  }
+  const Image depth_image = read_image(dir.path("depth.exr"));
+  EXPECT_EQ(depth_image.width, 32);
+  EXPECT_EQ(depth_image.height, 24);
+  EXPECT_EQ(depth_image.channels, 1);
+  EXPECT_EQ(depth_image.format, "float");
+  for (size_t a = 0; a < depth.size(); ++a) {
+    ASSERT_EQ(color.pixels8[3 * a + 0], rgb[a][0]) << "pixel " << a % 32 << "," << a / 32;
+    ASSERT_EQ(color.pixels8[3 * a + 1], rgb[a][1]) << "pixel " << a % 32 << "," << a / 32;
+    ASSERT_EQ(color.pixels8[3 * a + 2], rgb[a][2]) << "pixel " << a % 32 << "," << a / 32;
+    ASSERT_EQ(depth_image.pixels[a], float(double(depth[a]) / depth_max)) << "pixel " << a % 32 << "," << a / 32;
+  }
+}
+
+TEST(CliRender, DepthPngIsSixteenBitScaled) {
+  ScratchDir dir;
+  dir.write("small.tri", kSmallTri);
+  const RunResult r = run_rastersim(
+      dir, with({"render", "small.tri", "--depth-out", "depth.png", "--fragments", "f.csv", "--z-bits", "16"},
+                kSmallProfile));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Image depth = read_image(dir.path("depth.png"));
+  EXPECT_EQ(depth.channels, 1);
+  EXPECT_EQ(depth.format, "uint16");
+  // With 16 depth bits the scale is exactly 1: the image holds the z of the last passing fragment.
+  std::vector<int64_t> expected(32 * 24, 65535);
+  for (const CsvRow& row : read_fragments_csv(dir.path("f.csv")).rows)
+    if (row.pass) expected[size_t(row.y * 32 + row.x)] = row.z;
+  for (size_t a = 0; a < expected.size(); ++a) ASSERT_EQ(depth.pixels16[a], expected[a]) << a;
+}
+
+TEST(CliRender, NoOutputsRequestedWritesNothingButPrintsTheSummary) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"render", "--width", "64", "--height", "48"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(dir.listing().empty());
+  EXPECT_TRUE(contains(r.out, "scene default")) << r.out;
+  EXPECT_TRUE(contains(r.out, "cycles")) << r.out;
+  EXPECT_EQ(r.err, "");  // no progress line: stderr is not a terminal
+}
+
+TEST(CliRender, FanSceneCoversEveryPixelOnce) {
+  ScratchDir dir;
+  const RunResult r =
+      run_rastersim(dir, {"render", "--scene", "fan", "--width", "80", "--height", "60", "--fragments", "f.csv",
+                          "--stats", "s.json", "--traversal", "bbox"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::vector<int> hits(80 * 60, 0);
+  for (const CsvRow& row : read_fragments_csv(dir.path("f.csv")).rows) ++hits[size_t(row.y * 80 + row.x)];
+  for (size_t a = 0; a < hits.size(); ++a) ASSERT_EQ(hits[a], 1) << "pixel " << a % 80 << "," << a / 80;
+  EXPECT_EQ(read_json(dir.path("s.json")).at("profile").at("traversal").get<std::string>(), "bbox");
+}
+
+TEST(CliRender, ProfileFileThenFlags) {
+  ScratchDir dir;
+  dir.write("p.json", "{\n  \"width\": 40,\n  \"height\": 30,\n  \"cull\": \"back\"\n}\n");
+  const RunResult r = run_rastersim(dir, {"render", "--profile", "p.json", "--width", "20", "-o", "c.tif",
+                                          "--stats", "s.json", "--scene", "stress"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Image color = read_image(dir.path("c.tif"));
+  EXPECT_EQ(color.width, 20);   // the flag wins
+  EXPECT_EQ(color.height, 30);  // from the file
+  const nlohmann::json stats = read_json(dir.path("s.json"));
+  EXPECT_EQ(stats.at("profile").at("cull").get<std::string>(), "back");
+  EXPECT_GT(stats.at("triangles_culled").get<int64_t>(), 0);
+}
+
+TEST(CliRender, EmptyTriListRendersAClearFrame) {
+  ScratchDir dir;
+  dir.write("empty.tri", "# nothing here\n\n");
+  const RunResult r = run_rastersim(dir, with({"render", "empty.tri", "--fragments", "f.csv", "--stats", "s.json"},
+                                              kSmallProfile));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_text(dir.path("f.csv")), "tri,x,y,z,pass,r,g,b,cycle\n");
+  EXPECT_EQ(read_json(dir.path("s.json")).at("triangles").get<int>(), 0);
+}
+
+TEST(CliRender, ScenesAreListed) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"scenes"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* name : {"default", "overlap", "fan", "stress"}) EXPECT_TRUE(contains(r.out, name)) << r.out;
+}
+
+TEST(CliHelp, EverySubcommandHasHelp) {
+  ScratchDir dir;
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"--help"}, {"render", "--help"}, {"bench", "--help"}, {"scenes", "--help"}}) {
+    const RunResult r = run_rastersim(dir, args);
+    EXPECT_EQ(r.exit_code, 0) << args[0];
+    EXPECT_TRUE(contains(r.out, "Usage")) << r.out;
+  }
+  const RunResult render_help = run_rastersim(dir, {"render", "--help"});
+  for (const char* flag : {"--subpixel-bits", "--z-bits", "--depth-func", "--memory-latency", "--profile", "--scene"})
+    EXPECT_TRUE(contains(render_help.out, flag)) << flag;
+  EXPECT_TRUE(dir.listing().empty());
+}
+
+TEST(CliBench, PrintsThroughput) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(
+      dir, {"bench", "--triangles", "3000", "--size", "2..12", "--seed", "5", "--repeat", "2", "--width", "64", "--height", "48"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* part : {"triangles", "fragments", "per second", "candidates", "cycles"})
+    EXPECT_TRUE(contains(r.out, part)) << r.out;
+  EXPECT_TRUE(dir.listing().empty());
+}
+
+// Bad input: exit 2, the message names what is wrong (file:line where there is one), and the run
+// leaves no file behind, neither outputs nor temporaries.
+struct BadRun {
+  const char* name;
+  const char* tri_line;  // written as line 3 of bad.tri (after a comment and a good line); null: no file
+  std::vector<std::string> args;  // after "render", before the outputs
+  const char* message;            // must appear on stderr
+};
+
+class CliBadInput : public ::testing::TestWithParam<BadRun> {};
+
+TEST_P(CliBadInput, ExitsTwoWithMessageAndWritesNothing) {
+  const BadRun& bad = GetParam();
+  ScratchDir dir;
+  std::set<std::string> before;
+  if (bad.tri_line) {
+    dir.write("bad.tri", std::string("# header\n0 0 0.5 10 0 0.5 0 10 0.5\n") + bad.tri_line + "\n1 1 0.5 9 1 0.5 1 9 0.5\n");
+    before.insert("bad.tri");
+  }
+  if (std::string(bad.name) == "BadProfileFile") {
+    dir.write("p.json", "{\n  \"width\": 32,\n  \"subpixel_bits\": \"four\"\n}\n");
+    before.insert("p.json");
+  }
+  std::vector<std::string> args = {"render"};
+  args.insert(args.end(), bad.args.begin(), bad.args.end());
+  for (const char* out : {"-o", "--depth-out", "--fragments", "--stats"}) {
+    if (std::find(bad.args.begin(), bad.args.end(), out) != bad.args.end()) continue;  // the case names it
+    args.push_back(out);
+    const std::string o = out;
+    args.push_back(o == "-o" ? "color.png" : o == "--depth-out" ? "depth.exr" : o == "--fragments" ? "f.csv" : "s.json");
+  }
+  const RunResult r = run_rastersim(dir, args);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, bad.message)) << "stderr: " << r.err;
+  EXPECT_EQ(dir.listing(), before);
+  EXPECT_EQ(r.out, "");
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    AllKinds, CliBadInput,
+    ::testing::Values(
+        BadRun{"MalformedLine", "0 0 0.5 10 0 0.5 0 ten 0.5", {"bad.tri", "--width", "32", "--height", "24"},
+               "bad.tri:3: y2 'ten' is not a number"},
+        BadRun{"TruncatedLine", "0 0 0.5 10 0 0.5 0", {"bad.tri", "--width", "32", "--height", "24"},
+               "bad.tri:3: expected 9 numbers"},
+        BadRun{"NaN", "0 0 0.5 10 0 nan 0 10 0.5", {"bad.tri", "--width", "32", "--height", "24"},
+               "bad.tri:3: z1 'nan' is not a finite number"},
+        BadRun{"Inf", "0 0 0.5 10 0 0.5 -inf 10 0.5", {"bad.tri", "--width", "32", "--height", "24"},
+               "bad.tri:3: x2 '-inf' is not a finite number"},
+        BadRun{"DepthOutsideUnitRange", "0 0 0.5 10 0 0.5 0 10 1.5", {"bad.tri", "--width", "32", "--height", "24"},
+               "bad.tri:3: z2 1.5 is outside the depth range [0, 1]"},
+        BadRun{"OutsideGuardBand", "0 0 0.5 10 0 0.5 0 49 0.5", {"bad.tri", "--width", "32", "--height", "24"},
+               "bad.tri:3: third vertex y 49"},
+        BadRun{"BadColour", "0 0 0.5 10 0 0.5 0 10 0.5 1 2 300", {"bad.tri", "--width", "32", "--height", "24"},
+               "bad.tri:3: b 300 is outside the colour range 0..255"},
+        BadRun{"UnknownFlag", nullptr, {"--frobnicate", "3"}, "--frobnicate"},
+        BadRun{"SubpixelBitsNine", nullptr, {"--subpixel-bits", "9"}, "subpixel_bits is 9; it must be in 1..8"},
+        BadRun{"WidthZero", nullptr, {"--width", "0"}, "width is 0; it must be in 1..4096"},
+        BadRun{"BothProfileErrors", nullptr, {"--width", "0", "--z-bits", "8"}, "z_bits is 8"},
+        BadRun{"FlagNotANumber", nullptr, {"--height", "tall"}, "--height: height takes an integer, not 'tall'"},
+        BadRun{"BadEnum", nullptr, {"--depth-func", "sometimes"}, "depth_func is 'sometimes'"},
+        BadRun{"BadProfileFile", nullptr, {"--profile", "p.json"}, "p.json:3: "},
+        BadRun{"MissingProfileFile", nullptr, {"--profile", "nope.json"}, "nope.json: cannot open"},
+        BadRun{"MissingInputFile", nullptr, {"missing.tri"}, "missing.tri: cannot open"},
+        BadRun{"UnknownInputType", nullptr, {"input.xyz"}, "input.xyz: unknown input type '.xyz'"},
+        BadRun{"ObjNeedsFrontEnd", nullptr, {"mesh.obj"}, "mesh.obj: 3D inputs need the front end"},
+        BadRun{"UnknownScene", nullptr, {"--scene", "teapot"}, "unknown scene 'teapot'"},
+        BadRun{"InputAndScene", nullptr, {"a.tri", "--scene", "fan"}, "not both"},
+        BadRun{"RtlBackendNotBuilt", nullptr, {"--backend", "rtl"}, "backend rtl is not built in this binary"},
+        BadRun{"UnknownBackend", nullptr, {"--backend", "gpu"}, "--backend"},
+        BadRun{"OutputFolderMissing", nullptr, {"--stats", "no/such/folder/s2.json"}, "folder 'no/such/folder' does not exist"},
+        BadRun{"ImageFormatUnknown", nullptr, {"-o", "picture.nosuchformat"}, "no image format"}),
+    [](const ::testing::TestParamInfo<BadRun>& info) { return info.param.name; });
+
+TEST(CliBadUsage, UnknownOrMissingSubcommand) {
+  ScratchDir dir;
+  const RunResult unknown = run_rastersim(dir, {"paint", "x.tri"});
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_TRUE(contains(unknown.err, "unknown subcommand 'paint'")) << unknown.err;
+  const RunResult none = run_rastersim(dir, {});
+  EXPECT_EQ(none.exit_code, 2);
+  const RunResult bad_size = run_rastersim(dir, {"bench", "--size", "9..3"});
+  EXPECT_EQ(bad_size.exit_code, 2);
+  EXPECT_TRUE(contains(bad_size.err, "--size '9..3'")) << bad_size.err;
+  EXPECT_TRUE(dir.listing().empty());
+}
+
+TEST(CliBadInput, LaterBadLineStillWritesNothingAfterManyGoodOnes) {
+  // The whole input is read before anything is rendered or written.
+  ScratchDir dir;
+  std::string text;
+  for (int i = 0; i < 2000; ++i) text += "0 0 0.5 30 0 0.5 0 20 0.5 10 20 30\n";
+  text += "0 0 0.5 30 0 0.5 0 20\n";
+  dir.write("long.tri", text);
+  const RunResult r = run_rastersim(dir, with({"render", "long.tri", "-o", "c.png", "--fragments", "f.csv"}, kSmallProfile));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(contains(r.err, "long.tri:2001: ")) << r.err;
+  EXPECT_EQ(dir.listing(), std::set<std::string>{"long.tri"});
+}
+
+}  // namespace
+}  // namespace rastersim::cli_test

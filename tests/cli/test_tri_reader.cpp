@@ -1,0 +1,210 @@
+// The .tri reader and writer, in process: good inputs, every kind of bad line (each error names
+// file:line and the reason), and exact round trips through the writer.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <sstream>
+
+#include "model/input_error.h"
+#include "tri_reader.h"
+
+namespace rastersim {
+namespace {
+
+Profile small_profile() {
+  Profile p;
+  p.width = 32;
+  p.height = 24;
+  return p;
+}
+
+std::vector<ScreenTriangle> read_text(const std::string& text, const Profile& profile = small_profile()) {
+  std::istringstream in(text);
+  return read_tri(in, "scene.tri", profile);
+}
+
+// The InputError message for `text`, or "no error".
+std::string error_of(const std::string& text, const Profile& profile = small_profile()) {
+  try {
+    read_text(text, profile);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+uint64_t bits(double v) {
+  uint64_t b;
+  std::memcpy(&b, &v, sizeof b);
+  return b;
+}
+
+TEST(TriReader, ReadsNineNumbersAsWhiteTriangle) {
+  const auto tris = read_text("1 2 0 3.5 4 0.25 5 6e0 1\n");
+  ASSERT_EQ(tris.size(), 1u);
+  EXPECT_EQ(tris[0].v[0].x, 1.0);
+  EXPECT_EQ(tris[0].v[0].y, 2.0);
+  EXPECT_EQ(tris[0].v[0].z, 0.0);
+  EXPECT_EQ(tris[0].v[1].x, 3.5);
+  EXPECT_EQ(tris[0].v[1].z, 0.25);
+  EXPECT_EQ(tris[0].v[2].y, 6.0);
+  EXPECT_EQ(tris[0].v[2].z, 1.0);
+  for (const ScreenVertex& v : tris[0].v) EXPECT_EQ(v.color, (Rgb{255, 255, 255}));
+}
+
+TEST(TriReader, ReadsFlatAndPerVertexColours) {
+  const auto tris = read_text(
+      "0 0 0.5 10 0 0.5 0 10 0.5 1 2 3\n"
+      "0 0 0.5 10 0 0.5 0 10 0.5 10 20 30 40 50 60 70 80 255\n");
+  ASSERT_EQ(tris.size(), 2u);
+  for (const ScreenVertex& v : tris[0].v) EXPECT_EQ(v.color, (Rgb{1, 2, 3}));
+  EXPECT_EQ(tris[1].v[0].color, (Rgb{10, 20, 30}));
+  EXPECT_EQ(tris[1].v[1].color, (Rgb{40, 50, 60}));
+  EXPECT_EQ(tris[1].v[2].color, (Rgb{70, 80, 255}));
+}
+
+TEST(TriReader, SkipsCommentsBlankLinesAndCarriageReturns) {
+  const auto tris = read_text(
+      "# a comment line\n"
+      "\n"
+      "   \t  \n"
+      "0 0 0.1 10 0 0.1 0 10 0.1   # trailing comment 1 2 3\r\n"
+      "#0 0 0 1 1 1 2 2 2\n"
+      "\t1 1 0.2\t11 1 0.2 1 11 0.2 9 8 7\r\n");
+  ASSERT_EQ(tris.size(), 2u);
+  EXPECT_EQ(tris[0].v[0].color, (Rgb{255, 255, 255}));  // the comment's numbers are not colours
+  EXPECT_EQ(tris[1].v[0].x, 1.0);
+  EXPECT_EQ(tris[1].v[2].color, (Rgb{9, 8, 7}));
+}
+
+TEST(TriReader, EmptyInputHasNoTriangles) {
+  EXPECT_TRUE(read_text("").empty());
+  EXPECT_TRUE(read_text("# nothing\n\n").empty());
+}
+
+TEST(TriReader, GuardBandIsHalfOpen) {
+  // Guard band for 32x24: x in [-32, 64), y in [-24, 48) (PRODUCT.md, check_screen_triangle).
+  EXPECT_EQ(read_text("-32 -24 0 63.999 -24 0 -32 47.999 1\n").size(), 1u);
+  EXPECT_NE(error_of("-32 -24 0 64 -24 0 -32 47 1\n").find("scene.tri:1: second vertex x 64"), std::string::npos);
+  EXPECT_NE(error_of("-32 -24 0 63 -24 0 -32 48 1\n").find("scene.tri:1: third vertex y 48"), std::string::npos);
+  EXPECT_NE(error_of("-32.001 -24 0 63 -24 0 -32 47 1\n").find("scene.tri:1: first vertex x -32.001"), std::string::npos);
+}
+
+struct BadLine {
+  const char* name;
+  const char* line;
+  const char* reason;  // must appear in the message
+};
+
+class TriReaderBadLine : public ::testing::TestWithParam<BadLine> {};
+
+TEST_P(TriReaderBadLine, NamesFileLineAndReason) {
+  const BadLine& bad = GetParam();
+  // Two good lines and a comment first, so the bad line is line 4.
+  const std::string text = std::string("0 0 0.5 10 0 0.5 0 10 0.5\n# comment\n1 1 0.5 9 1 0.5 1 9 0.5 1 2 3\n") +
+                           bad.line + "\n0 0 0 1 0 0 0 1 0\n";
+  const std::string message = error_of(text);
+  EXPECT_EQ(message.rfind("scene.tri:4: ", 0), 0u) << message;
+  EXPECT_NE(message.find(bad.reason), std::string::npos) << message;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    AllKinds, TriReaderBadLine,
+    ::testing::Values(
+        BadLine{"NotANumber", "0 0 0.5 10 zero 0.5 0 10 0.5", "y1 'zero' is not a number"},
+        BadLine{"TrailingGarbage", "0 0 0.5 10 0 0.5 0 10x 0.5", "y2 '10x' is not a number"},
+        BadLine{"CommaSeparated", "0,0 0 0.5 10 0 0.5 0 10 0.5", "x0 '0,0' is not a number"},
+        BadLine{"Truncated", "0 0 0.5 10 0 0.5 0 10", "the line has 8 values"},
+        BadLine{"OneValue", "7", "the line has 1 value"},
+        BadLine{"TenValues", "0 0 0.5 10 0 0.5 0 10 0.5 1", "the line has 10 values"},
+        BadLine{"FifteenValues", "0 0 0.5 10 0 0.5 0 10 0.5 1 2 3 4 5 6", "the line has 15 values"},
+        BadLine{"NaN", "0 0 0.5 nan 0 0.5 0 10 0.5", "x1 'nan' is not a finite number"},
+        BadLine{"NaNDepth", "0 0 NAN 10 0 0.5 0 10 0.5", "z0 'NAN' is not a finite number"},
+        BadLine{"Inf", "0 0 0.5 10 0 0.5 0 inf 0.5", "y2 'inf' is not a finite number"},
+        BadLine{"MinusInfinity", "-infinity 0 0.5 10 0 0.5 0 10 0.5", "x0 '-infinity' is not a finite number"},
+        BadLine{"Overflow", "0 1e999 0.5 10 0 0.5 0 10 0.5", "y0 '1e999' is not a finite number"},
+        BadLine{"DepthAboveOne", "0 0 0.5 10 0 1.0000001 0 10 0.5", "z1 1.0000001 is outside the depth range [0, 1]"},
+        BadLine{"DepthNegative", "0 0 -0.1 10 0 0.5 0 10 0.5", "z0 -0.1 is outside the depth range [0, 1]"},
+        BadLine{"XOutsideGuardBand", "0 0 0.5 65 0 0.5 0 10 0.5", "second vertex x 65"},
+        BadLine{"XBelowGuardBand", "0 0 0.5 10 0 0.5 -32.5 10 0.5", "third vertex x -32.5"},
+        BadLine{"YOutsideGuardBand", "0 48.5 0.5 10 0 0.5 0 10 0.5", "first vertex y 48.5"},
+        BadLine{"FarOutside", "0 0 0.5 1e300 0 0.5 0 10 0.5", "outside the guard band"},
+        BadLine{"ColourAbove255", "0 0 0.5 10 0 0.5 0 10 0.5 0 256 0", "g 256 is outside the colour range 0..255"},
+        BadLine{"ColourNegative", "0 0 0.5 10 0 0.5 0 10 0.5 -1 0 0", "r -1 is outside the colour range 0..255"},
+        BadLine{"ColourFraction", "0 0 0.5 10 0 0.5 0 10 0.5 0 0 1.5", "b '1.5' is not an integer colour value"},
+        BadLine{"VertexColourNaN", "0 0 0.5 10 0 0.5 0 10 0.5 0 0 0 1 1 1 2 nan 2", "g2 'nan' is not a finite number"},
+        BadLine{"VertexColourWord", "0 0 0.5 10 0 0.5 0 10 0.5 0 0 0 red 1 1 2 2 2", "r1 'red' is not a number"}),
+    [](const ::testing::TestParamInfo<BadLine>& info) { return info.param.name; });
+
+TEST(TriReader, ErrorAtFirstLineCountsFromOne) {
+  EXPECT_EQ(error_of("1 2 3\n").rfind("scene.tri:1: ", 0), 0u);
+}
+
+TEST(TriReader, MissingFileIsAnInputErrorNamingIt) {
+  try {
+    read_tri_file("/nonexistent/folder/none.tri", small_profile());
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/folder/none.tri: cannot open"), std::string::npos) << e.what();
+  }
+}
+
+TEST(TriReader, FolderIsAnInputError) {
+  EXPECT_THROW(read_tri_file("/tmp", small_profile()), InputError);
+}
+
+TEST(TriWriter, RoundTripsBitExactly) {
+  Profile p;  // 640x480: guard band x in [-640, 1280), y in [-480, 960)
+  std::mt19937_64 rng(7);
+  auto unit = [&] { return double(rng() >> 11) * 0x1p-53; };
+  std::vector<ScreenTriangle> tris;
+  const double special[] = {0.0, -0.0, 0.1, 1.0 / 3.0, 5e-324, 1.0, std::nextafter(1.0, 0.0), 0.5, 2.2250738585072014e-308};
+  for (int n = 0; n < 500; ++n) {
+    ScreenTriangle t;
+    for (int k = 0; k < 3; ++k) {
+      ScreenVertex& v = t.v[k];
+      v.x = -640 + unit() * 1920;
+      v.y = -480 + unit() * 1440;
+      v.z = n < 9 ? special[n] : unit();
+      if (n < 9) v.x = special[(n + k) % 9] * 100;
+      v.color = n % 3 == 0 ? Rgb{} : Rgb{uint8_t(rng()), uint8_t(rng()), uint8_t(rng())};
+    }
+    if (n % 3 == 1) t.v[1].color = t.v[2].color = t.v[0].color;  // flat
+    tris.push_back(t);
+  }
+  std::ostringstream out;
+  write_tri(out, tris, "written by the round-trip test\nsecond comment line");
+  const std::string text = out.str();
+  EXPECT_EQ(text.rfind("# written by the round-trip test\n# second comment line\n", 0), 0u);
+  std::istringstream in(text);
+  const auto back = read_tri(in, "roundtrip.tri", p);
+  ASSERT_EQ(back.size(), tris.size());
+  for (size_t i = 0; i < tris.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(bits(back[i].v[k].x), bits(tris[i].v[k].x)) << i;
+      EXPECT_EQ(bits(back[i].v[k].y), bits(tris[i].v[k].y)) << i;
+      EXPECT_EQ(bits(back[i].v[k].z), bits(tris[i].v[k].z)) << i;
+      EXPECT_EQ(back[i].v[k].color, tris[i].v[k].color) << i;
+    }
+  }
+}
+
+TEST(TriWriter, WritesColourOnlyWhenNeeded) {
+  ScreenTriangle white{{{0, 0, 0, {}}, {1, 0, 0, {}}, {0, 1, 0, {}}}};
+  ScreenTriangle flat = white;
+  for (ScreenVertex& v : flat.v) v.color = Rgb{1, 2, 3};
+  ScreenTriangle gouraud = flat;
+  gouraud.v[2].color = Rgb{4, 5, 6};
+  std::ostringstream out;
+  write_tri(out, {white, flat, gouraud});
+  EXPECT_EQ(out.str(),
+            "0 0 0 1 0 0 0 1 0\n"
+            "0 0 0 1 0 0 0 1 0 1 2 3\n"
+            "0 0 0 1 0 0 0 1 0 1 2 3 1 2 3 4 5 6\n");
+}
+
+}  // namespace
+}  // namespace rastersim
