@@ -10,78 +10,76 @@
 
 namespace rastersim {
 
+// One plane register as the hardware holds it: a two's-complement value of `reg_bits` with
+// `guard_bits` fraction bits (depth s(N+1).F, colour s9.F).
 class PlaneRegister {
  public:
-  void configure(int reg_bits, int guard_bits, int64_t out_max) {
-    shift_ = 64 - reg_bits;
-    guard_bits_ = guard_bits;
-    out_max_ = out_max;
-  }
-  void load(const PlaneSetup& p) {
-    step_x_ = p.step_x;
-    step_y_ = p.step_y;
-    row_ = value_ = p.start;
-  }
-  void step_x() { value_ = wrap(value_ + step_x_); }
-  void next_row() { row_ = value_ = wrap(row_ + step_y_); }
-  // Span walker: enter the row at pixel offset t >= 0 from the bounding box's x0. A small
-  // multiplier (t has x_bits) once per row, never per pixel.
-  void enter_row_at(int64_t t) { value_ = wrap(row_ + int64_t(uint64_t(t) * uint64_t(step_x_))); }
+  PlaneRegister(int64_t value, int reg_bits, int guard_bits, int64_t out_max)
+      : value_(int64_t(uint64_t(value) << (64 - reg_bits)) >> (64 - reg_bits)),
+        guard_bits_(guard_bits), out_max_(out_max), reg_bits_(reg_bits) {}
+  int64_t value() const { return value_; }
   // Rounded integer output, clamped to [0, out_max]: (value + 2^(F-1)) >> F.
   int64_t output() const {
-    const int64_t rounded = wrap(value_ + (int64_t(1) << (guard_bits_ - 1))) >> guard_bits_;
+    const int shift = 64 - reg_bits_;
+    const int64_t sum = int64_t(uint64_t(value_ + (int64_t(1) << (guard_bits_ - 1))) << shift) >> shift;
+    const int64_t rounded = sum >> guard_bits_;
     return rounded < 0 ? 0 : (rounded > out_max_ ? out_max_ : rounded);
   }
-  int64_t value() const { return value_; }
 
  private:
-  int64_t wrap(int64_t v) const { return int64_t(uint64_t(v) << shift_) >> shift_; }
-  int shift_ = 0, guard_bits_ = 1;
-  int64_t out_max_ = 0;
-  int64_t step_x_ = 0, step_y_ = 0, row_ = 0, value_ = 0;
+  int64_t value_;
+  int guard_bits_;
+  int64_t out_max_;
+  int reg_bits_;
 };
 
-// The unit: one depth register and, for Gouraud shading, three colour registers, stepped together.
+// The unit: the depth register and three colour registers (used for Gouraud shading), stepped
+// together. The model accumulates modulo 2^64 and reduces to the register width when a value is
+// read: 2^reg_bits divides 2^64, so this equals wrapping at every step, with fewer operations.
 class ZAdder {
  public:
-  ZAdder(const Widths& widths, int z_bits, bool gouraud) : gouraud_(gouraud) {
-    depth_.configure(widths.z_reg_bits, widths.guard_bits, (int64_t(1) << z_bits) - 1);
-    for (PlaneRegister& c : color_) c.configure(widths.color_reg_bits, widths.guard_bits, 255);
-  }
+  ZAdder(const Widths& widths, int z_bits, bool gouraud)
+      : gouraud_(gouraud), guard_bits_(widths.guard_bits), z_reg_bits_(widths.z_reg_bits),
+        color_reg_bits_(widths.color_reg_bits), z_max_((int64_t(1) << z_bits) - 1) {}
+
   void load(const SetupResult& s) {
-    depth_.load(s.depth);
+    const PlaneSetup* planes[kPlanes] = {&s.depth, &s.color[0], &s.color[1], &s.color[2]};
+    for (int k = 0; k < kPlanes; ++k) {
+      const bool used = k == 0 || gouraud_;
+      step_x_[k] = used ? uint64_t(planes[k]->step_x) : 0;
+      step_y_[k] = used ? uint64_t(planes[k]->step_y) : 0;
+      row_[k] = value_[k] = used ? uint64_t(planes[k]->start) : 0;
+    }
     flat_ = s.flat_color;
-    if (gouraud_)
-      for (int c = 0; c < 3; ++c) color_[c].load(s.color[c]);
   }
   void step_x() {
-    depth_.step_x();
-    if (gouraud_)
-      for (PlaneRegister& c : color_) c.step_x();
+    for (int k = 0; k < kPlanes; ++k) value_[k] += step_x_[k];
   }
   void next_row() {
-    depth_.next_row();
-    if (gouraud_)
-      for (PlaneRegister& c : color_) c.next_row();
+    for (int k = 0; k < kPlanes; ++k) value_[k] = row_[k] += step_y_[k];
   }
+  // Span walker: enter the row at pixel offset t >= 0 from the bounding box's x0. A small
+  // multiplier (t has x_bits) once per row, never per pixel.
   void enter_row_at(int64_t t) {
-    depth_.enter_row_at(t);
-    if (gouraud_)
-      for (PlaneRegister& c : color_) c.enter_row_at(t);
+    for (int k = 0; k < kPlanes; ++k) value_[k] = row_[k] + uint64_t(t) * step_x_[k];
   }
-  uint32_t depth() const { return uint32_t(depth_.output()); }
+
+  PlaneRegister depth_register() const { return {int64_t(value_[0]), z_reg_bits_, guard_bits_, z_max_}; }
+  PlaneRegister color_register(int c) const { return {int64_t(value_[1 + c]), color_reg_bits_, guard_bits_, 255}; }
+  uint32_t depth() const { return uint32_t(depth_register().output()); }
   Rgb color() const {
     if (!gouraud_) return flat_;
-    return Rgb{uint8_t(color_[0].output()), uint8_t(color_[1].output()), uint8_t(color_[2].output())};
+    return Rgb{uint8_t(color_register(0).output()), uint8_t(color_register(1).output()),
+               uint8_t(color_register(2).output())};
   }
-  const PlaneRegister& depth_register() const { return depth_; }
-  const PlaneRegister& color_register(int c) const { return color_[c]; }
 
  private:
+  static constexpr int kPlanes = 4;  // depth, r, g, b
   bool gouraud_;
+  int guard_bits_, z_reg_bits_, color_reg_bits_;
+  int64_t z_max_;
   Rgb flat_;
-  PlaneRegister depth_;
-  PlaneRegister color_[3];
+  uint64_t step_x_[kPlanes] = {}, step_y_[kPlanes] = {}, row_[kPlanes] = {}, value_[kPlanes] = {};
 };
 
 }  // namespace rastersim
