@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fcntl.h>
+#include <pty.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -95,6 +96,48 @@ inline RunResult run_rastersim(const ScratchDir& dir, const std::vector<std::str
   if (pid > 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
   result.out = read_text(out_path);
   result.err = read_text(err_path);
+  return result;
+}
+
+// Runs the binary with its stderr on a pseudo-terminal (as in an interactive shell); stdout goes to
+// a file. Returns what the terminal showed as `err`.
+inline RunResult run_rastersim_with_terminal_stderr(const ScratchDir& dir, const std::vector<std::string>& args) {
+  const std::string out_path = (dir.root() / "stdout.txt").string();
+  int master = -1, slave = -1;
+  if (openpty(&master, &slave, nullptr, nullptr, nullptr) != 0) throw std::runtime_error("openpty failed");
+  std::vector<char*> argv;
+  std::string exe = RASTERSIM_EXE;
+  argv.push_back(exe.data());
+  std::vector<std::string> copies = args;
+  for (std::string& a : copies) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const std::string work = dir.work().string();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(master);
+    if (chdir(work.c_str()) != 0) _exit(126);
+    const int in = open("/dev/null", O_RDONLY);
+    const int out = open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (in < 0 || out < 0) _exit(126);
+    dup2(in, 0);
+    dup2(out, 1);
+    dup2(slave, 2);
+    close(slave);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  close(slave);
+  RunResult result;
+  char buffer[4096];
+  for (;;) {  // until the child's end of the terminal closes (EIO)
+    const ssize_t n = read(master, buffer, sizeof buffer);
+    if (n <= 0) break;
+    result.err.append(buffer, size_t(n));
+  }
+  close(master);
+  int status = 0;
+  if (pid > 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  result.out = read_text(out_path);
   return result;
 }
 

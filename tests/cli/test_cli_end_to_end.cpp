@@ -186,6 +186,34 @@ TEST(CliRender, EmptyTriListRendersAClearFrame) {
   EXPECT_EQ(read_json(dir.path("s.json")).at("triangles").get<int>(), 0);
 }
 
+// Seconds of rendering (over 1 s even on a fast machine): 240 half-screen triangles on 1024x1024.
+std::string long_tri() {
+  std::string text;
+  for (int i = 0; i < 240; ++i) text += "0 0 0.5 1024 0 0.5 0 1024 0.5 " + std::to_string(i) + " 0 0\n";
+  return text;
+}
+
+TEST(CliProgress, ShownOnATerminalForALongRun) {
+  ScratchDir dir;
+  dir.write("long.tri", long_tri());
+  const RunResult r = run_rastersim_with_terminal_stderr(dir, {"render", "long.tri", "--width", "1024", "--height", "1024"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(contains(r.err, "rendering: ")) << r.err;
+  EXPECT_TRUE(contains(r.err, " / 240 triangles")) << r.err;
+  // At most ten updates a second: far fewer updates than triangles.
+  size_t updates = 0;
+  for (size_t at = r.err.find("rendering: "); at != std::string::npos; at = r.err.find("rendering: ", at + 1)) ++updates;
+  EXPECT_LT(updates, 100u) << r.err;
+}
+
+TEST(CliProgress, NeverShownWhenStderrIsNotATerminal) {
+  ScratchDir dir;
+  dir.write("long.tri", long_tri());
+  const RunResult r = run_rastersim(dir, {"render", "long.tri", "--width", "1024", "--height", "1024"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+}
+
 TEST(CliRender, ScenesAreListed) {
   ScratchDir dir;
   const RunResult r = run_rastersim(dir, {"scenes"});
