@@ -15,7 +15,8 @@ constexpr int kExitBadInput = 2;
 
 int main(int argc, char** argv) {
   using namespace rastersim;
-  CLI::App app{"rastersim: bit-accurate fixed-point triangle rasterizer model (exit 0 ok, 1 check failed, 2 bad usage or input)"};
+  CLI::App app{"rastersim: bit-accurate fixed-point triangle rasterizer model (exit 0 ok, 1 check failed, 2 bad usage or input)",
+               "rastersim"};
   app.require_subcommand(1);
   RenderOptions render_options;
   BenchOptions bench_options;
@@ -30,13 +31,12 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   }
   try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);  // prints help (code 0) or the error
-    return code == 0 ? 0 : kExitBadInput;
-  }
-
-  try {
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+      const int code = app.exit(e);  // prints help (code 0) or the error
+      return code == 0 ? 0 : kExitBadInput;
+    }
     if (render->parsed()) return run_render(render_options);
     if (bench->parsed()) return run_bench(bench_options);
     if (scenes->parsed()) return run_scenes();
@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
     std::cerr << "rastersim: " << e.what() << "\n";
     return kExitBadInput;
   } catch (const std::exception& e) {
+    // Anything else (an output that cannot be written, out of memory) still must not crash.
     std::cerr << "rastersim: error: " << e.what() << "\n";
     return kExitBadInput;
   }

@@ -4,11 +4,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <charconv>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "model/input_error.h"
@@ -24,16 +27,31 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
+// Writes bytes to `path`; errors name `shown_path` (the final path the user asked for).
+void write_bytes(const std::string& path, const std::string& shown_path, const char* data, size_t size) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(data, std::streamsize(size));
+  out.close();
+  if (!out) throw std::runtime_error(shown_path + ": write error (" + std::strerror(errno) + ")");
+}
+
 template <typename T>
 void write_image(const std::string& final_path, const std::string& temp_path, int width, int height, int channels,
                  OIIO::TypeDesc type, const std::vector<T>& pixels) {
-  // The writer is chosen by the final path's extension; the temporary only holds the bytes.
-  auto out = OIIO::ImageOutput::create(final_path);
+  // Encoded in memory, then written with checked writes: OpenImageIO 2.4's PNG and TIFF writers
+  // report success on a file cut short by a full disk. The writer is chosen by the final path's
+  // extension.
+  std::vector<unsigned char> encoded;
+  OIIO::Filesystem::IOVecOutput memory(encoded);
+  auto out = OIIO::ImageOutput::create(final_path, &memory);
   if (!out) throw std::runtime_error(final_path + ": no image writer for this extension: " + OIIO::geterror());
+  if (!out->supports("ioproxy"))
+    throw std::runtime_error(final_path + ": the " + out->format_name() + " writer cannot encode to memory");
   OIIO::ImageSpec spec(width, height, channels, type);
-  if (!out->open(temp_path, spec)) throw std::runtime_error(final_path + ": " + out->geterror());
+  if (!out->open(final_path, spec)) throw std::runtime_error(final_path + ": " + out->geterror());
   if (!out->write_image(type, pixels.data())) throw std::runtime_error(final_path + ": " + out->geterror());
   if (!out->close()) throw std::runtime_error(final_path + ": " + out->geterror());
+  write_bytes(temp_path, final_path, reinterpret_cast<const char*>(encoded.data()), encoded.size());
 }
 
 }  // namespace
@@ -96,7 +114,7 @@ void write_color_image(const std::string& final_path, const std::string& temp_pa
 
 bool depth_image_is_float(const std::string& path) {
   const std::string ext = lower_extension(path);
-  return ext == ".exr" || ext == ".tif" || ext == ".tiff" || ext == ".pfm";
+  return ext == ".exr" || ext == ".tif" || ext == ".tiff";
 }
 
 void write_depth_image(const std::string& final_path, const std::string& temp_path, const ZBuffer& zbuffer,
@@ -114,8 +132,9 @@ void write_depth_image(const std::string& final_path, const std::string& temp_pa
   }
 }
 
-FragmentCsvWriter::FragmentCsvWriter(const std::string& path) : path_(path), out_(path, std::ios::binary) {
-  if (!out_) throw std::runtime_error(path + ": cannot create the fragment trace");
+FragmentCsvWriter::FragmentCsvWriter(const std::string& path, const std::string& shown_path)
+    : shown_path_(shown_path), out_(path, std::ios::binary) {
+  if (!out_) throw std::runtime_error(shown_path + ": cannot create the fragment trace (" + std::strerror(errno) + ")");
   buffer_.reserve(1 << 16);
   buffer_ = "tri,x,y,z,pass,r,g,b,cycle\n";
 }
@@ -145,12 +164,14 @@ void FragmentCsvWriter::on_fragment(const Fragment& f) {
 void FragmentCsvWriter::flush_buffer() {
   out_.write(buffer_.data(), std::streamsize(buffer_.size()));
   buffer_.clear();
+  // Stop the render at the first failed write rather than after it.
+  if (!out_) throw std::runtime_error(shown_path_ + ": write error in the fragment trace (" + std::strerror(errno) + ")");
 }
 
 void FragmentCsvWriter::close() {
   flush_buffer();
   out_.close();
-  if (!out_) throw std::runtime_error(path_ + ": write error in the fragment trace");
+  if (!out_) throw std::runtime_error(shown_path_ + ": write error in the fragment trace (" + std::strerror(errno) + ")");
 }
 
 nlohmann::ordered_json stats_to_json(const FrameStats& s, const Profile& profile) {
@@ -172,11 +193,8 @@ nlohmann::ordered_json stats_to_json(const FrameStats& s, const Profile& profile
   return j;
 }
 
-void write_text_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw std::runtime_error(path + ": cannot write");
+void write_text_file(const std::string& path, const std::string& shown_path, const std::string& text) {
+  write_bytes(path, shown_path, text.data(), text.size());
 }
 
 void print_summary(std::ostream& out, const FrameStats& s) {

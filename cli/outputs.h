@@ -44,7 +44,7 @@ void check_image_format(const std::string& path, const std::string& what);
 // extension names, written to temp_path.
 void write_color_image(const std::string& final_path, const std::string& temp_path, const ZBuffer& zbuffer);
 
-// Depth buffer as one channel: float32 depth / (2^N - 1) for exr, tif, tiff, pfm; otherwise (png,
+// Depth buffer as one channel: float32 depth / (2^N - 1) for exr, tif, tiff; otherwise (png,
 // ...) uint16 round(depth * 65535 / (2^N - 1)), converted by OpenImageIO where the format needs it.
 void write_depth_image(const std::string& final_path, const std::string& temp_path, const ZBuffer& zbuffer,
                        int z_bits);
@@ -53,15 +53,16 @@ bool depth_image_is_float(const std::string& path);
 // The fragment trace: header `tri,x,y,z,pass,r,g,b,cycle`, one row per fragment in emission order.
 class FragmentCsvWriter : public FragmentSink {
  public:
-  explicit FragmentCsvWriter(const std::string& path);
+  // Writes to `path`; errors name `shown_path`, the output the user asked for.
+  FragmentCsvWriter(const std::string& path, const std::string& shown_path);
   ~FragmentCsvWriter() override;
   void on_fragment(const Fragment& fragment) override;
-  void close();  // flushes; throws std::runtime_error on a write error
+  void close();  // flushes; throws std::runtime_error on a write error (as does a failed flush)
   int64_t rows() const { return rows_; }
 
  private:
   void flush_buffer();
-  std::string path_;
+  std::string shown_path_;
   std::ofstream out_;
   std::string buffer_;
   int64_t rows_ = 0;
@@ -70,8 +71,8 @@ class FragmentCsvWriter : public FragmentSink {
 // The stats object of `--stats`: the FrameStats counters, per-unit busy/stall and the profile.
 nlohmann::ordered_json stats_to_json(const FrameStats& stats, const Profile& profile);
 
-// Writes text to a file; throws std::runtime_error on failure.
-void write_text_file(const std::string& path, const std::string& text);
+// Writes text to `path`; throws std::runtime_error naming `shown_path` on failure.
+void write_text_file(const std::string& path, const std::string& shown_path, const std::string& text);
 
 // The short human summary printed after every render.
 void print_summary(std::ostream& out, const FrameStats& stats);

@@ -58,7 +58,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
       ->type_name("NAME");
   cmd->add_option("-o,--output", o.color_out, "colour image (png, exr, tif, ...; 8-bit RGB)")->type_name("FILE");
   cmd->add_option("--depth-out", o.depth_out,
-                  "depth image: float depth/(2^N-1) for exr/tif/pfm, 16-bit scaled otherwise (png)")
+                  "depth image: float depth/(2^N-1) for exr/tif, 16-bit scaled otherwise (png)")
       ->type_name("FILE");
   cmd->add_option("--fragments", o.fragments_out, "fragment trace CSV: tri,x,y,z,pass,r,g,b,cycle")
       ->type_name("FILE");
@@ -96,7 +96,7 @@ int run_render(const RenderOptions& o) {
   for (const ScreenTriangle& t : screen) snapped.push_back(snap(t, profile));
 
   std::unique_ptr<FragmentCsvWriter> csv;
-  if (!fragments_temp.empty()) csv = std::make_unique<FragmentCsvWriter>(fragments_temp);
+  if (!fragments_temp.empty()) csv = std::make_unique<FragmentCsvWriter>(fragments_temp, o.fragments_out);
   ProgressLine progress(snapped.size(), isatty(STDERR_FILENO) != 0);
   const RenderResult result =
       render_triangles(backend, profile, snapped, csv.get(), [&](size_t done) { progress.update(done); });
@@ -105,7 +105,7 @@ int run_render(const RenderOptions& o) {
   if (csv) csv->close();
   if (!color_temp.empty()) write_color_image(o.color_out, color_temp, result.buffers);
   if (!depth_temp.empty()) write_depth_image(o.depth_out, depth_temp, result.buffers, profile.z_bits);
-  if (!stats_temp.empty()) write_text_file(stats_temp, stats_to_json(result.stats, profile).dump(2) + "\n");
+  if (!stats_temp.empty()) write_text_file(stats_temp, o.stats_out, stats_to_json(result.stats, profile).dump(2) + "\n");
   outputs.commit();
 
   const std::string source = o.input.empty() ? "scene " + (o.scene.empty() ? std::string("default") : o.scene) : o.input;

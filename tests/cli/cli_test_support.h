@@ -4,9 +4,11 @@
 
 #include <fcntl.h>
 #include <pty.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -67,8 +69,11 @@ struct RunResult {
   std::string out, err;
 };
 
-// Runs the rastersim binary with `args` in dir.work(), stdin from /dev/null.
-inline RunResult run_rastersim(const ScratchDir& dir, const std::vector<std::string>& args) {
+// Runs the rastersim binary with `args` in dir.work(), stdin from /dev/null. A non-zero
+// max_file_bytes limits the size of every file it writes (RLIMIT_FSIZE, with SIGXFSZ ignored so
+// that a write past it fails with EFBIG as on a full disk).
+inline RunResult run_rastersim(const ScratchDir& dir, const std::vector<std::string>& args,
+                               rlim_t max_file_bytes = 0) {
   const std::string out_path = (dir.root() / "stdout.txt").string();
   const std::string err_path = (dir.root() / "stderr.txt").string();
   std::vector<char*> argv;
@@ -88,6 +93,11 @@ inline RunResult run_rastersim(const ScratchDir& dir, const std::vector<std::str
     dup2(in, 0);
     dup2(out, 1);
     dup2(err, 2);
+    if (max_file_bytes) {
+      signal(SIGXFSZ, SIG_IGN);
+      const rlimit limit{max_file_bytes, max_file_bytes};
+      if (setrlimit(RLIMIT_FSIZE, &limit) != 0) _exit(126);
+    }
     execv(argv[0], argv.data());
     _exit(127);
   }

@@ -319,6 +319,27 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"ImageFormatUnknown", nullptr, {"-o", "picture.nosuchformat"}, "no image format"}),
     [](const ::testing::TestParamInfo<BadRun>& info) { return info.param.name; });
 
+// A write that fails part-way (as on a full disk) is an error, exit 2, and no file is left: neither
+// the output that failed nor the ones already complete.
+TEST(CliWriteFailure, FragmentTraceTooLargeLeavesNothing) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"render", "-o", "c.png", "--fragments", "f.csv", "--stats", "s.json"}, 200000);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "f.csv")) << r.err;
+  EXPECT_TRUE(dir.listing().empty());
+}
+
+TEST(CliWriteFailure, ImageTooLargeLeavesNothing) {
+  ScratchDir dir;
+  // The fan image as TIFF is about 100 kB; the stats JSON (under 1 kB) fits. OpenImageIO's own file
+  // writers would report success on the cut-short file.
+  const RunResult r = run_rastersim(
+      dir, {"render", "--scene", "fan", "--width", "640", "--height", "480", "--stats", "s.json", "-o", "c.tif"}, 20000);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "c.tif")) << r.err;
+  EXPECT_TRUE(dir.listing().empty());
+}
+
 TEST(CliBadUsage, UnknownOrMissingSubcommand) {
   ScratchDir dir;
   const RunResult unknown = run_rastersim(dir, {"paint", "x.tri"});
