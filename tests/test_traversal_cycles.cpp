@@ -1,0 +1,359 @@
+// The two traversals and the cycle model (docs/cycle-model.md).
+// - bbox and span emit identical fragment traces (tri, x, y, z, colour, pass) and final buffers.
+// - Their cycles follow the written rules, with every expected number computed here from the
+//   reference coverage (bounding-box rows and area, covered pixels) and the documented constants:
+//   walker = load + bbox pixels (bbox) or load + rows + span pixels (span), each fragment's cycle,
+//   the setup/walker hand-off chain, z-buffer busy intervals, frame cycles.
+// - The z-buffer read-after-write hazard: a fragment to an address accepted in cycle c waits until
+//   c + L + 1; fragments to other addresses never stall.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <tuple>
+
+#include "model/pipeline.h"
+#include "reference.h"
+#include "test_util.h"
+
+namespace rastersim {
+namespace {
+
+using test::describe;
+using test::FragmentLog;
+using test::TriangleGen;
+
+SnappedTriangle random_scene_triangle(TriangleGen& g, int n) {
+  switch (n % 6) {
+    case 0: return g.guard_band();
+    case 1: return g.tiny();
+    case 2: return g.sliver(40);
+    case 3: return g.on_centres(5);
+    case 4: return g.degenerate();
+    default: return g.near_screen(20);
+  }
+}
+
+class TraversalEquivalence : public ::testing::TestWithParam<Shading> {};
+
+TEST_P(TraversalEquivalence, SameFragmentsAndBuffersDifferentCycles) {
+  for (uint64_t seed = 1; seed <= 6; ++seed) {
+    Profile p = test::make_profile(96, 72, 4, Traversal::BBox, 24);
+    p.shading = GetParam();
+    p.depth_func = seed % 2 ? DepthFunc::Less : DepthFunc::GEqual;
+    p.depth_clear = seed % 2 ? -1 : 0;
+    p.memory_latency = int(1 + seed * 3);
+    SCOPED_TRACE(::testing::Message() << describe(p) << " seed " << seed);
+    TriangleGen gen(p, seed);
+    std::vector<SnappedTriangle> scene;
+    for (int n = 0; n < 150; ++n) scene.push_back(random_scene_triangle(gen, n));
+    // Some triangles at one constant depth, so that equal depths meet the depth test too.
+    for (int n = 0; n < 150; n += 7)
+      for (SnappedVertex& v : scene[size_t(n)].v) v.z = 1u << 20;
+
+    FragmentLog logs[2];
+    std::vector<TriangleRecord> records[2];
+    std::vector<uint32_t> depth[2], color[2];
+    FrameStats stats[2];
+    for (int k = 0; k < 2; ++k) {
+      Profile q = p;
+      q.traversal = k == 0 ? Traversal::BBox : Traversal::Span;
+      Pipeline pipe(q);
+      pipe.set_fragment_sink(&logs[k]);
+      pipe.set_triangle_log(&records[k]);
+      for (const SnappedTriangle& t : scene) pipe.submit(t);
+      depth[k] = pipe.zbuffer().depth();
+      color[k] = pipe.zbuffer().color();
+      stats[k] = pipe.stats();
+    }
+    ASSERT_EQ(logs[0].fragments.size(), logs[1].fragments.size());
+    ASSERT_GT(logs[0].fragments.size(), 1000u);
+    for (size_t i = 0; i < logs[0].fragments.size(); ++i) {
+      const Fragment& a = logs[0].fragments[i];
+      const Fragment& b = logs[1].fragments[i];
+      ASSERT_TRUE(a.tri == b.tri && a.x == b.x && a.y == b.y && a.z == b.z && a.color == b.color && a.pass == b.pass)
+          << "fragment " << i << ": bbox (tri " << a.tri << ", " << a.x << ", " << a.y << ", z " << a.z << ", pass "
+          << a.pass << ") span (tri " << b.tri << ", " << b.x << ", " << b.y << ", z " << b.z << ", pass " << b.pass << ")";
+    }
+    EXPECT_TRUE(depth[0] == depth[1]) << "final depth buffers differ";
+    EXPECT_TRUE(color[0] == color[1]) << "final colour buffers differ";
+    EXPECT_EQ(stats[0].fragments, stats[1].fragments);
+    EXPECT_EQ(stats[0].depth_pass, stats[1].depth_pass);
+    EXPECT_EQ(stats[0].depth_fail, stats[1].depth_fail);
+    EXPECT_GT(stats[0].depth_pass, 0);
+    EXPECT_GT(stats[0].depth_fail, 0);
+    for (size_t n = 0; n < scene.size(); ++n) {
+      EXPECT_EQ(records[0][n].status, records[1][n].status) << "triangle " << n;
+      EXPECT_EQ(records[0][n].fragments, records[1][n].fragments) << "triangle " << n;
+      EXPECT_EQ(records[0][n].depth_pass, records[1][n].depth_pass) << "triangle " << n;
+    }
+    // The traversals cost different cycles: bbox visits every candidate, span only covered pixels.
+    EXPECT_NE(stats[0].cycles, stats[1].cycles);
+    EXPECT_GT(stats[0].candidates, stats[1].candidates);
+    EXPECT_EQ(stats[1].candidates, stats[1].fragments);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Shadings, TraversalEquivalence, ::testing::Values(Shading::Gouraud, Shading::Flat),
+                         [](const auto& info) { return std::string(to_string(info.param)); });
+
+// The walker's cost of one triangle without stalls, from the reference coverage.
+int64_t expected_walker_cycles(const SnappedTriangle& t, const Profile& p, const Widths& w) {
+  const reference::PixelRect box = reference::bounding_box(t, p);
+  if (p.traversal == Traversal::BBox) return w.walker_load_cycles + box.area();
+  return w.walker_load_cycles + box.rows() * w.span_row_cycles + int64_t(reference::covered_pixels(t, p).size());
+}
+
+// Each covered pixel's acceptance cycle when nothing stalls: bbox, one cycle per candidate from the
+// box's first pixel; span, one row cycle per row then one cycle per covered pixel.
+std::vector<int64_t> expected_fragment_cycles(const SnappedTriangle& t, const Profile& p, const Widths& w,
+                                              int64_t walker_load) {
+  const reference::PixelRect box = reference::bounding_box(t, p);
+  const std::vector<reference::Pixel> covered = reference::covered_pixels(t, p);
+  std::vector<int64_t> cycles;
+  const int64_t first = walker_load + w.walker_load_cycles;
+  if (p.traversal == Traversal::BBox) {
+    for (const reference::Pixel& px : covered)
+      cycles.push_back(first + int64_t(px.y - box.y0) * (box.x1 - box.x0 + 1) + (px.x - box.x0));
+    return cycles;
+  }
+  int64_t cycle = first;
+  size_t next = 0;
+  for (int row = box.y0; row <= box.y1; ++row) {
+    cycle += w.span_row_cycles;
+    for (; next < covered.size() && covered[next].y == row; ++next) cycles.push_back(cycle++);
+  }
+  return cycles;
+}
+
+// Cycles in the union of the intervals [c, c + L].
+int64_t busy_union(std::vector<int64_t> accepted, int latency) {
+  std::sort(accepted.begin(), accepted.end());
+  int64_t total = 0, covered_until = std::numeric_limits<int64_t>::min();
+  for (int64_t c : accepted) {
+    const int64_t begin = std::max(c, covered_until + 1), end = c + latency;
+    if (end >= begin) total += end - begin + 1;
+    covered_until = std::max(covered_until, end);
+  }
+  return total;
+}
+
+class CycleModel : public ::testing::TestWithParam<Traversal> {};
+
+TEST_P(CycleModel, OneTriangleCostsWhatTheRulesSay) {
+  Profile p = test::make_profile(80, 60, 4, GetParam(), 20);
+  const uint64_t seed = 99 + uint64_t(GetParam());
+  SCOPED_TRACE(::testing::Message() << describe(p) << " seed " << seed);
+  TriangleGen gen(p, seed);
+  int drawn = 0;
+  for (int n = 0; n < 600; ++n) {
+    p.memory_latency = int(gen.uniform(1, 20));
+    const SnappedTriangle t = random_scene_triangle(gen, n);
+    Pipeline pipe(p);
+    const Widths& w = pipe.widths();
+    FragmentLog log;
+    std::vector<TriangleRecord> records;
+    pipe.set_fragment_sink(&log);
+    pipe.set_triangle_log(&records);
+    pipe.submit(t);
+    const FrameStats& stats = pipe.stats();
+    ASSERT_EQ(records.size(), 1u);
+    const TriangleRecord& r = records[0];
+    SCOPED_TRACE(::testing::Message() << "n=" << n << " L=" << p.memory_latency << " " << describe(t));
+    ASSERT_EQ(r.setup_accept, 0);
+    if (reference::twice_area(t) == 0 || reference::bounding_box(t, p).empty()) {
+      // Rejected in the front stage: two cycles, the walker never sees it.
+      EXPECT_EQ(r.setup_done, 1);
+      EXPECT_EQ(r.walker_load, -1);
+      EXPECT_EQ(stats.setup.busy, 2);
+      EXPECT_EQ(stats.walker.busy, 0);
+      EXPECT_EQ(stats.cycles, 2);
+      continue;
+    }
+    ++drawn;
+    ASSERT_EQ(r.status, SetupStatus::Drawn);
+    const int64_t setup_cycles = 2 + w.divider_bits + 1;  // front stage, divider, output register
+    EXPECT_EQ(r.setup_done, setup_cycles - 1);
+    EXPECT_EQ(r.walker_load, r.setup_done);
+    const int64_t walker = expected_walker_cycles(t, p, w);
+    EXPECT_EQ(r.walker_end - r.walker_load + 1, walker);
+    EXPECT_EQ(stats.walker.busy, walker);
+    EXPECT_EQ(stats.walker.stall, 0);
+    EXPECT_EQ(stats.z_adder.busy, walker);
+    EXPECT_EQ(stats.zbuffer.stall, 0);
+    EXPECT_EQ(stats.setup.busy, setup_cycles);
+    EXPECT_EQ(stats.setup.stall, 0);
+    const reference::PixelRect box = reference::bounding_box(t, p);
+    const std::vector<int64_t> cycles = expected_fragment_cycles(t, p, w, r.walker_load);
+    EXPECT_EQ(stats.candidates, p.traversal == Traversal::BBox ? box.area() : int64_t(cycles.size()));
+    ASSERT_EQ(log.fragments.size(), cycles.size());
+    for (size_t i = 0; i < cycles.size(); ++i)
+      ASSERT_EQ(log.fragments[i].cycle, cycles[i]) << "fragment " << i << " at (" << log.fragments[i].x << ", "
+                                                   << log.fragments[i].y << ")";
+    EXPECT_EQ(r.fragments, int64_t(cycles.size()));
+    EXPECT_EQ(stats.zbuffer.busy, busy_union(cycles, p.memory_latency));
+    const int64_t last_write = cycles.empty() ? -1 : cycles.back() + p.memory_latency;
+    EXPECT_EQ(r.last_write, last_write);
+    EXPECT_EQ(stats.cycles, std::max(r.walker_end, last_write) + 1);
+  }
+  EXPECT_GT(drawn, 250);
+}
+
+// Many triangles with L = 1, where no hazard can occur (consecutive triangles' fragments are at
+// least two cycles apart): every record follows the documented hand-off chain.
+TEST_P(CycleModel, HandOffChainOverAScene) {
+  Profile p = test::make_profile(80, 60, 4, GetParam(), 24);
+  p.memory_latency = 1;
+  const uint64_t seed = 7 + uint64_t(GetParam());
+  SCOPED_TRACE(::testing::Message() << describe(p) << " seed " << seed);
+  TriangleGen gen(p, seed);
+  Pipeline pipe(p);
+  const Widths& w = pipe.widths();
+  std::vector<TriangleRecord> records;
+  pipe.set_triangle_log(&records);
+  std::vector<SnappedTriangle> scene;
+  for (int n = 0; n < 300; ++n) scene.push_back(random_scene_triangle(gen, n));
+  for (const SnappedTriangle& t : scene) pipe.submit(t);
+  const FrameStats& stats = pipe.stats();
+  ASSERT_EQ(records.size(), scene.size());
+  const int64_t setup_cycles = 2 + w.divider_bits + 1;
+  int64_t accept = 0, walker_end_prev = -1, last_busy = -1, setup_busy = 0, setup_stall = 0, walker_busy = 0;
+  for (size_t n = 0; n < scene.size(); ++n) {
+    const TriangleRecord& r = records[n];
+    const SnappedTriangle& t = scene[n];
+    SCOPED_TRACE(::testing::Message() << "triangle " << n << " " << describe(t));
+    ASSERT_EQ(r.index, int64_t(n));
+    ASSERT_EQ(r.setup_accept, accept);
+    const bool drawn = reference::twice_area(t) != 0 && !reference::bounding_box(t, p).empty();
+    ASSERT_EQ(r.status == SetupStatus::Drawn, drawn);
+    if (!drawn) {
+      ASSERT_EQ(r.setup_done, accept + 1);
+      setup_busy += 2;
+      last_busy = std::max(last_busy, accept + 1);
+      accept += 2;
+      continue;
+    }
+    ASSERT_EQ(r.setup_done, accept + setup_cycles - 1);
+    const int64_t load = std::max(r.setup_done, walker_end_prev + 1);
+    ASSERT_EQ(r.walker_load, load);
+    const int64_t walker = expected_walker_cycles(t, p, w);
+    ASSERT_EQ(r.walker_end, load + walker - 1);
+    setup_busy += setup_cycles;
+    setup_stall += load - r.setup_done;
+    walker_busy += walker;
+    walker_end_prev = r.walker_end;
+    last_busy = std::max({last_busy, r.walker_end, r.last_write});
+    accept = load + 1;
+  }
+  EXPECT_EQ(stats.setup.busy, setup_busy);
+  EXPECT_EQ(stats.setup.stall, setup_stall);
+  EXPECT_GT(setup_stall, 0);
+  EXPECT_EQ(stats.walker.busy, walker_busy);
+  EXPECT_EQ(stats.walker.stall, 0);
+  EXPECT_EQ(stats.zbuffer.stall, 0);
+  EXPECT_EQ(stats.cycles, last_busy + 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(Traversals, CycleModel, ::testing::Values(Traversal::BBox, Traversal::Span),
+                         [](const auto& info) { return std::string(to_string(info.param)); });
+
+// A triangle inside pixel (i, j)'s square around its centre: its bounding box is that one pixel.
+SnappedTriangle inside_pixel(int i, int j, int S) {
+  const int32_t M = 1 << S, cx = i * M + M / 2, cy = j * M + M / 2, d = M / 4;
+  SnappedTriangle t;
+  t.v[0].x = cx - d, t.v[0].y = cy - d;
+  t.v[1].x = cx + d, t.v[1].y = cy - d / 2;
+  t.v[2].x = cx - d / 2, t.v[2].y = cy + d;
+  for (SnappedVertex& v : t.v) v.z = 100;
+  return t;
+}
+
+// A triangle pointing right whose bounding box is exactly pixels (i, j) and (i + 1, j), both covered.
+SnappedTriangle two_pixels(int i, int j, int S) {
+  const int32_t M = 1 << S, x = i * M, cy = j * M + M / 2;
+  SnappedTriangle t;
+  t.v[0].x = x + M / 4, t.v[0].y = cy - 5 * M / 16;
+  t.v[1].x = x + 2 * M - M / 8, t.v[1].y = cy;
+  t.v[2].x = x + M / 4, t.v[2].y = cy + 5 * M / 16;
+  for (SnappedVertex& v : t.v) v.z = 100;
+  return t;
+}
+
+class ZBufferHazard : public ::testing::TestWithParam<Traversal> {};
+
+TEST_P(ZBufferHazard, SameAddressWaitsLPlusOneOthersNever) {
+  Profile p = test::make_profile(16, 16, 4, GetParam(), 16);
+  const int S = p.subpixel_bits;
+  const Widths w = derive_widths(p);
+  const int64_t setup_cycles = 2 + w.divider_bits + 1;
+  // Back-to-back triangles meet in the z-buffer only when the setup is faster than the memory.
+  ASSERT_LT(setup_cycles, 60) << "the profile must let a hazard happen";
+  struct Case {
+    const char* name;
+    SnappedTriangle first, second;
+    bool overlap;
+  };
+  const Case cases[] = {
+      {"same pixel", inside_pixel(5, 5, S), inside_pixel(5, 5, S), true},
+      {"right neighbour", inside_pixel(5, 5, S), inside_pixel(6, 5, S), false},
+      {"pixel below", inside_pixel(5, 5, S), inside_pixel(5, 6, S), false},
+      {"second fragment collides", inside_pixel(7, 5, S), two_pixels(6, 5, S), true},
+      {"first of two collides with an earlier one", two_pixels(5, 5, S), inside_pixel(5, 5, S), true},
+      {"both collide", two_pixels(5, 5, S), two_pixels(5, 5, S), true},
+      {"disjoint pairs", two_pixels(5, 5, S), two_pixels(7, 5, S), false},
+  };
+  for (const Case& c : cases) {
+    const std::vector<reference::Pixel> first_pixels = reference::covered_pixels(c.first, p);
+    const std::vector<reference::Pixel> second_pixels = reference::covered_pixels(c.second, p);
+    ASSERT_EQ(int64_t(first_pixels.size()), reference::bounding_box(c.first, p).area()) << c.name;
+    ASSERT_EQ(int64_t(second_pixels.size()), reference::bounding_box(c.second, p).area()) << c.name;
+    int stalls_seen = 0;
+    for (int latency : {1, 2, 3, 8, 16, 32, int(setup_cycles) - 2, int(setup_cycles), int(setup_cycles) + 1, 63, 64}) {
+      p.memory_latency = latency;
+      SCOPED_TRACE(::testing::Message() << describe(p) << " case " << c.name);
+      Pipeline pipe(p);
+      FragmentLog log;
+      std::vector<TriangleRecord> records;
+      pipe.set_fragment_sink(&log);
+      pipe.set_triangle_log(&records);
+      pipe.submit(c.first);
+      pipe.submit(c.second);
+      ASSERT_EQ(log.fragments.size(), first_pixels.size() + second_pixels.size());
+      // The second triangle's fragments are consecutive candidates on one row, presented right
+      // after the load (and, for span, the row cycle); each one waits for any earlier fragment to
+      // its address accepted L or fewer cycles before.
+      int64_t presented = records[1].walker_load + w.walker_load_cycles +
+                          (p.traversal == Traversal::Span ? w.span_row_cycles : 0);
+      int64_t stall = 0, accepted = 0;
+      for (size_t k = 0; k < second_pixels.size(); ++k) {
+        accepted = presented;
+        for (size_t m = 0; m < first_pixels.size(); ++m)
+          if (first_pixels[m].x == second_pixels[k].x && first_pixels[m].y == second_pixels[k].y)
+            accepted = std::max(accepted, log.fragments[m].cycle + latency + 1);
+        const Fragment& f = log.fragments[first_pixels.size() + k];
+        EXPECT_EQ(f.cycle, accepted) << "fragment " << k << " of the second triangle";
+        stall += accepted - presented;
+        presented = accepted + 1;
+      }
+      const FrameStats& stats = pipe.stats();
+      EXPECT_EQ(stats.zbuffer.stall, stall);
+      EXPECT_EQ(stats.walker.stall, stall);
+      EXPECT_EQ(records[1].walker_end, accepted);
+      EXPECT_EQ(records[1].last_write, accepted + latency);
+      EXPECT_EQ(stats.cycles, accepted + latency + 1);
+      stalls_seen += stall > 0;
+    }
+    if (c.overlap) {
+      EXPECT_GE(stalls_seen, 3) << c.name << ": the latencies above must include stalling ones";
+    } else {
+      EXPECT_EQ(stalls_seen, 0) << c.name;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Traversals, ZBufferHazard, ::testing::Values(Traversal::BBox, Traversal::Span),
+                         [](const auto& info) { return std::string(to_string(info.param)); });
+
+}  // namespace
+}  // namespace rastersim
