@@ -1,0 +1,51 @@
+// One plane register of the Z adder (model/z_adder.h PlaneRegister): a wrapping two's-complement
+// value of REG_BITS with GUARD_BITS fraction bits, a row register keeping the row start, and the
+// per-pixel steps. Additions only, except the span walker's once-per-row offset multiply.
+module plane_register #(
+  parameter integer REG_BITS = 37,    // s(OUT_BITS+1).GUARD_BITS
+  parameter integer GUARD_BITS = 12,  // F
+  parameter integer OUT_BITS = 24,    // output u(OUT_BITS), clamped to [0, 2^OUT_BITS - 1]
+  parameter integer OFFSET_BITS = 10  // span row offset t, u
+) (
+  input  wire clk,
+  input  wire load,       // value = row = start; take the steps
+  input  wire step_x,     // value += step_x
+  input  wire next_row,   // row += step_y; value = row (bbox row wrap)
+  input  wire row_enter,  // value = row + offset * step_x; row += step_y (span row cycle)
+  input  wire [OFFSET_BITS-1:0] offset,
+  input  wire [REG_BITS-1:0] start,
+  input  wire [REG_BITS-1:0] step_x_in,
+  input  wire [REG_BITS-1:0] step_y_in,
+  output wire [OUT_BITS-1:0] out        // clamp((value + 2^(F-1)) >>> F, 0, 2^OUT_BITS - 1)
+);
+  reg [REG_BITS-1:0] value, row, step_x_q, step_y_q;
+
+  // Products and sums are taken modulo 2^REG_BITS: the register wraps by design.
+  wire [REG_BITS-1:0] next_row_value = row + step_y_q;
+  wire [REG_BITS+OFFSET_BITS-1:0] offset_product = {{OFFSET_BITS{1'b0}}, step_x_q} * {{REG_BITS{1'b0}}, offset};
+
+  always @(posedge clk) begin
+    if (load) begin
+      value <= start;
+      row <= start;
+      step_x_q <= step_x_in;
+      step_y_q <= step_y_in;
+    end else if (row_enter) begin
+      value <= row + offset_product[REG_BITS-1:0];
+      row <= next_row_value;
+    end else if (next_row) begin
+      value <= next_row_value;
+      row <= next_row_value;
+    end else if (step_x) begin
+      value <= value + step_x_q;
+    end
+  end
+
+  localparam integer ROUNDED_BITS = REG_BITS - GUARD_BITS;
+  wire [REG_BITS-1:0] biased = value + {{(REG_BITS-GUARD_BITS){1'b0}}, 1'b1, {(GUARD_BITS-1){1'b0}}};
+  wire signed [ROUNDED_BITS-1:0] rounded = biased[REG_BITS-1:GUARD_BITS];
+  wire [ROUNDED_BITS-1:0] out_max = {{(ROUNDED_BITS-OUT_BITS){1'b0}}, {OUT_BITS{1'b1}}};
+  assign out = rounded[ROUNDED_BITS-1] ? {OUT_BITS{1'b0}}
+             : rounded > $signed(out_max) ? {OUT_BITS{1'b1}}
+             : rounded[OUT_BITS-1:0];
+endmodule

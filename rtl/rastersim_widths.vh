@@ -1,0 +1,128 @@
+// Register widths of the pipeline as constant functions of the profile parameters: the same
+// formulas as model/widths.h (derive_widths), written independently. Included inside the body of
+// every module that needs them (functions cannot be shared through a package in yosys 0.23).
+// Arithmetic is done on 128-bit values: the largest bound (the depth dividend) needs 102 bits.
+// The top module republishes the results as /*verilator public*/ localparams so that the C++ build
+// static_asserts them against rastersim::derive_widths (testbench/rtl_widths_check.cpp).
+
+// Smallest unsigned width b >= 1 with v < 2^b.
+function automatic integer rs_ubits(input [127:0] v);
+  integer i;
+  begin
+    rs_ubits = 1;
+    for (i = 1; i < 127; i = i + 1)
+      if ((v >> i) != 128'd0) rs_ubits = i + 1;
+  end
+endfunction
+
+// rs_ubits for a 32-bit argument v >= 0 (counters, addresses).
+function automatic integer rs_ubits32(input integer v);
+  reg [127:0] wide;
+  begin
+    wide = 128'd0;
+    wide[31:0] = v;
+    rs_ubits32 = rs_ubits(wide);
+  end
+endfunction
+
+// Smallest two's-complement width b holding -v .. v for v >= 0: v < 2^(b-1).
+function automatic integer rs_sbits(input [127:0] v);
+  begin
+    rs_sbits = rs_ubits(v) + 1;
+  end
+endfunction
+
+// Smallest b with 2^b >= v, v >= 1.
+function automatic integer rs_ceil_log2(input [127:0] v);
+  integer i;
+  begin
+    rs_ceil_log2 = 0;
+    for (i = 126; i >= 0; i = i - 1)
+      if ((128'd1 << i) >= v) rs_ceil_log2 = i;
+  end
+endfunction
+
+// F: fraction (guard) bits of the plane registers; 2^F >= 2 (W + H - 1) unless the profile sets it.
+function automatic integer rs_guard_bits(input integer w, input integer h, input integer z_guard_bits);
+  integer f;
+  reg [127:0] wide;
+  begin
+    wide = 128'd0;
+    wide[31:0] = w + h - 1;
+    f = rs_ceil_log2(wide << 1);
+    if (z_guard_bits > 0) rs_guard_bits = z_guard_bits;
+    else rs_guard_bits = f < 1 ? 1 : f;
+  end
+endfunction
+
+// W * H * M^2 with M = 2^S.
+function automatic [127:0] rs_area_unit(input integer w, input integer h, input integer s);
+  reg [127:0] acc;
+  begin
+    acc = w;
+    acc = acc * h;
+    rs_area_unit = acc << (2 * s);
+  end
+endfunction
+
+function automatic integer rs_coord_bits(input integer w, input integer h, input integer s);
+  reg [127:0] big;
+  begin
+    big = w > h ? w : h;
+    rs_coord_bits = rs_sbits((128'd2 * big) << s);
+  end
+endfunction
+
+function automatic integer rs_delta_bits(input integer w, input integer h, input integer s);
+  reg [127:0] big;
+  begin
+    big = w > h ? w : h;
+    rs_delta_bits = rs_sbits((128'd3 * big) << s);
+  end
+endfunction
+
+function automatic integer rs_area_bits(input integer w, input integer h, input integer s);
+  begin
+    rs_area_bits = rs_sbits(128'd9 * rs_area_unit(w, h, s));
+  end
+endfunction
+
+function automatic integer rs_edge_bits(input integer w, input integer h, input integer s);
+  begin
+    rs_edge_bits = rs_sbits(128'd12 * rs_area_unit(w, h, s) + 128'd1);
+  end
+endfunction
+
+function automatic integer rs_edge_step_x_bits(input integer h, input integer s);
+  reg [127:0] v;
+  begin
+    v = h;
+    rs_edge_step_x_bits = rs_sbits((128'd3 * v) << (2 * s));
+  end
+endfunction
+
+function automatic integer rs_edge_step_y_bits(input integer w, input integer s);
+  reg [127:0] v;
+  begin
+    v = w;
+    rs_edge_step_y_bits = rs_sbits((128'd3 * v) << (2 * s));
+  end
+endfunction
+
+function automatic integer rs_span_rem_bits(input integer h, input integer s);
+  reg [127:0] v;
+  begin
+    v = h;
+    rs_span_rem_bits = rs_ubits((128'd3 * v) << (2 * s));
+  end
+endfunction
+
+// Widest dividend magnitude, 36 Zmax W H M^2 2^F: also the divider's cycle count.
+function automatic integer rs_divider_bits(input integer w, input integer h, input integer s,
+                                           input integer z_bits, input integer z_guard_bits);
+  reg [127:0] z_max;
+  begin
+    z_max = (128'd1 << z_bits) - 128'd1;
+    rs_divider_bits = rs_ubits(((128'd36 * z_max) * rs_area_unit(w, h, s)) << rs_guard_bits(w, h, z_guard_bits));
+  end
+endfunction

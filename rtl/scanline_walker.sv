@@ -1,0 +1,191 @@
+// Counter-driven scanline walker (model/scanline_walker.h): x and y counters step over the
+// triangle's bounding box, edge functions are updated by additions only, one candidate per clock.
+// cfg_traversal selects the traversal at run time (both emit the same fragments in the same order):
+//  0 bbox: every bounding-box pixel, row-major; the counters wrap to the next row in the same cycle.
+//  1 span: per row one ROW cycle takes the span bounds from the DDA registers (quotient and
+//    remainder of each edge by |step_x|, additions only) and moves the plane registers to the span
+//    start; then one PIXEL cycle per covered pixel.
+// A covered candidate is presented on frag_*; the walker holds it until frag_ready.
+// Cycles: the record is taken in cycle walker_load (in_valid & in_ready, the LOAD cycle), the first
+// candidate (or row) follows in walker_load + 1, `last` marks walker_end; IDLE (ready) after it.
+module scanline_walker #(
+  parameter integer WIDTH = 640,
+  parameter integer HEIGHT = 480,
+  parameter integer SUBPIXEL_BITS = 4
+) (
+  input  wire clk,
+  input  wire rst,
+  input  wire cfg_traversal,  // 0 bbox, 1 span
+  // Setup record (triangle_setup out_*), edge k at [k*B +: B].
+  input  wire in_valid,
+  output wire in_ready,
+  input  wire [rs_ubits32(WIDTH - 1)-1:0]  in_x0,
+  input  wire [rs_ubits32(WIDTH - 1)-1:0]  in_x1,
+  input  wire [rs_ubits32(HEIGHT - 1)-1:0] in_y0,
+  input  wire [rs_ubits32(HEIGHT - 1)-1:0] in_y1,
+  input  wire [3*rs_edge_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] in_edge_start,   // s.2S
+  input  wire [3*rs_edge_step_x_bits(HEIGHT, SUBPIXEL_BITS)-1:0] in_edge_step_x, // s.2S
+  input  wire [3*rs_edge_step_y_bits(WIDTH, SUBPIXEL_BITS)-1:0]  in_edge_step_y, // s.2S
+  input  wire [3*rs_edge_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] in_span_quot,
+  input  wire [3*rs_span_rem_bits(HEIGHT, SUBPIXEL_BITS)-1:0]    in_span_rem,
+  input  wire [3*rs_edge_step_y_bits(WIDTH, SUBPIXEL_BITS)-1:0]  in_span_step_quot,
+  input  wire [3*rs_span_rem_bits(HEIGHT, SUBPIXEL_BITS)-1:0]    in_span_step_rem,
+  // Plane register control (z_adder), in lockstep with the counters.
+  output wire adder_load,       // take the setup planes (LOAD cycle)
+  output wire adder_step_x,     // next pixel of the row
+  output wire adder_next_row,   // bbox: wrap to the next row
+  output wire adder_row_enter,  // span ROW cycle: value = row + offset * step_x; row += step_y
+  output wire [rs_ubits32(WIDTH - 1)-1:0] adder_row_offset,
+  // Fragment to the z-buffer.
+  output wire frag_valid,
+  input  wire frag_ready,
+  output reg  [rs_ubits32(WIDTH - 1)-1:0]  frag_x,
+  output reg  [rs_ubits32(HEIGHT - 1)-1:0] frag_y,
+  // Activity, for the cycle counters: busy = LOAD, ROW or candidate cycle; candidate = a PIXEL
+  // cycle that moves on (not a stall); last = walker_end.
+  output wire busy,
+  output wire candidate,
+  output wire last
+);
+`include "rastersim_widths.vh"
+
+  localparam integer S = SUBPIXEL_BITS;
+  localparam integer EB = rs_edge_bits(WIDTH, HEIGHT, S);
+  localparam integer SXB = rs_edge_step_x_bits(HEIGHT, S);
+  localparam integer SYB = rs_edge_step_y_bits(WIDTH, S);
+  localparam integer RB = rs_span_rem_bits(HEIGHT, S);
+  localparam integer XB = rs_ubits32(WIDTH - 1);
+  localparam integer YB = rs_ubits32(HEIGHT - 1);
+  localparam integer QB = EB + 2;  // span bounds: -quot and quot compared at full width
+
+  localparam [1:0] IDLE = 2'd0, ROW = 2'd1, PIXEL = 2'd2;
+  reg [1:0] state;
+
+  reg [XB-1:0] x0, x1, x_end;
+  reg [YB-1:0] y1;
+  reg signed [EB-1:0]  edge_row [0:2];    // edge value at (x0, y): bbox row start, span row value
+  reg signed [EB-1:0]  edge_value [0:2];  // bbox: edge value at (x, y)
+  reg signed [SXB-1:0] step_x [0:2];
+  reg signed [SYB-1:0] step_y [0:2];
+  reg signed [EB-1:0]  quot [0:2];        // span DDA: floor(edge_row / d), d = |step_x|
+  reg [RB-1:0]         rem [0:2];         // edge_row - quot * d, in [0, d)
+  reg signed [SYB-1:0] step_quot [0:2];
+  reg [RB-1:0]         step_rem [0:2];
+  reg [RB-1:0]         divisor [0:2];
+
+  wire load = in_valid && in_ready;
+  assign in_ready = state == IDLE;
+
+  // ---- bbox candidate ----
+  wire covered = !edge_value[0][EB-1] && !edge_value[1][EB-1] && !edge_value[2][EB-1];
+  wire bbox_pixel = state == PIXEL && !cfg_traversal;
+  wire span_pixel = state == PIXEL && cfg_traversal;
+  assign frag_valid = span_pixel || (bbox_pixel && covered);
+  wire advance = state == PIXEL && (frag_ready || !frag_valid);
+  wire row_done = state == PIXEL && (cfg_traversal ? frag_x == x_end : frag_x == x1);
+  wire last_row = frag_y == y1;
+
+  // ---- span bounds of the current row: offsets t from x0 with every edge >= 0 ----
+  wire signed [QB-1:0] last_offset = $signed({2'b00, x1 - x0});
+  reg signed [QB-1:0] span_lo, span_hi;
+  integer k;
+  always @(*) begin
+    span_lo = {QB{1'b0}};
+    span_hi = last_offset;
+    for (k = 0; k < 3; k = k + 1) begin
+      if (step_x[k] > 0) begin
+        // t >= ceil(-E / d) = -floor(E / d)
+        if (-$signed({{2{quot[k][EB-1]}}, quot[k]}) > span_lo) span_lo = -$signed({{2{quot[k][EB-1]}}, quot[k]});
+      end else if (step_x[k] < 0) begin
+        // t <= floor(E / d)
+        if ($signed({{2{quot[k][EB-1]}}, quot[k]}) < span_hi) span_hi = $signed({{2{quot[k][EB-1]}}, quot[k]});
+      end else if (edge_row[k] < 0) begin
+        span_hi = -1;  // horizontal edge with the row outside
+      end
+    end
+  end
+  wire span_row = state == ROW;
+  wire span_nonempty = span_lo <= span_hi;
+
+  assign adder_load = load;
+  assign adder_step_x = advance && !row_done;
+  assign adder_next_row = advance && row_done && !cfg_traversal;
+  assign adder_row_enter = span_row;
+  assign adder_row_offset = span_lo[XB-1:0];
+
+  assign busy = load || state == ROW || advance;
+  assign candidate = advance;
+  assign last = (advance && row_done && last_row) || (span_row && !span_nonempty && last_row);
+
+  integer i;
+  always @(posedge clk) begin
+    if (rst) begin
+      state <= IDLE;
+    end else begin
+      case (state)
+        IDLE: if (in_valid) state <= cfg_traversal ? ROW : PIXEL;
+        ROW: if (span_nonempty) state <= PIXEL;
+             else if (last_row) state <= IDLE;
+        default: if (advance && row_done) state <= !last_row ? (cfg_traversal ? ROW : PIXEL) : IDLE;
+      endcase
+    end
+  end
+
+  // Counters and edge registers (no reset: loaded in the LOAD cycle before use).
+  always @(posedge clk) begin
+    if (load) begin
+      x0 <= in_x0;
+      x1 <= in_x1;
+      y1 <= in_y1;
+      frag_x <= in_x0;
+      frag_y <= in_y0;
+      for (i = 0; i < 3; i = i + 1) begin
+        edge_row[i] <= in_edge_start[i*EB +: EB];
+        edge_value[i] <= in_edge_start[i*EB +: EB];
+        step_x[i] <= in_edge_step_x[i*SXB +: SXB];
+        step_y[i] <= in_edge_step_y[i*SYB +: SYB];
+        quot[i] <= in_span_quot[i*EB +: EB];
+        rem[i] <= in_span_rem[i*RB +: RB];
+        step_quot[i] <= in_span_step_quot[i*SYB +: SYB];
+        step_rem[i] <= in_span_step_rem[i*RB +: RB];
+        divisor[i] <= in_edge_step_x[i*SXB + SXB - 1] ? -in_edge_step_x[i*SXB +: RB] : in_edge_step_x[i*SXB +: RB];
+      end
+    end
+    if (advance) begin
+      if (!row_done) begin
+        frag_x <= frag_x + 1'b1;
+        for (i = 0; i < 3; i = i + 1) edge_value[i] <= edge_value[i] + step_x[i];
+      end else if (!last_row) begin
+        frag_y <= frag_y + 1'b1;
+        if (!cfg_traversal) begin
+          frag_x <= x0;
+          for (i = 0; i < 3; i = i + 1) begin
+            edge_row[i] <= edge_row[i] + step_y[i];
+            edge_value[i] <= edge_row[i] + step_y[i];
+          end
+        end
+      end
+    end
+    if (span_row) begin
+      // Span of this row, then the DDA steps every edge to the next row.
+      if (span_nonempty) begin
+        frag_x <= x0 + span_lo[XB-1:0];
+        x_end <= x0 + span_hi[XB-1:0];
+      end else if (!last_row) begin
+        frag_y <= frag_y + 1'b1;
+      end
+      for (i = 0; i < 3; i = i + 1) begin
+        edge_row[i] <= edge_row[i] + step_y[i];
+        if (step_x[i] != 0) begin
+          if ({1'b0, rem[i]} + {1'b0, step_rem[i]} >= {1'b0, divisor[i]}) begin
+            rem[i] <= rem[i] + step_rem[i] - divisor[i];
+            quot[i] <= quot[i] + step_quot[i] + 1;  // integer 1 keeps the sum signed
+          end else begin
+            rem[i] <= rem[i] + step_rem[i];
+            quot[i] <= quot[i] + step_quot[i];
+          end
+        end
+      end
+    end
+  end
+endmodule

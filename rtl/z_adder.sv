@@ -1,0 +1,55 @@
+// Z register adder (model/z_adder.h): the depth plane register and, for Gouraud shading, the
+// r, g, b plane registers, stepped in lockstep with the walker. No multiplication per pixel.
+// Depth registers are s(N+1).F, colour registers s9.F (F = guard bits), all wrapping.
+module z_adder #(
+  parameter integer WIDTH = 640,
+  parameter integer HEIGHT = 480,
+  parameter integer Z_BITS = 24,
+  parameter integer Z_GUARD_BITS = 0
+) (
+  input  wire clk,
+  input  wire cfg_shading,  // 0 flat (provoking vertex colour), 1 gouraud
+  input  wire load,
+  input  wire step_x,
+  input  wire next_row,
+  input  wire row_enter,
+  input  wire [rs_ubits32(WIDTH - 1)-1:0] row_offset,
+  input  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_start,
+  input  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_step_x,
+  input  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_step_y,
+  input  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] color_start,   // r, g, b at [c*B +: B]
+  input  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] color_step_x,
+  input  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] color_step_y,
+  input  wire [23:0] flat_rgb,
+  output wire [Z_BITS-1:0] depth,  // uN
+  output wire [23:0] rgb           // {r, g, b}, u8 each
+);
+`include "rastersim_widths.vh"
+
+  localparam integer F = rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS);
+  localparam integer ZRB = Z_BITS + F + 1;
+  localparam integer CRB = 9 + F;
+  localparam integer XB = rs_ubits32(WIDTH - 1);
+
+  reg [23:0] flat_q;
+  always @(posedge clk) if (load) flat_q <= flat_rgb;
+
+  plane_register #(.REG_BITS(ZRB), .GUARD_BITS(F), .OUT_BITS(Z_BITS), .OFFSET_BITS(XB)) depth_plane (
+    .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter),
+    .offset(row_offset), .start(depth_start), .step_x_in(depth_step_x), .step_y_in(depth_step_y),
+    .out(depth));
+
+  wire [23:0] gouraud_rgb;
+  genvar c;
+  generate
+    for (c = 0; c < 3; c = c + 1) begin : color_planes
+      // Channel c is r, g, b for c = 0, 1, 2; rgb holds r in [23:16].
+      plane_register #(.REG_BITS(CRB), .GUARD_BITS(F), .OUT_BITS(8), .OFFSET_BITS(XB)) plane (
+        .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter),
+        .offset(row_offset), .start(color_start[c*CRB +: CRB]), .step_x_in(color_step_x[c*CRB +: CRB]),
+        .step_y_in(color_step_y[c*CRB +: CRB]), .out(gouraud_rgb[8*(2-c) +: 8]));
+    end
+  endgenerate
+
+  assign rgb = cfg_shading ? gouraud_rgb : flat_q;
+endmodule

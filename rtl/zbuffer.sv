@@ -1,0 +1,149 @@
+// Z-buffer unit (model/zbuffer.h): read, compare, conditional write of depth and colour behind a
+// memory port of read latency L = cfg_memory_latency (1 .. MAX_MEMORY_LATENCY).
+// A fragment accepted in cycle c issues its depth read in c (on-chip memory, synchronous read,
+// then L-1 data delay registers); in c+L its data arrives, the depth test runs and the depth (if
+// cfg_depth_write) and colour (on pass) are written at the end of c+L.
+// Read-after-write hazard: a fragment is accepted in c only if no fragment to the same address
+// was accepted in c-L .. c-1 (frag_ready low meanwhile), so every read sees all earlier writes.
+// After reset the unit clears both memories, one word per cycle (depth cfg_depth_clear, colour 0),
+// then raises clear_done: the frame starts (cycle 0) in the first cycle with clear_done high.
+module zbuffer #(
+  parameter integer WIDTH = 640,
+  parameter integer HEIGHT = 480,
+  parameter integer Z_BITS = 24,
+  parameter integer MAX_MEMORY_LATENCY = 64
+) (
+  input  wire clk,
+  input  wire rst,
+  input  wire [2:0] cfg_depth_func,  // never, less, equal, lequal, greater, notequal, gequal, always
+  input  wire       cfg_depth_write,
+  input  wire [Z_BITS-1:0] cfg_depth_clear,
+  input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,
+  output reg  clear_done,
+  // Fragment from the walker (x, y) and the Z adder (z, rgb).
+  input  wire frag_valid,
+  output wire frag_ready,
+  input  wire [rs_ubits32(WIDTH - 1)-1:0]  frag_x,
+  input  wire [rs_ubits32(HEIGHT - 1)-1:0] frag_y,
+  input  wire [Z_BITS-1:0] frag_z,
+  input  wire [23:0]       frag_rgb,
+  // Depth test result of the fragment accepted L cycles ago (its write cycle).
+  output wire result_valid,
+  output wire result_pass,
+  output wire busy,  // a fragment accepted this cycle or in flight
+  // Read-back port for the final memories (synchronous: data in the next cycle).
+  input  wire [rs_ubits32(WIDTH * HEIGHT - 1)-1:0] readback_addr,
+  output reg  [Z_BITS-1:0] readback_depth,
+  output reg  [23:0]       readback_rgb
+);
+`include "rastersim_widths.vh"
+
+  localparam integer XB = rs_ubits32(WIDTH - 1);
+  localparam integer YB = rs_ubits32(HEIGHT - 1);
+  localparam integer AB = rs_ubits32(WIDTH * HEIGHT - 1);
+  localparam integer LB = rs_ubits32(MAX_MEMORY_LATENCY);
+  localparam integer WORDS = WIDTH * HEIGHT;
+  localparam [AB-1:0] LAST_ADDR = WORDS - 1;
+  localparam [AB-1:0] WIDTH_A = WIDTH;
+
+  reg [Z_BITS-1:0] depth_mem [0:WORDS-1];
+  reg [23:0]       color_mem [0:WORDS-1];
+
+  // In-flight fragments: stage k holds the fragment accepted k cycles ago (k = 1 .. MAX).
+  reg              stage_valid [1:MAX_MEMORY_LATENCY];
+  reg [AB-1:0]     stage_addr [1:MAX_MEMORY_LATENCY];
+  reg [Z_BITS-1:0] stage_z [1:MAX_MEMORY_LATENCY];
+  reg [23:0]       stage_rgb [1:MAX_MEMORY_LATENCY];
+  reg [Z_BITS-1:0] stage_data [1:MAX_MEMORY_LATENCY];  // the memory port's read data pipeline
+
+  reg [AB-1:0] clear_addr;
+
+  wire [AB-1:0] frag_addr = frag_y * WIDTH_A + {{(AB-XB){1'b0}}, frag_x};
+
+  reg hazard;
+  reg in_flight;
+  integer k;
+  always @(*) begin
+    hazard = 1'b0;
+    in_flight = 1'b0;
+    for (k = 1; k <= MAX_MEMORY_LATENCY; k = k + 1) begin
+      if (k <= cfg_memory_latency && stage_valid[k]) begin
+        in_flight = 1'b1;
+        if (stage_addr[k] == frag_addr) hazard = 1'b1;
+      end
+    end
+  end
+
+  assign frag_ready = clear_done && !hazard;
+  wire accept = frag_valid && frag_ready;
+  assign busy = accept || in_flight;
+
+  // The fragment in its data cycle c+L.
+  wire              done_valid = stage_valid[cfg_memory_latency];
+  wire [AB-1:0]     done_addr = stage_addr[cfg_memory_latency];
+  wire [Z_BITS-1:0] done_z = stage_z[cfg_memory_latency];
+  wire [23:0]       done_rgb = stage_rgb[cfg_memory_latency];
+  wire [Z_BITS-1:0] stored = stage_data[cfg_memory_latency];
+  reg pass;
+  always @(*) begin
+    case (cfg_depth_func)
+      3'd0: pass = 1'b0;
+      3'd1: pass = done_z < stored;
+      3'd2: pass = done_z == stored;
+      3'd3: pass = done_z <= stored;
+      3'd4: pass = done_z > stored;
+      3'd5: pass = done_z != stored;
+      3'd6: pass = done_z >= stored;
+      default: pass = 1'b1;
+    endcase
+  end
+  assign result_valid = done_valid;
+  assign result_pass = pass;
+
+  // Memories: one write port (clear sweep, then depth-test writes), the fragment read port and the
+  // read-back port.
+  always @(posedge clk) begin
+    if (!clear_done) begin
+      depth_mem[clear_addr] <= cfg_depth_clear;
+      color_mem[clear_addr] <= 24'd0;
+    end else if (done_valid && pass) begin
+      if (cfg_depth_write) depth_mem[done_addr] <= done_z;
+      color_mem[done_addr] <= done_rgb;
+    end
+  end
+  always @(posedge clk) begin
+    stage_data[1] <= depth_mem[frag_addr];
+    readback_depth <= depth_mem[readback_addr];
+    readback_rgb <= color_mem[readback_addr];
+  end
+
+  always @(posedge clk) begin
+    if (rst) begin
+      clear_done <= 1'b0;
+      clear_addr <= {AB{1'b0}};
+    end else if (!clear_done) begin
+      clear_addr <= clear_addr + 1'b1;
+      if (clear_addr == LAST_ADDR) clear_done <= 1'b1;
+    end
+  end
+
+  always @(posedge clk) begin
+    if (rst) begin
+      for (k = 1; k <= MAX_MEMORY_LATENCY; k = k + 1) stage_valid[k] <= 1'b0;
+    end else begin
+      stage_valid[1] <= accept;
+      for (k = 2; k <= MAX_MEMORY_LATENCY; k = k + 1) stage_valid[k] <= stage_valid[k-1];
+    end
+  end
+  always @(posedge clk) begin
+    stage_addr[1] <= frag_addr;
+    stage_z[1] <= frag_z;
+    stage_rgb[1] <= frag_rgb;
+    for (k = 2; k <= MAX_MEMORY_LATENCY; k = k + 1) begin
+      stage_addr[k] <= stage_addr[k-1];
+      stage_z[k] <= stage_z[k-1];
+      stage_rgb[k] <= stage_rgb[k-1];
+      stage_data[k] <= stage_data[k-1];
+    end
+  end
+endmodule

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# yosys 0.23: `synth` and `check -assert` (no latches, no combinational loops, no undriven or
+# multiply driven nets) for every RTL unit and the top, at a small profile (16 x 8, S = 2,
+# N = 16, memory latency up to 4) so that the memories and multipliers synthesize quickly.
+# Usage: rtl-yosys.sh [unit ...]
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+rtl="$root/rtl"
+units=("$@")
+[ ${#units[@]} -eq 0 ] && units=(divider plane_register triangle_setup scanline_walker z_adder zbuffer rastersim_top)
+declare -A values=([WIDTH]=16 [HEIGHT]=8 [SUBPIXEL_BITS]=2 [Z_BITS]=16 [MAX_MEMORY_LATENCY]=4)
+status=0
+for top in "${units[@]}"; do
+  chparam=""
+  for name in "${!values[@]}"; do
+    if grep -q "parameter integer $name\b" "$rtl/$top.sv"; then chparam+=" -set $name ${values[$name]}"; fi
+  done
+  script="read_verilog -sv -I$rtl $(ls "$rtl"/*.sv | tr '\n' ' ');"
+  [ -n "$chparam" ] && script+=" chparam$chparam $top;"
+  script+=" synth -top $top; check -assert; stat"
+  if ! out=$(yosys -q -p "$script" 2>&1); then
+    echo "yosys failed: $top"
+    echo "$out" | tail -30
+    status=1
+  else
+    echo "rtl-yosys: $top synthesizes, check -assert clean"
+  fi
+done
+exit $status

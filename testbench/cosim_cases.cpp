@@ -1,0 +1,181 @@
+#include "testbench/cosim_cases.h"
+
+#include <algorithm>
+#include <random>
+
+namespace rastersim::rtl {
+namespace {
+
+class Generator {
+ public:
+  Generator(const Profile& p, uint64_t seed)
+      : p_(p), rng_(seed), one_(int64_t(1) << p.subpixel_bits), z_max_(p.depth_max()) {}
+
+  int64_t uniform(int64_t lo, int64_t hi) { return std::uniform_int_distribution<int64_t>(lo, hi)(rng_); }
+  // Guard band in subpixels: x in [-W, 2W], y in [-H, 2H] pixels.
+  int64_t gx() { return uniform(-p_.width * one_, 2 * p_.width * one_); }
+  int64_t gy() { return uniform(-p_.height * one_, 2 * p_.height * one_); }
+  int64_t clamp_x(int64_t x) const { return std::clamp<int64_t>(x, -p_.width * one_, 2 * p_.width * one_); }
+  int64_t clamp_y(int64_t y) const { return std::clamp<int64_t>(y, -p_.height * one_, 2 * p_.height * one_); }
+  uint32_t z() { return uint32_t(uniform(0, z_max_)); }
+  Rgb color() { return Rgb{uint8_t(uniform(0, 255)), uint8_t(uniform(0, 255)), uint8_t(uniform(0, 255))}; }
+
+  SnappedTriangle triangle(const int64_t (&xy)[6]) {
+    SnappedTriangle t;
+    for (int k = 0; k < 3; ++k) {
+      t.v[k].x = int32_t(clamp_x(xy[2 * k]));
+      t.v[k].y = int32_t(clamp_y(xy[2 * k + 1]));
+      t.v[k].z = z();
+      t.v[k].color = color();
+    }
+    return t;
+  }
+
+  // Anywhere in the guard band: mostly huge triangles, many partly off screen.
+  SnappedTriangle huge() { return triangle({gx(), gy(), gx(), gy(), gx(), gy()}); }
+  // A few pixels around one pixel: back-to-back tiny triangles on the same pixel stress the hazards.
+  SnappedTriangle tiny_at(int px, int py) {
+    const int64_t cx = px * one_ + one_ / 2, cy = py * one_ + one_ / 2, r = 2 * one_;
+    return triangle({cx + uniform(-r, r), cy + uniform(-r, r), cx + uniform(-r, r), cy + uniform(-r, r),
+                     cx + uniform(-r, r), cy + uniform(-r, r)});
+  }
+  SnappedTriangle tiny() { return tiny_at(int(uniform(0, p_.width - 1)), int(uniform(0, p_.height - 1))); }
+  // Medium, on screen.
+  SnappedTriangle medium() {
+    const int64_t w = p_.width * one_, h = p_.height * one_;
+    return triangle({uniform(0, w), uniform(0, h), uniform(0, w), uniform(0, h), uniform(0, w), uniform(0, h)});
+  }
+  // Zero area: a repeated vertex or three collinear vertices.
+  SnappedTriangle degenerate() {
+    const int64_t x0 = gx(), y0 = gy(), x1 = gx(), y1 = gy();
+    if (uniform(0, 1)) return triangle({x0, y0, x1, y1, x0, y0});
+    // Midpoint of an even-sized segment keeps the three vertices exactly collinear.
+    const int64_t dx = (x1 - x0) / 2 * 2, dy = (y1 - y0) / 2 * 2;
+    return triangle({x0, y0, x0 + dx, y0 + dy, x0 + dx / 2, y0 + dy / 2});
+  }
+  // Entirely beside the screen (left, right, above or below) but inside the guard band.
+  SnappedTriangle offscreen() {
+    const int64_t w = p_.width * one_, h = p_.height * one_;
+    int64_t xy[6];
+    const int side = int(uniform(0, 3));
+    for (int k = 0; k < 3; ++k) {
+      xy[2 * k] = side == 0 ? uniform(-w, -one_) : side == 1 ? uniform(w + one_, 2 * w) : gx();
+      xy[2 * k + 1] = side == 2 ? uniform(-h, -one_) : side == 3 ? uniform(h + one_, 2 * h) : gy();
+    }
+    return triangle(xy);
+  }
+  // A thin triangle across the whole screen width: long rows.
+  SnappedTriangle long_row() {
+    const int64_t w = p_.width * one_, y = uniform(0, p_.height * one_);
+    return triangle({uniform(-w, 0), y, uniform(w, 2 * w), y + uniform(-one_, one_), uniform(-w, 2 * w),
+                     y + uniform(-3 * one_, 3 * one_)});
+  }
+  // Vertices on pixel centres and on the half-pixel grid: edges through pixel centres (top-left ties).
+  SnappedTriangle centre_ties() {
+    auto grid_x = [&] { return uniform(-2, p_.width + 1) * one_ + (uniform(0, 1) ? one_ / 2 : 0); };
+    auto grid_y = [&] { return uniform(-2, p_.height + 1) * one_ + (uniform(0, 1) ? one_ / 2 : 0); };
+    const int64_t x0 = grid_x(), y0 = grid_y();
+    switch (uniform(0, 2)) {
+      case 0: return triangle({x0, y0, grid_x(), y0, grid_x(), grid_y()});  // horizontal edge
+      case 1: return triangle({x0, y0, x0, grid_y(), grid_x(), grid_y()});  // vertical edge
+      default: return triangle({x0, y0, grid_x(), grid_y(), grid_x(), grid_y()});
+    }
+  }
+
+  // A right triangle whose last bounding-box candidate is the covered pixel (px, py) (vertical right
+  // edge and horizontal bottom edge a quarter pixel past its centre): a long walk ending on P.
+  SnappedTriangle ending_at(int px, int py) {
+    const int64_t cx = px * one_ + one_ / 2, cy = py * one_ + one_ / 2, quarter = one_ / 4;
+    return triangle({cx - 20 * one_, cy + quarter, cx + quarter, cy + quarter, cx + quarter, cy - 20 * one_});
+  }
+  // A small right triangle whose first candidate is the covered pixel (px, py).
+  SnappedTriangle starting_at(int px, int py) {
+    const int64_t cx = px * one_ + one_ / 2, cy = py * one_ + one_ / 2, quarter = one_ / 4;
+    return triangle({cx - quarter, cy - quarter, cx + 2 * one_, cy - quarter, cx - quarter, cy + 2 * one_});
+  }
+  // A small triangle around the centre of pixel (px, py), covering it.
+  SnappedTriangle around(int px, int py) {
+    const int64_t cx = px * one_ + one_ / 2, cy = py * one_ + one_ / 2;
+    return triangle({cx - one_, cy - one_, cx + one_, cy - one_, cx, cy + one_});
+  }
+  // Constant depth equal to the clear value: the equal and gequal tests can pass on a cleared buffer.
+  SnappedTriangle at_clear_depth(SnappedTriangle t) {
+    for (SnappedVertex& v : t.v) v.z = p_.depth_clear_value();
+    return t;
+  }
+
+  SnappedTriangle any() {
+    switch (uniform(0, 9)) {
+      case 0: return huge();
+      case 1: case 2: return tiny();
+      case 3: return degenerate();
+      case 4: return offscreen();
+      case 5: return long_row();
+      case 6: return centre_ties();
+      case 7: return at_clear_depth(medium());
+      default: return medium();
+    }
+  }
+
+  std::mt19937_64& rng() { return rng_; }
+
+ private:
+  Profile p_;
+  std::mt19937_64 rng_;
+  int64_t one_;
+  uint32_t z_max_;
+};
+
+}  // namespace
+
+CosimCase random_case(const Profile& profile, uint64_t seed, int count) {
+  Generator g(profile, seed);
+  CosimCase c{"random seed " + std::to_string(seed), {}};
+  while (int(c.triangles.size()) < count) {
+    // Now and then repeat or re-colour a previous triangle: equal depths for the depth functions.
+    if (!c.triangles.empty() && g.uniform(0, 9) == 0) {
+      SnappedTriangle t = c.triangles[size_t(g.uniform(0, int64_t(c.triangles.size()) - 1))];
+      for (SnappedVertex& v : t.v) v.color = g.color();
+      c.triangles.push_back(t);
+    } else {
+      c.triangles.push_back(g.any());
+    }
+  }
+  return c;
+}
+
+std::vector<CosimCase> directed_cases(const Profile& profile) {
+  Generator g(profile, 12345);
+  std::vector<CosimCase> cases;
+  auto add = [&](const std::string& name, auto make, int count) {
+    CosimCase c{"directed " + name, {}};
+    for (int i = 0; i < count; ++i) c.triangles.push_back(make(i));
+    cases.push_back(std::move(c));
+  };
+  const int cx = profile.width / 2, cy = profile.height / 2;
+  add("centre-on-edge ties", [&](int) { return g.centre_ties(); }, 40);
+  add("huge", [&](int) { return g.huge(); }, 6);
+  add("off-screen", [&](int) { return g.offscreen(); }, 12);
+  add("degenerate", [&](int) { return g.degenerate(); }, 12);
+  add("long rows", [&](int) { return g.long_row(); }, 8);
+  // Back-to-back tiny triangles on the same pixel: a long walk whose last fragment is pixel P, then
+  // a small triangle starting on P, loaded right after it while P's write is still in flight
+  // (a hazard stall when L >= 2 for bbox, L >= 3 for span with its row cycle), then more on P.
+  add("hazards", [&](int i) {
+    const int px = std::clamp(cx + (i / 4) % 5 - 2, 21, std::max(21, profile.width - 3));
+    const int py = std::clamp(cy, 21, std::max(21, profile.height - 3));
+    return i % 4 == 0 ? g.ending_at(px, py) : i % 4 == 1 ? g.starting_at(px, py) : i % 4 == 2 ? g.around(px, py)
+                                                                                             : g.tiny_at(px, py);
+  }, 40);
+  // The same triangle drawn again and again with new colours: equal depths for every depth function.
+  const SnappedTriangle repeated = g.medium();
+  add("repeated", [&](int) {
+    SnappedTriangle t = repeated;
+    for (SnappedVertex& v : t.v) v.color = g.color();
+    return t;
+  }, 6);
+  add("mixed", [&](int) { return g.any(); }, 40);
+  return cases;
+}
+
+}  // namespace rastersim::rtl

@@ -1,0 +1,287 @@
+#include "testbench/rtl_backend.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "testbench/rtl_configs.h"
+
+namespace rastersim::rtl {
+
+std::vector<std::string> built_configurations() {
+  std::vector<std::string> out;
+  for (const BuiltConfiguration& c : built_configuration_table()) {
+    std::ostringstream s;
+    s << c.name << ": " << c.width << "x" << c.height << " subpixel_bits " << c.subpixel_bits << " z_bits "
+      << c.z_bits << " z_guard_bits " << (c.z_guard_bits ? std::to_string(c.z_guard_bits) : "auto")
+      << " memory_latency 1.." << c.max_memory_latency;
+    out.push_back(s.str());
+  }
+  return out;
+}
+
+namespace {
+
+const BuiltConfiguration* find_configuration(const Profile& p) {
+  const int guard = derive_widths(p).guard_bits;
+  for (const BuiltConfiguration& c : built_configuration_table()) {
+    const int built_guard = derive_widths(c.width, c.height, c.subpixel_bits, c.z_bits, c.z_guard_bits).guard_bits;
+    if (c.width == p.width && c.height == p.height && c.subpixel_bits == p.subpixel_bits && c.z_bits == p.z_bits &&
+        built_guard == guard)
+      return &c;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+std::string configuration_error(const Profile& p) {
+  const std::vector<std::string> errors = validate(p);
+  if (!errors.empty()) return "invalid profile: " + errors.front();
+  const BuiltConfiguration* c = find_configuration(p);
+  if (!c) {
+    std::string message = "no RTL is built for width " + std::to_string(p.width) + ", height " +
+                          std::to_string(p.height) + ", subpixel_bits " + std::to_string(p.subpixel_bits) +
+                          ", z_bits " + std::to_string(p.z_bits) + ", guard bits " +
+                          std::to_string(derive_widths(p).guard_bits) + "; built:";
+    for (const std::string& b : built_configurations()) message += " [" + b + "]";
+    return message + ". To build it, add an entry to RASTERSIM_RTL_CONFIGS in testbench/CMakeLists.txt "
+                     "(name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency) and rebuild.";
+  }
+  if (p.memory_latency > c->max_memory_latency)
+    return "memory_latency " + std::to_string(p.memory_latency) + " exceeds the built RTL's maximum " +
+           std::to_string(c->max_memory_latency) + " (configuration " + c->name + ")";
+  return "";
+}
+
+RtlResult run_rtl(const Profile& profile, const std::vector<SnappedTriangle>& triangles, const RtlOptions& options) {
+  const std::string error = configuration_error(profile);
+  if (!error.empty()) throw std::invalid_argument(error);
+  return find_configuration(profile)->run(profile, triangles, options);
+}
+
+namespace {
+
+struct CollectFragments : FragmentSink {
+  std::vector<Fragment>* out;
+  void on_fragment(const Fragment& f) override { out->push_back(f); }
+};
+
+}  // namespace
+
+RtlResult run_model(const Profile& profile, const std::vector<SnappedTriangle>& triangles) {
+  RtlResult out;
+  Pipeline pipe(profile);
+  CollectFragments sink;
+  sink.out = &out.fragments;
+  pipe.set_fragment_sink(&sink);
+  pipe.set_triangle_log(&out.triangles);
+  for (const SnappedTriangle& t : triangles) pipe.submit(t);
+  out.stats = pipe.stats();
+  out.depth = pipe.zbuffer().depth();
+  out.color = pipe.zbuffer().color();
+  return out;
+}
+
+namespace {
+
+std::string hex_rgb(uint32_t c) {
+  char buffer[16];
+  std::snprintf(buffer, sizeof buffer, "0x%06x", c);
+  return buffer;
+}
+
+std::string rgb_text(const Rgb& c) { return hex_rgb((uint32_t(c.r) << 16) | (uint32_t(c.g) << 8) | c.b); }
+
+Divergence divergence(int64_t triangle, const std::string& unit, const std::string& field,
+                      const std::string& expected, const std::string& actual, int64_t cycle) {
+  Divergence d;
+  d.found = true;
+  d.triangle = triangle;
+  d.unit = unit;
+  d.field = field;
+  d.expected = expected;
+  d.actual = actual;
+  d.cycle = cycle;
+  std::ostringstream s;
+  s << "first divergence: ";
+  if (triangle >= 0) s << "triangle " << triangle << ", ";
+  s << "unit " << unit << ", field " << field << ": expected " << expected << ", actual " << actual;
+  if (cycle >= 0) s << ", cycle " << cycle;
+  d.sentence = s.str();
+  return d;
+}
+
+template <class T>
+bool differs(const T& a, const T& b) { return !(a == b); }
+
+}  // namespace
+
+Divergence compare(const RtlResult& model, const RtlResult& rtl) {
+  using std::to_string;
+  // Fragments grouped by triangle, in emission order.
+  size_t next_model = 0, next_rtl = 0;
+  const size_t triangles = std::max(model.triangles.size(), rtl.triangles.size());
+  for (size_t i = 0; i < triangles; ++i) {
+    const int64_t t = int64_t(i);
+    if (i >= rtl.triangles.size()) {
+      const TriangleRecord& m = model.triangles[i];
+      return divergence(t, "triangle_setup", "setup_accept", to_string(m.setup_accept),
+                        "never accepted" + (rtl.finished ? std::string() : " (" + rtl.note + ")"), m.setup_accept);
+    }
+    if (i >= model.triangles.size())
+      return divergence(t, "triangle_setup", "setup_accept", "no such triangle", to_string(rtl.triangles[i].setup_accept), -1);
+    const TriangleRecord& m = model.triangles[i];
+    const TriangleRecord& r = rtl.triangles[i];
+    if (m.setup_accept != r.setup_accept)
+      return divergence(t, "triangle_setup", "setup_accept", to_string(m.setup_accept), to_string(r.setup_accept), m.setup_accept);
+    if (m.status != r.status)
+      return divergence(t, "triangle_setup", "status", to_string(m.status), to_string(r.status), m.setup_accept + 1);
+    if (m.setup_done != r.setup_done)
+      return divergence(t, "triangle_setup", "setup_done", to_string(m.setup_done), to_string(r.setup_done), m.setup_done);
+    if (m.walker_load != r.walker_load)
+      return divergence(t, "scanline_walker", "walker_load", to_string(m.walker_load), to_string(r.walker_load), m.walker_load);
+    for (int64_t n = 0;; ++n) {
+      const bool has_m = next_model < model.fragments.size() && model.fragments[next_model].tri == t;
+      const bool has_r = next_rtl < rtl.fragments.size() && rtl.fragments[next_rtl].tri == t;
+      if (!has_m && !has_r) break;
+      const std::string which = "fragment " + to_string(n);
+      if (!has_r) {
+        const Fragment& f = model.fragments[next_model];
+        return divergence(t, "scanline_walker", which + " (x, y)", "(" + to_string(f.x) + ", " + to_string(f.y) + ")",
+                          "no fragment", f.cycle);
+      }
+      if (!has_m) {
+        const Fragment& f = rtl.fragments[next_rtl];
+        return divergence(t, "scanline_walker", which + " (x, y)", "no fragment",
+                          "(" + to_string(f.x) + ", " + to_string(f.y) + ")", f.cycle);
+      }
+      const Fragment& a = model.fragments[next_model++];
+      const Fragment& b = rtl.fragments[next_rtl++];
+      const std::string at = which + " at (" + to_string(a.x) + ", " + to_string(a.y) + ")";
+      if (a.x != b.x || a.y != b.y)
+        return divergence(t, "scanline_walker", which + " (x, y)", "(" + to_string(a.x) + ", " + to_string(a.y) + ")",
+                          "(" + to_string(b.x) + ", " + to_string(b.y) + ")", a.cycle);
+      if (a.cycle != b.cycle)
+        return divergence(t, "zbuffer", at + " accept cycle", to_string(a.cycle), to_string(b.cycle), a.cycle);
+      if (a.z != b.z) return divergence(t, "z_adder", at + " z", to_string(a.z), to_string(b.z), a.cycle);
+      if (differs(a.color, b.color))
+        return divergence(t, "z_adder", at + " colour", rgb_text(a.color), rgb_text(b.color), a.cycle);
+      if (a.pass != b.pass)
+        return divergence(t, "zbuffer", at + " depth test pass", to_string(a.pass), to_string(b.pass), a.cycle);
+    }
+    if (m.walker_end != r.walker_end)
+      return divergence(t, "scanline_walker", "walker_end", to_string(m.walker_end), to_string(r.walker_end), m.walker_end);
+    if (m.fragments != r.fragments)
+      return divergence(t, "scanline_walker", "fragments", to_string(m.fragments), to_string(r.fragments), m.walker_end);
+    if (m.depth_pass != r.depth_pass)
+      return divergence(t, "zbuffer", "depth_pass", to_string(m.depth_pass), to_string(r.depth_pass), m.last_write);
+    if (m.last_write != r.last_write)
+      return divergence(t, "zbuffer", "last_write", to_string(m.last_write), to_string(r.last_write), m.last_write);
+  }
+  if (!rtl.finished) return divergence(-1, "pipeline", "completion", "finished", rtl.note, -1);
+  if (model.depth.size() != rtl.depth.size() || model.color.size() != rtl.color.size())
+    return divergence(-1, "zbuffer", "memory size", to_string(model.depth.size()), to_string(rtl.depth.size()), -1);
+  for (size_t a = 0; a < model.depth.size(); ++a) {
+    if (model.depth[a] != rtl.depth[a])
+      return divergence(-1, "zbuffer", "final depth memory word " + to_string(a), to_string(model.depth[a]),
+                        to_string(rtl.depth[a]), -1);
+    if (model.color[a] != rtl.color[a])
+      return divergence(-1, "zbuffer", "final colour memory word " + to_string(a), hex_rgb(model.color[a]),
+                        hex_rgb(rtl.color[a]), -1);
+  }
+  const FrameStats& m = model.stats;
+  const FrameStats& r = rtl.stats;
+  const struct {
+    const char* unit;
+    const char* name;
+    int64_t expected, actual;
+  } fields[] = {
+      {"pipeline", "cycles", m.cycles, r.cycles},
+      {"triangle_setup", "triangles", m.triangles, r.triangles},
+      {"triangle_setup", "triangles_culled", m.triangles_culled, r.triangles_culled},
+      {"triangle_setup", "triangles_degenerate", m.triangles_degenerate, r.triangles_degenerate},
+      {"triangle_setup", "triangles_offscreen", m.triangles_offscreen, r.triangles_offscreen},
+      {"triangle_setup", "triangles_drawn", m.triangles_drawn, r.triangles_drawn},
+      {"scanline_walker", "candidates", m.candidates, r.candidates},
+      {"zbuffer", "fragments", m.fragments, r.fragments},
+      {"zbuffer", "depth_pass", m.depth_pass, r.depth_pass},
+      {"zbuffer", "depth_fail", m.depth_fail, r.depth_fail},
+      {"triangle_setup", "busy cycles", m.setup.busy, r.setup.busy},
+      {"triangle_setup", "stall cycles", m.setup.stall, r.setup.stall},
+      {"scanline_walker", "busy cycles", m.walker.busy, r.walker.busy},
+      {"scanline_walker", "stall cycles", m.walker.stall, r.walker.stall},
+      {"z_adder", "busy cycles", m.z_adder.busy, r.z_adder.busy},
+      {"z_adder", "stall cycles", m.z_adder.stall, r.z_adder.stall},
+      {"zbuffer", "busy cycles", m.zbuffer.busy, r.zbuffer.busy},
+      {"zbuffer", "stall cycles", m.zbuffer.stall, r.zbuffer.stall},
+  };
+  for (const auto& f : fields)
+    if (f.expected != f.actual)
+      return divergence(-1, f.unit, std::string("frame ") + f.name, to_string(f.expected), to_string(f.actual), -1);
+  return {};
+}
+
+std::string write_replay(const std::string& prefix, const Profile& profile,
+                         const std::vector<SnappedTriangle>& triangles) {
+  const double scale = std::ldexp(1.0, profile.subpixel_bits);
+  const double z_max = double(profile.depth_max());
+  std::ostringstream tri;
+  tri << "# rastersim replay: snapped vertices written back as pixels (x / 2^S) and depths Z / (2^N - 1)\n";
+  char buffer[64];
+  for (const SnappedTriangle& t : triangles) {
+    ScreenTriangle screen;
+    for (int k = 0; k < 3; ++k) {
+      screen.v[k].x = t.v[k].x / scale;
+      screen.v[k].y = t.v[k].y / scale;
+      screen.v[k].z = t.v[k].z / z_max;
+      screen.v[k].color = t.v[k].color;
+    }
+    // The written text must snap back to exactly these vertices.
+    const SnappedTriangle back = snap(screen, profile);
+    for (int k = 0; k < 3; ++k)
+      if (back.v[k].x != t.v[k].x || back.v[k].y != t.v[k].y || back.v[k].z != t.v[k].z)
+        throw std::logic_error("replay: a vertex does not snap back to itself");
+    for (int k = 0; k < 3; ++k) {
+      std::snprintf(buffer, sizeof buffer, "%.17g", screen.v[k].x);
+      tri << (k ? " " : "") << buffer;
+      std::snprintf(buffer, sizeof buffer, " %.17g", screen.v[k].y);
+      tri << buffer;
+      std::snprintf(buffer, sizeof buffer, " %.17g", screen.v[k].z);
+      tri << buffer;
+    }
+    for (int k = 0; k < 3; ++k)
+      tri << " " << int(t.v[k].color.r) << " " << int(t.v[k].color.g) << " " << int(t.v[k].color.b);
+    tri << "\n";
+  }
+  for (const auto& [path, text] : {std::pair<std::string, std::string>{prefix + ".tri", tri.str()},
+                                   std::pair<std::string, std::string>{prefix + ".json", profile_to_json(profile) + "\n"}}) {
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + path);
+  }
+  return "rastersim render " + prefix + ".tri --profile " + prefix + ".json --backend cosim";
+}
+
+CosimReport cosim(const Profile& profile, const std::vector<SnappedTriangle>& triangles, const RtlOptions& options,
+                  const std::string& replay_prefix) {
+  CosimReport report;
+  report.model = run_model(profile, triangles);
+  report.rtl = run_rtl(profile, triangles, options);
+  report.divergence = compare(report.model, report.rtl);
+  report.passed = !report.divergence.found;
+  if (!report.passed && !replay_prefix.empty())
+    report.replay_command = write_replay(replay_prefix, profile, triangles);
+  return report;
+}
+
+std::string CosimReport::message() const {
+  if (passed) return "model and RTL agree";
+  std::string text = divergence.sentence;
+  if (!replay_command.empty()) text += "; replay: " + replay_command;
+  return text;
+}
+
+}  // namespace rastersim::rtl

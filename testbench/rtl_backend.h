@@ -1,0 +1,75 @@
+// The RTL backend: the synthesizable pipeline (rtl/) verilated at build time for a few profiles,
+// driven cycle by cycle, with its transactions observed at the unit boundaries and turned into the
+// same records the model produces (model/pipeline.h), so that the two compare field by field.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "model/pipeline.h"
+#include "model/profile.h"
+#include "model/triangle.h"
+
+namespace rastersim::rtl {
+
+struct RtlOptions {
+  uint64_t seed = 1;       // random power-on state (registers and memories), printed on failure
+  std::string fst_path;    // write a waveform when not empty
+  int64_t max_cycles = 0;  // 0: a generous bound from the triangles' bounding boxes
+};
+
+// Everything a backend produces for one frame. Fragment.pass and TriangleRecord fields as in the
+// model; depth / color are the final memories, row-major, color 0x00RRGGBB.
+struct RtlResult {
+  std::vector<Fragment> fragments;
+  std::vector<TriangleRecord> triangles;
+  std::vector<uint32_t> depth, color;
+  FrameStats stats;
+  bool finished = true;  // false: the RTL did not finish within max_cycles
+  std::string note;      // why it did not finish
+};
+
+// The profiles verilated into this build, as "WxH S=.. N=.. guard=.. latency<=.." lines.
+std::vector<std::string> built_configurations();
+// Empty when the RTL can run `profile`; otherwise a sentence saying why and how to build it.
+std::string configuration_error(const Profile& profile);
+
+// Runs the triangles through the RTL. Throws std::invalid_argument with configuration_error()
+// when the profile is not built. The triangles must be checked (check_screen_triangle) and snapped.
+RtlResult run_rtl(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
+                  const RtlOptions& options = {});
+
+// The same through the model (the specification).
+RtlResult run_model(const Profile& profile, const std::vector<SnappedTriangle>& triangles);
+
+// The first divergence between the model (expected) and the RTL (actual), earliest triangle first.
+struct Divergence {
+  bool found = false;
+  int64_t triangle = -1;  // -1: a frame-level field (memories, stats)
+  std::string unit;       // triangle_setup, scanline_walker, z_adder, zbuffer, pipeline
+  std::string field;
+  std::string expected, actual;
+  int64_t cycle = -1;     // the cycle of the event in the model's timeline, -1 when not an event
+  std::string sentence;   // all of the above as one sentence
+};
+Divergence compare(const RtlResult& model, const RtlResult& rtl);
+
+// Writes a replay of the case: <prefix>.tri (%.17g coordinates that snap back to exactly these
+// vertices, nine colour values) and <prefix>.json (the profile). Returns the replay command.
+std::string write_replay(const std::string& prefix, const Profile& profile,
+                         const std::vector<SnappedTriangle>& triangles);
+
+// Model and RTL on one frame, compared. On a divergence, when replay_prefix is not empty, writes
+// the replay files there and puts the replay command in the report.
+struct CosimReport {
+  bool passed = true;
+  Divergence divergence;
+  std::string replay_command;
+  RtlResult model, rtl;
+  std::string message() const;  // one paragraph: the sentence, the seed hint and the replay command
+};
+CosimReport cosim(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
+                  const RtlOptions& options = {}, const std::string& replay_prefix = "");
+
+}  // namespace rastersim::rtl

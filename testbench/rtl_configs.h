@@ -1,0 +1,18 @@
+// The profiles verilated into this build (testbench/CMakeLists.txt, RASTERSIM_RTL_CONFIGS).
+#pragma once
+
+#include <vector>
+
+#include "testbench/rtl_backend.h"
+
+namespace rastersim::rtl {
+
+struct BuiltConfiguration {
+  const char* name;
+  int width, height, subpixel_bits, z_bits, z_guard_bits, max_memory_latency;
+  RtlResult (*run)(const Profile&, const std::vector<SnappedTriangle>&, const RtlOptions&);
+};
+
+const std::vector<BuiltConfiguration>& built_configuration_table();
+
+}  // namespace rastersim::rtl
