@@ -34,10 +34,11 @@ class Clipper {
   // [-W, 2W) x [-H, 2H) so no rounding or snapping can leave it.
   explicit Clipper(const Profile& profile);
 
-  // Clips the triangle, maps the pieces to the screen and appends them (a fan of the clipped
-  // polygon, same winding) to `out`; the corner sources to `sources` when given. A triangle wholly
-  // outside one side of the visible screen frustum (|x| <= w, |y| <= w) produces nothing, since it
-  // cannot cover a pixel centre. Triangles with a non-finite coordinate produce nothing.
+  // Clips the triangle, maps the pieces to the screen and appends them to `out` (the clipped
+  // polygon triangulated with its winding: a fan, or ear clipping where snapping to the profile's
+  // subpixel grid would make a fan fold over); the corner sources to `sources` when given.
+  // A triangle wholly outside one side of the visible screen frustum (|x| <= w, |y| <= w) produces
+  // nothing, since it cannot cover a pixel centre. Nor does a triangle with a non-finite coordinate.
   void clip(const ClipVertex (&triangle)[3], std::vector<ScreenTriangle>& out,
             std::vector<CornerSources>* sources = nullptr) const;
 
@@ -46,7 +47,8 @@ class Clipper {
 
  private:
   ScreenVertex to_screen(const ClipVertex& v) const;
-  int width_, height_;
+  ClipVertex cut(const ClipVertex& in, double in_value, const ClipVertex& out, double out_value) const;
+  int width_, height_, subpixel_bits_;
   double band_x_, band_y_;
 };
 
