@@ -52,7 +52,8 @@ std::vector<ScreenTriangle> render_scene(const Scene& scene, const Camera& camer
         color[v] = shade(material, scene.lighting, normal, to_eye(world[v]));
       }
     }
-    for (const auto& triangle : mesh.triangles) {
+    for (size_t triangle_index = 0; triangle_index < mesh.triangles.size(); ++triangle_index) {
+      const auto& triangle = mesh.triangles[triangle_index];
       const uint32_t corner[3] = {triangle[0], mirrored ? triangle[2] : triangle[1], mirrored ? triangle[1] : triangle[2]};
       ClipVertex vertices[3];
       for (int k = 0; k < 3; ++k) vertices[k] = {clip[corner[k]], color[corner[k]], int64_t(corner[k])};
@@ -66,7 +67,10 @@ std::vector<ScreenTriangle> render_scene(const Scene& scene, const Camera& camer
       }
       const size_t before = out.size();
       clipper.clip(vertices, out, corners);
-      if (trace) trace->object.resize(out.size(), int(index));
+      if (trace) {
+        trace->object.resize(out.size(), int(index));
+        trace->triangle.resize(out.size(), triangle_index);
+      }
       for (size_t t = before; t < out.size(); ++t) {
         const std::string problem = check_screen_triangle(out[t], profile);
         if (!problem.empty()) throw std::logic_error("front end produced an unacceptable triangle: " + problem);

@@ -25,10 +25,11 @@ struct Scene {
   CameraSettings camera;
 };
 
-// Per output triangle: the object it came from and the mesh vertex of each corner (-1 when the
-// corner was made by clipping).
+// Per output triangle: the object and mesh triangle it came from and the mesh vertex of each
+// corner (-1 when the corner was made by clipping).
 struct RenderTrace {
   std::vector<int> object;
+  std::vector<size_t> triangle;
   std::vector<CornerSources> corners;
 };
 
