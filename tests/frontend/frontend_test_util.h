@@ -15,7 +15,7 @@
 #include "frontend/vecmath.h"
 #include "model/pipeline.h"
 
-namespace rastersim::frontend::testing {
+namespace rastersim::frontend::test_util {
 
 // A file in this process's scratch folder (removed by nobody: the OS temp folder).
 inline std::string scratch_path(const std::string& name) {
@@ -101,4 +101,4 @@ struct IndependentCamera {
   }
 };
 
-}  // namespace rastersim::frontend::testing
+}  // namespace rastersim::frontend::test_util

@@ -147,7 +147,7 @@ double boundary_distance(const ClipVertex (&t)[3], double sx, double sy, int wid
 // and a vertex made within a subpixel of a kept one is merged with it, S = 4).
 void check_coverage(const ClipVertex (&t)[3], const Profile& p, const std::string& label) {
   const std::string what = label + describe(t);
-  const std::vector<int> count = testing::coverage(clip_one(t, p), p);
+  const std::vector<int> count = test_util::coverage(clip_one(t, p), p);
   int checked = 0;
   for (int j = 0; j < p.height; ++j)
     for (int i = 0; i < p.width; ++i) {
@@ -335,7 +335,7 @@ TEST(FrontendClip, TrianglesSharingAnEdgeTileWithoutGapOrOverlap) {
     }
     std::vector<ScreenTriangle> both = clip_one(left, p);
     for (const ScreenTriangle& t : clip_one(right, p)) both.push_back(t);
-    const std::vector<int> count = testing::coverage(both, p);
+    const std::vector<int> count = test_util::coverage(both, p);
     const std::string what = "case " + std::to_string(n) + describe(left) + " d" + describe(right);
     for (int j = 0; j < p.height; ++j)
       for (int i = 0; i < p.width; ++i) {
@@ -366,7 +366,7 @@ TEST(FrontendClip, VertexMadeWithinASubpixelOfAKeptOneIsMerged) {
   const ClipVertex neighbour[3] = {t[2], t[1], vertex(x.x, x.y, x.z, x.w, 3)};
   std::vector<ScreenTriangle> both = clip_one(t, p);
   for (const ScreenTriangle& s : clip_one(neighbour, p)) both.push_back(s);
-  const std::vector<int> count = testing::coverage(both, p);
+  const std::vector<int> count = test_util::coverage(both, p);
   for (int j = 0; j < p.height; ++j)
     for (int i = 0; i < p.width; ++i) EXPECT_LE(count[size_t(j) * p.width + i], 1) << "pixel " << i << "," << j;
   check_vertices(t, p);

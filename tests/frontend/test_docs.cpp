@@ -60,8 +60,8 @@ Camera camera_of(const Block& b) {
   return c;
 }
 
-testing::IndependentCamera independent_of(const Block& b) {
-  testing::IndependentCamera c;
+test_util::IndependentCamera independent_of(const Block& b) {
+  test_util::IndependentCamera c;
   c.eye = vec(b, "eye");
   c.target = vec(b, "target");
   c.up = vec(b, "up");

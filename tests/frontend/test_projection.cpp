@@ -77,10 +77,10 @@ Profile random_profile(std::mt19937& rng) {
 
 // A camera looking at the mesh from a random direction: `close` puts the eye near or inside it
 // (near-plane and guard-band clipping), otherwise well outside.
-testing::IndependentCamera random_camera(std::mt19937& rng, const RandomMesh& m, const Profile& p, bool close) {
+test_util::IndependentCamera random_camera(std::mt19937& rng, const RandomMesh& m, const Profile& p, bool close) {
   std::uniform_real_distribution<double> unit(-1, 1), fov(25, 100), fraction(0, 1);
   const Sphere bounds = bounding_sphere(m.positions);
-  testing::IndependentCamera c;
+  test_util::IndependentCamera c;
   c.width = p.width;
   c.height = p.height;
   c.fov = fov(rng);
@@ -103,7 +103,7 @@ testing::IndependentCamera random_camera(std::mt19937& rng, const RandomMesh& m,
   return c;
 }
 
-CameraOptions options_of(const testing::IndependentCamera& c) {
+CameraOptions options_of(const test_util::IndependentCamera& c) {
   CameraOptions o;
   o.eye = c.eye;
   o.target = c.target;
@@ -128,7 +128,7 @@ void check_kept_vertex(const ScreenVertex& v, const Vec3& expected, const Profil
 
 // Checks one output vertex made by clipping the world triangle t: the independent ray through it
 // meets t there, at the vertex's depth, and the vertex lies on a clip boundary.
-void check_made_vertex(const ScreenVertex& v, const Vec3 (&t)[3], const testing::IndependentCamera& c,
+void check_made_vertex(const ScreenVertex& v, const Vec3 (&t)[3], const test_util::IndependentCamera& c,
                        const Profile& p, const std::string& what) {
   const double boundary = std::min({std::fabs(v.z), std::fabs(v.z - 1), std::fabs(v.x - (1 - p.width)),
                                     std::fabs(v.x - (2 * p.width - 1)), std::fabs(v.y - (1 - p.height)),
@@ -148,8 +148,8 @@ void check_made_vertex(const ScreenVertex& v, const Vec3 (&t)[3], const testing:
 }
 
 // One mesh seen by one camera: returns whether any clipping happened.
-bool check_case(const RandomMesh& m, const testing::IndependentCamera& c, const Profile& p, const std::string& what) {
-  const std::string path = testing::write_file("random.obj", m.obj);
+bool check_case(const RandomMesh& m, const test_util::IndependentCamera& c, const Profile& p, const std::string& what) {
+  const std::string path = test_util::write_file("random.obj", m.obj);
   const std::vector<ScreenTriangle> public_output = load_obj(path, p, options_of(c));
 
   const Scene scene = obj_scene(load_obj_mesh(path));
@@ -226,7 +226,7 @@ TEST(FrontendProjection, RandomMeshesSeenFromOutside) {
   for (int n = 0; n < 150; ++n) {
     const RandomMesh m = random_mesh(rng, n);
     const Profile p = random_profile(rng);
-    const testing::IndependentCamera c = random_camera(rng, m, p, false);
+    const test_util::IndependentCamera c = random_camera(rng, m, p, false);
     const std::string what = "mesh " + std::to_string(n) + (c.ortho ? " (ortho)" : "");
     unclipped += !check_case(m, c, p, what);
   }
@@ -239,7 +239,7 @@ TEST(FrontendProjection, RandomMeshesSeenFromCloseOrInside) {
   for (int n = 0; n < 150; ++n) {
     const RandomMesh m = random_mesh(rng, n);
     const Profile p = random_profile(rng);
-    const testing::IndependentCamera c = random_camera(rng, m, p, true);
+    const test_util::IndependentCamera c = random_camera(rng, m, p, true);
     clipped += check_case(m, c, p, "close mesh " + std::to_string(n));
   }
   EXPECT_GT(clipped, 100);
