@@ -20,7 +20,7 @@ module divider #(
   output wire [DIVISOR_BITS-1:0]         remainder   // n - d * floor(n / d), in [0, d)
 );
   localparam integer COUNT_BITS = $clog2(DIVIDEND_BITS + 1);
-  localparam [COUNT_BITS-1:0] ITERATIONS = DIVIDEND_BITS;
+  localparam [COUNT_BITS-1:0] ITERATIONS = DIVIDEND_BITS[COUNT_BITS-1:0];
 
   reg [DIVIDEND_BITS-1:0] dividend_bits;  // not yet consumed dividend bits, MSB first
   reg [DIVISOR_BITS-1:0]  divisor_q;

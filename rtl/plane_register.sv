@@ -22,7 +22,10 @@ module plane_register #(
 
   // Products and sums are taken modulo 2^REG_BITS: the register wraps by design.
   wire [REG_BITS-1:0] next_row_value = row + step_y_q;
+  // Only the low REG_BITS of the product matter (modular register).
+  /* verilator lint_off UNUSEDSIGNAL */
   wire [REG_BITS+OFFSET_BITS-1:0] offset_product = {{OFFSET_BITS{1'b0}}, step_x_q} * {{REG_BITS{1'b0}}, offset};
+  /* verilator lint_on UNUSEDSIGNAL */
 
   always @(posedge clk) begin
     if (load) begin
@@ -42,7 +45,10 @@ module plane_register #(
   end
 
   localparam integer ROUNDED_BITS = REG_BITS - GUARD_BITS;
+  // The fraction bits are dropped by the rounding shift.
+  /* verilator lint_off UNUSEDSIGNAL */
   wire [REG_BITS-1:0] biased = value + {{(REG_BITS-GUARD_BITS){1'b0}}, 1'b1, {(GUARD_BITS-1){1'b0}}};
+  /* verilator lint_on UNUSEDSIGNAL */
   wire signed [ROUNDED_BITS-1:0] rounded = biased[REG_BITS-1:GUARD_BITS];
   wire [ROUNDED_BITS-1:0] out_max = {{(ROUNDED_BITS-OUT_BITS){1'b0}}, {OUT_BITS{1'b1}}};
   assign out = rounded[ROUNDED_BITS-1] ? {OUT_BITS{1'b0}}

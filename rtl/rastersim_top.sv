@@ -57,6 +57,8 @@ module rastersim_top #(
 
   // Derived widths, the same formulas as model/widths.h; the C++ build static_asserts these
   // (public, so Verilator emits them as static constexpr) against rastersim::derive_widths.
+  // Some are published for that check only, hence unused here.
+  /* verilator lint_off UNUSEDPARAM */
   localparam integer GUARD_BITS /*verilator public*/ = rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS);
   localparam integer COORD_BITS /*verilator public*/ = rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS);
   localparam integer DELTA_BITS /*verilator public*/ = rs_delta_bits(WIDTH, HEIGHT, SUBPIXEL_BITS);
@@ -83,6 +85,7 @@ module rastersim_top #(
   localparam integer P_Z_BITS /*verilator public*/ = Z_BITS;
   localparam integer P_Z_GUARD_BITS /*verilator public*/ = Z_GUARD_BITS;
   localparam integer P_MAX_MEMORY_LATENCY /*verilator public*/ = MAX_MEMORY_LATENCY;
+  /* verilator lint_on UNUSEDPARAM */
 
   localparam integer EB = EDGE_BITS;
   localparam integer SXB = EDGE_STEP_X_BITS;

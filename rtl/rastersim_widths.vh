@@ -19,8 +19,7 @@ endfunction
 function automatic integer rs_ubits32(input integer v);
   reg [127:0] wide;
   begin
-    wide = 128'd0;
-    wide[31:0] = v;
+    wide = {96'd0, v};
     rs_ubits32 = rs_ubits(wide);
   end
 endfunction
@@ -45,10 +44,11 @@ endfunction
 // F: fraction (guard) bits of the plane registers; 2^F >= 2 (W + H - 1) unless the profile sets it.
 function automatic integer rs_guard_bits(input integer w, input integer h, input integer z_guard_bits);
   integer f;
+  integer sum;
   reg [127:0] wide;
   begin
-    wide = 128'd0;
-    wide[31:0] = w + h - 1;
+    sum = w + h - 1;
+    wide = {96'd0, sum};
     f = rs_ceil_log2(wide << 1);
     if (z_guard_bits > 0) rs_guard_bits = z_guard_bits;
     else rs_guard_bits = f < 1 ? 1 : f;
@@ -59,24 +59,28 @@ endfunction
 function automatic [127:0] rs_area_unit(input integer w, input integer h, input integer s);
   reg [127:0] acc;
   begin
-    acc = w;
-    acc = acc * h;
+    acc = {96'd0, w};
+    acc = acc * {96'd0, h};
     rs_area_unit = acc << (2 * s);
   end
 endfunction
 
 function automatic integer rs_coord_bits(input integer w, input integer h, input integer s);
   reg [127:0] big;
+  integer larger;
   begin
-    big = w > h ? w : h;
+    larger = w > h ? w : h;
+    big = {96'd0, larger};
     rs_coord_bits = rs_sbits((128'd2 * big) << s);
   end
 endfunction
 
 function automatic integer rs_delta_bits(input integer w, input integer h, input integer s);
   reg [127:0] big;
+  integer larger;
   begin
-    big = w > h ? w : h;
+    larger = w > h ? w : h;
+    big = {96'd0, larger};
     rs_delta_bits = rs_sbits((128'd3 * big) << s);
   end
 endfunction
@@ -96,7 +100,7 @@ endfunction
 function automatic integer rs_edge_step_x_bits(input integer h, input integer s);
   reg [127:0] v;
   begin
-    v = h;
+    v = {96'd0, h};
     rs_edge_step_x_bits = rs_sbits((128'd3 * v) << (2 * s));
   end
 endfunction
@@ -104,7 +108,7 @@ endfunction
 function automatic integer rs_edge_step_y_bits(input integer w, input integer s);
   reg [127:0] v;
   begin
-    v = w;
+    v = {96'd0, w};
     rs_edge_step_y_bits = rs_sbits((128'd3 * v) << (2 * s));
   end
 endfunction
@@ -112,7 +116,7 @@ endfunction
 function automatic integer rs_span_rem_bits(input integer h, input integer s);
   reg [127:0] v;
   begin
-    v = h;
+    v = {96'd0, h};
     rs_span_rem_bits = rs_ubits((128'd3 * v) << (2 * s));
   end
 endfunction

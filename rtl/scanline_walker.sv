@@ -57,6 +57,7 @@ module scanline_walker #(
   localparam integer XB = rs_ubits32(WIDTH - 1);
   localparam integer YB = rs_ubits32(HEIGHT - 1);
   localparam integer QB = EB + 2;  // span bounds: -quot and quot compared at full width
+  localparam [EB-1:0] CARRY = {{(EB-1){1'b0}}, 1'b1};
 
   localparam [1:0] IDLE = 2'd0, ROW = 2'd1, PIXEL = 2'd2;
   reg [1:0] state;
@@ -65,11 +66,11 @@ module scanline_walker #(
   reg [YB-1:0] y1;
   reg signed [EB-1:0]  edge_row [0:2];    // edge value at (x0, y): bbox row start, span row value
   reg signed [EB-1:0]  edge_value [0:2];  // bbox: edge value at (x, y)
-  reg signed [SXB-1:0] step_x [0:2];
-  reg signed [SYB-1:0] step_y [0:2];
+  reg signed [EB-1:0]  step_x [0:2];     // sign-extended to EB at load
+  reg signed [EB-1:0]  step_y [0:2];
   reg signed [EB-1:0]  quot [0:2];        // span DDA: floor(edge_row / d), d = |step_x|
   reg [RB-1:0]         rem [0:2];         // edge_row - quot * d, in [0, d)
-  reg signed [SYB-1:0] step_quot [0:2];
+  reg signed [EB-1:0]  step_quot [0:2];
   reg [RB-1:0]         step_rem [0:2];
   reg [RB-1:0]         divisor [0:2];
 
@@ -86,7 +87,8 @@ module scanline_walker #(
   wire last_row = frag_y == y1;
 
   // ---- span bounds of the current row: offsets t from x0 with every edge >= 0 ----
-  wire signed [QB-1:0] last_offset = $signed({2'b00, x1 - x0});
+  wire [XB-1:0] last_offset_x = x1 - x0;
+  wire signed [QB-1:0] last_offset = $signed({{(QB-XB){1'b0}}, last_offset_x});
   reg signed [QB-1:0] span_lo, span_hi;
   integer k;
   always @(*) begin
@@ -142,11 +144,11 @@ module scanline_walker #(
       for (i = 0; i < 3; i = i + 1) begin
         edge_row[i] <= in_edge_start[i*EB +: EB];
         edge_value[i] <= in_edge_start[i*EB +: EB];
-        step_x[i] <= in_edge_step_x[i*SXB +: SXB];
-        step_y[i] <= in_edge_step_y[i*SYB +: SYB];
+        step_x[i] <= $signed({{(EB-SXB){in_edge_step_x[i*SXB + SXB - 1]}}, in_edge_step_x[i*SXB +: SXB]});
+        step_y[i] <= $signed({{(EB-SYB){in_edge_step_y[i*SYB + SYB - 1]}}, in_edge_step_y[i*SYB +: SYB]});
         quot[i] <= in_span_quot[i*EB +: EB];
         rem[i] <= in_span_rem[i*RB +: RB];
-        step_quot[i] <= in_span_step_quot[i*SYB +: SYB];
+        step_quot[i] <= $signed({{(EB-SYB){in_span_step_quot[i*SYB + SYB - 1]}}, in_span_step_quot[i*SYB +: SYB]});
         step_rem[i] <= in_span_step_rem[i*RB +: RB];
         divisor[i] <= in_edge_step_x[i*SXB + SXB - 1] ? -in_edge_step_x[i*SXB +: RB] : in_edge_step_x[i*SXB +: RB];
       end
@@ -179,7 +181,7 @@ module scanline_walker #(
         if (step_x[i] != 0) begin
           if ({1'b0, rem[i]} + {1'b0, step_rem[i]} >= {1'b0, divisor[i]}) begin
             rem[i] <= rem[i] + step_rem[i] - divisor[i];
-            quot[i] <= quot[i] + step_quot[i] + 1;  // integer 1 keeps the sum signed
+            quot[i] <= quot[i] + step_quot[i] + CARRY;  // all EB bits: modular, sign-agnostic
           end else begin
             rem[i] <= rem[i] + step_rem[i];
             quot[i] <= quot[i] + step_quot[i];

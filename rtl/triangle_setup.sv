@@ -73,9 +73,16 @@ module triangle_setup #(
   localparam integer PB = DB + CB + 2;      // edge cross products before narrowing to EB
   localparam integer NB = Z_BITS + EB + 4;  // plane numerators sum_k v_k e_k, signed
   localparam integer HALF = 1 << (S - 1);   // half a pixel in subpixels
-  localparam integer ONE = 1 << S;
+  localparam integer ONE_LESS = (1 << S) - 1;  // one pixel less one subpixel
+  localparam integer X_LAST = WIDTH - 1;
+  localparam integer Y_LAST = HEIGHT - 1;
   localparam integer COUNT_BITS = $clog2(DIVIDER_BITS + 1);
-  localparam [COUNT_BITS-1:0] DIVIDE_CYCLES = DIVIDER_BITS;
+  localparam [COUNT_BITS-1:0] DIVIDE_CYCLES = DIVIDER_BITS[COUNT_BITS-1:0];
+
+  localparam signed [BB-1:0] HALF_B = HALF[BB-1:0];
+  localparam signed [BB-1:0] ONE_LESS_B = ONE_LESS[BB-1:0];
+  localparam signed [BB-1:0] X_LAST_B = X_LAST[BB-1:0];
+  localparam signed [BB-1:0] Y_LAST_B = Y_LAST[BB-1:0];
 
   localparam [1:0] IDLE = 2'd0, FRONT = 2'd1, DIVIDE = 2'd2, OUT = 2'd3;
   localparam [1:0] DRAWN = 2'd0, DEGENERATE = 2'd1, CULLED = 2'd2, OFFSCREEN = 2'd3;
@@ -98,9 +105,12 @@ module triangle_setup #(
   wire signed [DB-1:0] d10y = vy[1] - vy[0];
   wire signed [DB-1:0] d20x = vx[2] - vx[0];
   wire signed [DB-1:0] d20y = vy[2] - vy[0];
-  wire signed [2*DB:0] cross_a = d10x * d20y;
-  wire signed [2*DB:0] cross_b = d20x * d10y;
+  wire signed [2*DB:0] cross_a = $signed({{(DB+1){d10x[DB-1]}}, d10x}) * $signed({{(DB+1){d20y[DB-1]}}, d20y});
+  wire signed [2*DB:0] cross_b = $signed({{(DB+1){d20x[DB-1]}}, d20x}) * $signed({{(DB+1){d10y[DB-1]}}, d10y});
+  // |area2| <= 9 W H M^2 fits AB bits (docs/widths.md): the top bits are sign copies.
+  /* verilator lint_off UNUSEDSIGNAL */
   wire signed [2*DB:0] area2_wide = cross_a - cross_b;
+  /* verilator lint_on UNUSEDSIGNAL */
   wire signed [AB-1:0] area2 = area2_wide[AB-1:0];
   wire [AB-1:0] area = area2[AB-1] ? -area2 : area2;
   // y points down: area2 > 0 is clockwise as the viewer sees the screen.
@@ -112,23 +122,27 @@ module triangle_setup #(
   wire signed [CB-1:0] x_max01 = vx[0] > vx[1] ? vx[0] : vx[1];
   wire signed [CB-1:0] y_min01 = vy[0] < vy[1] ? vy[0] : vy[1];
   wire signed [CB-1:0] y_max01 = vy[0] > vy[1] ? vy[0] : vy[1];
-  wire signed [BB-1:0] x_min = x_min01 < vx[2] ? x_min01 : vx[2];
-  wire signed [BB-1:0] x_max = x_max01 > vx[2] ? x_max01 : vx[2];
-  wire signed [BB-1:0] y_min = y_min01 < vy[2] ? y_min01 : vy[2];
-  wire signed [BB-1:0] y_max = y_max01 > vy[2] ? y_max01 : vy[2];
+  wire signed [CB-1:0] x_min_c = x_min01 < vx[2] ? x_min01 : vx[2];
+  wire signed [CB-1:0] x_max_c = x_max01 > vx[2] ? x_max01 : vx[2];
+  wire signed [CB-1:0] y_min_c = y_min01 < vy[2] ? y_min01 : vy[2];
+  wire signed [CB-1:0] y_max_c = y_max01 > vy[2] ? y_max01 : vy[2];
+  wire signed [BB-1:0] x_min = $signed({{(BB-CB){x_min_c[CB-1]}}, x_min_c});
+  wire signed [BB-1:0] x_max = $signed({{(BB-CB){x_max_c[CB-1]}}, x_max_c});
+  wire signed [BB-1:0] y_min = $signed({{(BB-CB){y_min_c[CB-1]}}, y_min_c});
+  wire signed [BB-1:0] y_max = $signed({{(BB-CB){y_max_c[CB-1]}}, y_max_c});
   // Pixel i is a candidate when its centre i 2^S + 2^(S-1) lies in [min, max].
-  wire signed [BB-1:0] bx0_num = x_min - HALF + (ONE - 1);
-  wire signed [BB-1:0] by0_num = y_min - HALF + (ONE - 1);
-  wire signed [BB-1:0] bx1_num = x_max - HALF;
-  wire signed [BB-1:0] by1_num = y_max - HALF;
+  wire signed [BB-1:0] bx0_num = x_min - HALF_B + ONE_LESS_B;
+  wire signed [BB-1:0] by0_num = y_min - HALF_B + ONE_LESS_B;
+  wire signed [BB-1:0] bx1_num = x_max - HALF_B;
+  wire signed [BB-1:0] by1_num = y_max - HALF_B;
   wire signed [BB-1:0] bx0_raw = bx0_num >>> S;
   wire signed [BB-1:0] by0_raw = by0_num >>> S;
   wire signed [BB-1:0] bx1_raw = bx1_num >>> S;
   wire signed [BB-1:0] by1_raw = by1_num >>> S;
   wire signed [BB-1:0] bx0 = bx0_raw < 0 ? 0 : bx0_raw;
   wire signed [BB-1:0] by0 = by0_raw < 0 ? 0 : by0_raw;
-  wire signed [BB-1:0] bx1 = bx1_raw > WIDTH - 1 ? WIDTH - 1 : bx1_raw;
-  wire signed [BB-1:0] by1 = by1_raw > HEIGHT - 1 ? HEIGHT - 1 : by1_raw;
+  wire signed [BB-1:0] bx1 = bx1_raw > X_LAST_B ? X_LAST_B : bx1_raw;
+  wire signed [BB-1:0] by1 = by1_raw > Y_LAST_B ? Y_LAST_B : by1_raw;
   wire offscreen = bx0 > bx1 || by0 > by1;
 
   wire [1:0] status = area2 == 0 ? DEGENERATE : culled ? CULLED : offscreen ? OFFSCREEN : DRAWN;
@@ -155,8 +169,8 @@ module triangle_setup #(
   assign oz[2] = swap ? vz[1] : vz[2];
   assign orgb[2] = swap ? vrgb[1] : vrgb[2];
 
-  wire signed [BB-1:0] centre_x = (bx0 <<< S) + HALF;
-  wire signed [BB-1:0] centre_y = (by0 <<< S) + HALF;
+  wire signed [BB-1:0] centre_x = (bx0 <<< S) + HALF_B;
+  wire signed [BB-1:0] centre_y = (by0 <<< S) + HALF_B;
 
   wire signed [EB-1:0]  unbiased [0:2];  // E at the first candidate, s.2S
   wire signed [EB-1:0]  edge_start [0:2];
@@ -165,15 +179,22 @@ module triangle_setup #(
   genvar k;
   generate
     for (k = 0; k < 3; k = k + 1) begin : edges
-      wire signed [PB-1:0] dx = ox[(k + 1) % 3] - ox[k];
-      wire signed [PB-1:0] dy = oy[(k + 1) % 3] - oy[k];
-      wire signed [PB-1:0] rel_x = centre_x - ox[k];
-      wire signed [PB-1:0] rel_y = centre_y - oy[k];
+      wire signed [CB-1:0] bx = ox[(k + 1) % 3];
+      wire signed [CB-1:0] by = oy[(k + 1) % 3];
+      wire signed [CB-1:0] ax = ox[k];
+      wire signed [CB-1:0] ay = oy[k];
+      wire signed [PB-1:0] dx = $signed({{(PB-CB){bx[CB-1]}}, bx}) - $signed({{(PB-CB){ax[CB-1]}}, ax});
+      wire signed [PB-1:0] dy = $signed({{(PB-CB){by[CB-1]}}, by}) - $signed({{(PB-CB){ay[CB-1]}}, ay});
+      wire signed [PB-1:0] rel_x = $signed({{(PB-BB){centre_x[BB-1]}}, centre_x}) - $signed({{(PB-CB){ax[CB-1]}}, ax});
+      wire signed [PB-1:0] rel_y = $signed({{(PB-BB){centre_y[BB-1]}}, centre_y}) - $signed({{(PB-CB){ay[CB-1]}}, ay});
+      // Only the low bits are kept: |E| < 2^(EB-1), |step| within SXB / SYB (docs/widths.md).
+      /* verilator lint_off UNUSEDSIGNAL */
       wire signed [PB-1:0] value = dx * rel_y - dy * rel_x;
       // Interior to the right (dy < 0) is a left edge; horizontal with interior below is top.
       wire top_left = dy < 0 || (dy == 0 && dx > 0);
       wire signed [PB-1:0] step_x = -(dy <<< S);
       wire signed [PB-1:0] step_y = dx <<< S;
+      /* verilator lint_on UNUSEDSIGNAL */
       assign unbiased[k] = value[EB-1:0];
       assign edge_start[k] = unbiased[k] - (top_left ? 0 : 1);
       assign edge_step_x[k] = step_x[SXB-1:0];
@@ -187,15 +208,25 @@ module triangle_setup #(
                                                      input signed [EB-1:0] e1, input signed [EB-1:0] e2);
     reg signed [NB-1:0] a0, a1, a2, w0, w1, w2;
     begin
-      a0 = $signed({1'b0, v0});
-      a1 = $signed({1'b0, v1});
-      a2 = $signed({1'b0, v2});
-      w0 = e0;
-      w1 = e1;
-      w2 = e2;
+      a0 = $signed({{(NB-Z_BITS){1'b0}}, v0});
+      a1 = $signed({{(NB-Z_BITS){1'b0}}, v1});
+      a2 = $signed({{(NB-Z_BITS){1'b0}}, v2});
+      w0 = $signed({{(NB-EB){e0[EB-1]}}, e0});
+      w1 = $signed({{(NB-EB){e1[EB-1]}}, e1});
+      w2 = $signed({{(NB-EB){e2[EB-1]}}, e2});
       plane_numerator = a0 * w1 + a1 * w2 + a2 * w0;
     end
   endfunction
+
+  // The edge steps widened to EB bits (sign extension) as weights of the step numerators.
+  wire signed [EB-1:0] weight_x [0:2];
+  wire signed [EB-1:0] weight_y [0:2];
+  generate
+    for (k = 0; k < 3; k = k + 1) begin : weights
+      assign weight_x[k] = $signed({{(EB-SXB){edge_step_x[k][SXB-1]}}, edge_step_x[k]});
+      assign weight_y[k] = $signed({{(EB-SYB){edge_step_y[k][SYB-1]}}, edge_step_y[k]});
+    end
+  endgenerate
 
   // 12 plane numerators: plane p (0 depth, 1..3 r, g, b), term t (0 start, 1 step_x, 2 step_y).
   wire signed [NB-1:0] numerator [0:11];
@@ -206,8 +237,8 @@ module triangle_setup #(
       wire [Z_BITS-1:0] v1 = p == 0 ? oz[1] : {{(Z_BITS-8){1'b0}}, orgb[1][(p == 0 ? 0 : 8*(3-p)) +: 8]};
       wire [Z_BITS-1:0] v2 = p == 0 ? oz[2] : {{(Z_BITS-8){1'b0}}, orgb[2][(p == 0 ? 0 : 8*(3-p)) +: 8]};
       assign numerator[3*p + 0] = plane_numerator(v0, v1, v2, unbiased[0], unbiased[1], unbiased[2]);
-      assign numerator[3*p + 1] = plane_numerator(v0, v1, v2, edge_step_x[0], edge_step_x[1], edge_step_x[2]);
-      assign numerator[3*p + 2] = plane_numerator(v0, v1, v2, edge_step_y[0], edge_step_y[1], edge_step_y[2]);
+      assign numerator[3*p + 1] = plane_numerator(v0, v1, v2, weight_x[0], weight_x[1], weight_x[2]);
+      assign numerator[3*p + 2] = plane_numerator(v0, v1, v2, weight_y[0], weight_y[1], weight_y[2]);
     end
   endgenerate
 
@@ -218,7 +249,10 @@ module triangle_setup #(
     for (n = 0; n < 12; n = n + 1) begin : plane_dividers
       localparam integer QB = n < 3 ? ZRB : CRB;
       wire [NB-1:0] magnitude = numerator[n] < 0 ? -numerator[n] : numerator[n];
-      wire [NB+F-1:0] scaled = {magnitude, {F{1'b0}}};  // numerator * 2^F, < 2^DIVIDER_BITS
+      // numerator * 2^F < 2^DIVIDER_BITS (docs/widths.md): the top bits are zero.
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire [NB+F-1:0] scaled = {magnitude, {F{1'b0}}};
+      /* verilator lint_on UNUSEDSIGNAL */
       wire signed [QB-1:0] quotient;
       wire [AB-1:0] unused_remainder;
       wire unused_busy;
@@ -251,7 +285,10 @@ module triangle_setup #(
       wire [SYB-1:0] step_mag = edge_step_y[k] < 0 ? -edge_step_y[k] : edge_step_y[k];
       wire signed [EB-1:0] start_quot;
       wire signed [SYB-1:0] step_quot;
+      // Remainders are < |step_x| < 2^RB: the top bit is zero.
+      /* verilator lint_off UNUSEDSIGNAL */
       wire [SXB-1:0] start_rem, step_rem;
+      /* verilator lint_on UNUSEDSIGNAL */
       wire unused_busy_start, unused_busy_step;
       divider #(.DIVIDEND_BITS(EB), .DIVISOR_BITS(SXB), .QUOTIENT_BITS(EB)) div_start (
         .clk(clk), .start(start_dividers), .dividend_negative(edge_start[k] < 0),

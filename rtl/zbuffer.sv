@@ -39,12 +39,11 @@ module zbuffer #(
 `include "rastersim_widths.vh"
 
   localparam integer XB = rs_ubits32(WIDTH - 1);
-  localparam integer YB = rs_ubits32(HEIGHT - 1);
   localparam integer AB = rs_ubits32(WIDTH * HEIGHT - 1);
-  localparam integer LB = rs_ubits32(MAX_MEMORY_LATENCY);
   localparam integer WORDS = WIDTH * HEIGHT;
-  localparam [AB-1:0] LAST_ADDR = WORDS - 1;
-  localparam [AB-1:0] WIDTH_A = WIDTH;
+  localparam integer LAST_WORD = WORDS - 1;
+  localparam [AB-1:0] LAST_ADDR = LAST_WORD[AB-1:0];
+  localparam [AB-1:0] WIDTH_A = WIDTH[AB-1:0];
 
   reg [Z_BITS-1:0] depth_mem [0:WORDS-1];
   reg [23:0]       color_mem [0:WORDS-1];
