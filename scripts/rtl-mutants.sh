@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Bug injection: copies rtl/ with one bug each, verilates the copy (64 x 48 profile) with
+# testbench/mutant_check.cpp and requires the co-simulation to catch the bug with a first-divergence
+# report. Usage: rtl-mutants.sh BUILD_DIR [mutant ...]  (BUILD_DIR holds librastersim_rtl.a).
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="$(cd "${1:?usage: rtl-mutants.sh BUILD_DIR [mutant ...]}" && pwd)"
+shift
+mutants=("$@")
+[ ${#mutants[@]} -eq 0 ] && mutants=(edge_compare z_adder_carry hazard_stall divider_rounding)
+
+# name -> file, text to replace, replacement (fixed strings).
+declare -A file from to
+file[edge_compare]=scanline_walker.sv
+from[edge_compare]='!edge_value[0][EB-1]'
+to[edge_compare]='(edge_value[0] > 0)'            # edge test E >= 0 becomes E > 0
+file[z_adder_carry]=plane_register.sv
+from[z_adder_carry]='value <= value + step_x_q;'
+to[z_adder_carry]='value <= value + step_x_q + 1'"'"'b1;'  # carry-in of the x-step adder flipped
+file[hazard_stall]=zbuffer.sv
+from[hazard_stall]='assign frag_ready = clear_done && !hazard;'
+to[hazard_stall]='assign frag_ready = clear_done;'  # read-after-write stall removed
+file[divider_rounding]=divider.sv
+from[divider_rounding]=': remainder_nonzero ? ~quotient_mag'
+to[divider_rounding]=': 1'"'"'b0 ? ~quotient_mag'     # negative quotients truncate instead of floor
+
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+status=0
+for m in "${mutants[@]}"; do
+  [ -n "${file[$m]:-}" ] || { echo "unknown mutant $m"; exit 2; }
+  dir="$work/$m"
+  mkdir -p "$dir"
+  cp -r "$root/rtl" "$dir/rtl"
+  python3 - "$dir/rtl/${file[$m]}" "${from[$m]}" "${to[$m]}" <<'PY'
+import sys
+path, old, new = sys.argv[1:4]
+text = open(path).read()
+if text.count(old) != 1:
+    sys.exit(f"mutation anchor found {text.count(old)} times in {path}: {old}")
+open(path, "w").write(text.replace(old, new))
+PY
+  echo "mutant $m: ${file[$m]}: '${from[$m]}' -> '${to[$m]}'"
+  if ! verilator --cc --exe --build -j 2 -Wno-fatal -Wno-lint -Wno-style --x-assign unique --x-initial unique \
+      -I"$dir/rtl" "$dir"/rtl/*.sv --top-module rastersim_top --prefix Vmutant -Mdir "$dir/obj" \
+      -GWIDTH=64 -GHEIGHT=48 -GSUBPIXEL_BITS=4 -GZ_BITS=24 -GMAX_MEMORY_LATENCY=8 --trace-fst \
+      "$root/testbench/mutant_check.cpp" -o mutant_check \
+      -CFLAGS "-std=gnu++17 -O1 -I$root -isystem $build/testbench" \
+      -LDFLAGS "$build/testbench/librastersim_rtl.a $build/librastersim_model.a" > "$dir/build.log" 2>&1; then
+    echo "mutant $m: build failed"; tail -20 "$dir/build.log"; status=1; continue
+  fi
+  replays="$build/rtl-mutants/$m"
+  mkdir -p "$replays"
+  if "$dir/obj/mutant_check" "$replays"; then
+    echo "mutant $m: caught"
+  else
+    echo "mutant $m: NOT caught"; status=1
+  fi
+done
+exit $status
