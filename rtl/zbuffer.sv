@@ -48,12 +48,31 @@ module zbuffer #(
   reg [Z_BITS-1:0] depth_mem [0:WORDS-1];
   reg [23:0]       color_mem [0:WORDS-1];
 
-  // In-flight fragments: stage k holds the fragment accepted k cycles ago (k = 1 .. MAX).
-  reg              stage_valid [1:MAX_MEMORY_LATENCY];
-  reg [AB-1:0]     stage_addr [1:MAX_MEMORY_LATENCY];
-  reg [Z_BITS-1:0] stage_z [1:MAX_MEMORY_LATENCY];
-  reg [23:0]       stage_rgb [1:MAX_MEMORY_LATENCY];
-  reg [Z_BITS-1:0] stage_data [1:MAX_MEMORY_LATENCY];  // the memory port's read data pipeline
+  // In-flight fragments: a ring of 2^RB >= MAX_MEMORY_LATENCY entries, one written every cycle;
+  // the entry of age k (1 .. L) holds the fragment accepted k cycles ago (valid: it was accepted).
+  localparam integer RB = MAX_MEMORY_LATENCY > 2 ? $clog2(MAX_MEMORY_LATENCY) : 1;
+  localparam integer RING = 1 << RB;
+  localparam integer LB = rs_ubits32(MAX_MEMORY_LATENCY);
+  reg [RB-1:0]     now_slot;  // the slot written at the end of this cycle
+  reg              ring_valid [0:RING-1];
+  reg [AB-1:0]     ring_addr [0:RING-1];
+  reg [Z_BITS-1:0] ring_z [0:RING-1];
+  reg [23:0]       ring_rgb [0:RING-1];
+  // The memory port's read data: read_q is the synchronous read of the fragment accepted in the
+  // previous cycle; ring_data keeps older reads until their data cycle (the read latency L).
+  reg [Z_BITS-1:0] read_q;
+  reg [Z_BITS-1:0] ring_data [0:RING-1];
+
+  // Ages are taken modulo the ring size: the high bits of wide_age are not needed.
+  /* verilator lint_off UNUSEDSIGNAL */
+  function automatic [RB-1:0] slot_of_age(input [RB-1:0] now, input [LB-1:0] age);
+    reg [LB:0] wide_age;
+    begin
+      wide_age = {1'b0, age};
+      slot_of_age = now - wide_age[RB-1:0];  // modulo RING (a power of two)
+    end
+  endfunction
+  /* verilator lint_on UNUSEDSIGNAL */
 
   reg [AB-1:0] clear_addr;
 
@@ -62,13 +81,17 @@ module zbuffer #(
   reg hazard;
   reg in_flight;
   integer k;
+  reg [LB-1:0] age;
+  reg [RB-1:0] slot;
   always @(*) begin
     hazard = 1'b0;
     in_flight = 1'b0;
     for (k = 1; k <= MAX_MEMORY_LATENCY; k = k + 1) begin
-      if (k <= cfg_memory_latency && stage_valid[k]) begin
+      age = k[LB-1:0];
+      slot = slot_of_age(now_slot, age);
+      if (age <= cfg_memory_latency && ring_valid[slot]) begin
         in_flight = 1'b1;
-        if (stage_addr[k] == frag_addr) hazard = 1'b1;
+        if (ring_addr[slot] == frag_addr) hazard = 1'b1;
       end
     end
   end
@@ -78,11 +101,13 @@ module zbuffer #(
   assign busy = accept || in_flight;
 
   // The fragment in its data cycle c+L.
-  wire              done_valid = stage_valid[cfg_memory_latency];
-  wire [AB-1:0]     done_addr = stage_addr[cfg_memory_latency];
-  wire [Z_BITS-1:0] done_z = stage_z[cfg_memory_latency];
-  wire [23:0]       done_rgb = stage_rgb[cfg_memory_latency];
-  wire [Z_BITS-1:0] stored = stage_data[cfg_memory_latency];
+  wire [RB-1:0]     done_slot = slot_of_age(now_slot, cfg_memory_latency);
+  wire              done_valid = ring_valid[done_slot];
+  wire [AB-1:0]     done_addr = ring_addr[done_slot];
+  wire [Z_BITS-1:0] done_z = ring_z[done_slot];
+  wire [23:0]       done_rgb = ring_rgb[done_slot];
+  // Read data of the fragment accepted L cycles ago: read_q when L = 1, else kept in the ring.
+  wire [Z_BITS-1:0] stored = cfg_memory_latency == 1 ? read_q : ring_data[done_slot];
   reg pass;
   always @(*) begin
     case (cfg_depth_func)
@@ -111,7 +136,7 @@ module zbuffer #(
     end
   end
   always @(posedge clk) begin
-    stage_data[1] <= depth_mem[frag_addr];
+    read_q <= depth_mem[frag_addr];
     readback_depth <= depth_mem[readback_addr];
     readback_rgb <= color_mem[readback_addr];
   end
@@ -126,23 +151,21 @@ module zbuffer #(
     end
   end
 
+  // The slot of the previous cycle's fragment, whose read data read_q holds now.
+  wire [RB-1:0] previous_slot = slot_of_age(now_slot, {{(LB-1){1'b0}}, 1'b1});
   always @(posedge clk) begin
     if (rst) begin
-      for (k = 1; k <= MAX_MEMORY_LATENCY; k = k + 1) stage_valid[k] <= 1'b0;
+      now_slot <= {RB{1'b0}};
+      for (k = 0; k < RING; k = k + 1) ring_valid[k] <= 1'b0;
     end else begin
-      stage_valid[1] <= accept;
-      for (k = 2; k <= MAX_MEMORY_LATENCY; k = k + 1) stage_valid[k] <= stage_valid[k-1];
+      now_slot <= now_slot + 1'b1;
+      ring_valid[now_slot] <= accept;
     end
   end
   always @(posedge clk) begin
-    stage_addr[1] <= frag_addr;
-    stage_z[1] <= frag_z;
-    stage_rgb[1] <= frag_rgb;
-    for (k = 2; k <= MAX_MEMORY_LATENCY; k = k + 1) begin
-      stage_addr[k] <= stage_addr[k-1];
-      stage_z[k] <= stage_z[k-1];
-      stage_rgb[k] <= stage_rgb[k-1];
-      stage_data[k] <= stage_data[k-1];
-    end
+    ring_addr[now_slot] <= frag_addr;
+    ring_z[now_slot] <= frag_z;
+    ring_rgb[now_slot] <= frag_rgb;
+    ring_data[previous_slot] <= read_q;
   end
 endmodule
