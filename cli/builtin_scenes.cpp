@@ -123,7 +123,6 @@ std::vector<ScreenTriangle> random_triangles(int64_t count, double min_size, dou
 
 const std::vector<BuiltinScene>& builtin_scenes() {
   static const std::vector<BuiltinScene> scenes = {
-      {"default", "the scene rendered when no input is named (currently: overlap)", overlap_scene},
       {"overlap", "large Gouraud triangles at crossing depths: the z-buffer cuts their intersection lines",
        overlap_scene},
       {"fan", "watertight jittered grid mesh with a central fan, mixed winding: every pixel covered once",

@@ -18,7 +18,7 @@ struct BuiltinScene {
   std::function<std::vector<ScreenTriangle>(const Profile&)> generate;
 };
 
-// Every scene, in listing order; "default" is the one rendered when no input is named.
+// Every screen-space scene, in listing order (the 3D scenes, "default" among them, are the front end's).
 const std::vector<BuiltinScene>& builtin_scenes();
 // nullptr when no scene has that name.
 const BuiltinScene* find_builtin_scene(const std::string& name);

@@ -17,10 +17,19 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-std::vector<ScreenTriangle> load_builtin_scene(const std::string& name, const Profile& profile) {
+bool is_3d_scene(const std::string& name) {
+  for (const auto& [scene, description] : frontend::builtin_scene_list())
+    if (scene == name) return true;
+  return false;
+}
+
+std::vector<ScreenTriangle> load_builtin_scene(const std::string& name, const Profile& profile,
+                                               const frontend::CameraOptions& camera) {
   const BuiltinScene* scene = find_builtin_scene(name);
-  if (!scene) throw InputError("unknown scene '" + name + "'; `rastersim scenes` lists the built-in scenes");
-  std::vector<ScreenTriangle> triangles = scene->generate(profile);
+  if (!scene && !is_3d_scene(name))
+    throw InputError("unknown scene '" + name + "'; `rastersim scenes` lists the built-in scenes");
+  std::vector<ScreenTriangle> triangles =
+      scene ? scene->generate(profile) : frontend::builtin_scene(name, profile, camera);
   // The generators stay inside the guard band by construction; checked so a regression is an error,
   // not a triangle the setup unit was never meant to take.
   for (size_t i = 0; i < triangles.size(); ++i) {
@@ -34,22 +43,27 @@ std::vector<ScreenTriangle> load_builtin_scene(const std::string& name, const Pr
 }  // namespace
 
 std::vector<ScreenTriangle> load_input(const std::string& path_or_empty, const std::string& scene_name,
-                                       const Profile& profile) {
+                                       const Profile& profile, const frontend::CameraOptions& camera) {
   if (!path_or_empty.empty() && !scene_name.empty())
     throw InputError("give either an INPUT file (" + path_or_empty + ") or --scene " + scene_name + ", not both");
-  if (path_or_empty.empty()) return load_builtin_scene(scene_name.empty() ? "default" : scene_name, profile);
+  if (path_or_empty.empty()) return load_builtin_scene(scene_name.empty() ? "default" : scene_name, profile, camera);
 
   const std::string& path = path_or_empty;
   const std::string ext = lower_extension(path);
   if (ext == ".tri") return read_tri_file(path, profile);
-  if (ext == ".obj" || ext == ".json") {
-    // FRONT END DISPATCH: the 3D front end (frontend/) turns .obj meshes and .json scene files into
-    // screen-space triangles here, each checked with check_screen_triangle like the others.
-    throw InputError(path + ": 3D inputs need the front end");
-  }
+  // The 3D front end guarantees every triangle it returns passes check_screen_triangle.
+  if (ext == ".obj") return frontend::load_obj(path, profile, camera);
+  if (ext == ".json") return frontend::load_scene_file(path, profile, camera);
   throw InputError(path, 0,
                    (ext.empty() ? std::string("has no file extension") : "unknown input type '" + ext + "'") +
                        "; expected a .tri, .obj or .json file");
+}
+
+std::vector<std::pair<std::string, std::string>> scene_list() {
+  std::vector<std::pair<std::string, std::string>> scenes = frontend::builtin_scene_list();
+  for (auto& [name, description] : scenes) description = "3D: " + description;
+  for (const BuiltinScene& s : builtin_scenes()) scenes.emplace_back(s.name, "screen space: " + s.description);
+  return scenes;
 }
 
 }  // namespace rastersim

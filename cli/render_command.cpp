@@ -7,11 +7,14 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
+#include <tuple>
 
 #include "backend.h"
 #include "builtin_scenes.h"
 #include "inputs.h"
 #include "outputs.h"
+#include "tri_reader.h"
 
 namespace rastersim {
 namespace {
@@ -52,7 +55,7 @@ class ProgressLine {
 
 CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   CLI::App* cmd = app.add_subcommand("render", "render a .tri file or a built-in scene through the pipeline");
-  cmd->add_option("input", o.input, "screen-space .tri file (.obj and .json scenes need the 3D front end)")
+  cmd->add_option("input", o.input, "a screen-space .tri file, a Wavefront .obj mesh or a .json scene file")
       ->type_name("INPUT");
   cmd->add_option("--scene", o.scene, "built-in scene to render when no INPUT is given (see `rastersim scenes`)")
       ->type_name("NAME");
@@ -67,8 +70,35 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   cmd->add_option("--backend", o.backend, "model (rtl, cosim, systemc when built in)")
       ->check(CLI::IsMember(backend_names()))
       ->type_name("NAME");
+  cmd->add_option("--dump-tri", o.dump_tri_out,
+                  "write the screen-space triangles the input produced (before snapping) as a .tri file")
+      ->type_name("FILE");
+  const char* const camera = "Camera (3D inputs: .obj, .json scenes, 3D built-in scenes)";
+  for (auto [flag, vec, help] : {std::tuple{"--eye", &o.eye, "camera position X,Y,Z (world space)"},
+                                 std::tuple{"--target", &o.target, "point the camera looks at X,Y,Z"},
+                                 std::tuple{"--up", &o.up, "up direction X,Y,Z"}})
+    cmd->add_option(flag, *vec, help)->expected(3)->delimiter(',')->type_name("X,Y,Z")->group(camera);
+  for (auto [flag, value, help] : {std::tuple{"--fov", &o.fov, "vertical field of view in degrees, in (0, 180)"},
+                                   std::tuple{"--near", &o.near, "near plane distance, > 0"},
+                                   std::tuple{"--far", &o.far, "far plane distance, > near"}})
+    cmd->add_option(flag, *value, help)->expected(1)->type_name("NUMBER")->group(camera);
+  cmd->add_flag("--ortho", o.ortho, "orthographic projection")->group(camera);
   add_profile_options(*cmd, o.profile);
   return cmd;
+}
+
+frontend::CameraOptions camera_options(const RenderOptions& o) {
+  frontend::CameraOptions camera;
+  auto vec = [](const std::vector<double>& v) { return std::optional<frontend::Vec3>(frontend::Vec3{v[0], v[1], v[2]}); };
+  if (!o.eye.empty()) camera.eye = vec(o.eye);
+  if (!o.target.empty()) camera.target = vec(o.target);
+  if (!o.up.empty()) camera.up = vec(o.up);
+  // The front end checks the values: degenerate cameras are bad input.
+  if (!o.fov.empty()) camera.fov = o.fov[0];
+  if (!o.near.empty()) camera.near = o.near[0];
+  if (!o.far.empty()) camera.far = o.far[0];
+  camera.ortho = o.ortho;
+  return camera;
 }
 
 int run_render(const RenderOptions& o) {
@@ -89,8 +119,10 @@ int run_render(const RenderOptions& o) {
   }
   if (!o.fragments_out.empty()) fragments_temp = outputs.add(o.fragments_out, "--fragments");
   if (!o.stats_out.empty()) stats_temp = outputs.add(o.stats_out, "--stats");
+  std::string dump_tri_temp;
+  if (!o.dump_tri_out.empty()) dump_tri_temp = outputs.add(o.dump_tri_out, "--dump-tri");
 
-  const std::vector<ScreenTriangle> screen = load_input(o.input, o.scene, profile);
+  const std::vector<ScreenTriangle> screen = load_input(o.input, o.scene, profile, camera_options(o));
   std::vector<SnappedTriangle> snapped;
   snapped.reserve(screen.size());
   for (const ScreenTriangle& t : screen) snapped.push_back(snap(t, profile));
@@ -105,6 +137,11 @@ int run_render(const RenderOptions& o) {
   if (csv) csv->close();
   if (!color_temp.empty()) write_color_image(o.color_out, color_temp, result.buffers);
   if (!depth_temp.empty()) write_depth_image(o.depth_out, depth_temp, result.buffers, profile.z_bits);
+  if (!dump_tri_temp.empty()) {
+    std::ostringstream text;
+    write_tri(text, screen, "screen-space triangles of " + (o.input.empty() ? "scene " + (o.scene.empty() ? std::string("default") : o.scene) : o.input));
+    write_text_file(dump_tri_temp, o.dump_tri_out, text.str());
+  }
   if (!stats_temp.empty()) write_text_file(stats_temp, o.stats_out, stats_to_json(result.stats, profile).dump(2) + "\n");
   outputs.commit();
 
@@ -112,7 +149,7 @@ int run_render(const RenderOptions& o) {
   std::cout << "rendered " << source << " through the " << o.backend << ", " << profile.width << "x"
             << profile.height << ", " << to_string(profile.traversal) << " traversal\n";
   print_summary(std::cout, result.stats);
-  for (const std::string* path : {&o.color_out, &o.depth_out, &o.fragments_out, &o.stats_out})
+  for (const std::string* path : {&o.color_out, &o.depth_out, &o.fragments_out, &o.stats_out, &o.dump_tri_out})
     if (!path->empty()) std::cout << "wrote " << *path << "\n";
   return 0;
 }
@@ -122,10 +159,11 @@ CLI::App* add_scenes_command(CLI::App& app) {
 }
 
 int run_scenes() {
+  const auto scenes = scene_list();
   size_t width = 0;
-  for (const BuiltinScene& s : builtin_scenes()) width = std::max(width, s.name.size());
-  for (const BuiltinScene& s : builtin_scenes())
-    std::cout << s.name << std::string(width + 2 - s.name.size(), ' ') << s.description << "\n";
+  for (const auto& [name, description] : scenes) width = std::max(width, name.size());
+  for (const auto& [name, description] : scenes)
+    std::cout << name << std::string(width + 2 - name.size(), ' ') << description << "\n";
   return 0;
 }
 

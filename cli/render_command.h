@@ -2,9 +2,11 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "frontend/frontend.h"
 #include "profile_options.h"
 
 namespace rastersim {
@@ -16,6 +18,10 @@ struct RenderOptions {
   std::string depth_out;
   std::string fragments_out;
   std::string stats_out;
+  std::string dump_tri_out;
+  std::vector<double> eye, target, up;  // 3 values each when given
+  std::vector<double> fov, near, far;   // 1 value each when given
+  bool ortho = false;
   std::string backend = "model";
   ProfileOptions profile;
 };

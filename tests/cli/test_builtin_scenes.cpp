@@ -41,7 +41,7 @@ bool same_triangles(const std::vector<ScreenTriangle>& a, const std::vector<Scre
 }
 
 TEST(BuiltinScenes, RegistryHasTheRequiredScenes) {
-  for (const char* name : {"default", "overlap", "fan", "stress"}) {
+  for (const char* name : {"overlap", "fan", "stress"}) {
     const BuiltinScene* scene = find_builtin_scene(name);
     ASSERT_NE(scene, nullptr) << name;
     EXPECT_FALSE(scene->description.empty());
@@ -62,9 +62,13 @@ TEST(BuiltinScenes, EveryTriangleFitsTheGuardBandAndIsDeterministic) {
   }
 }
 
-TEST(BuiltinScenes, DefaultIsOverlap) {
+TEST(BuiltinScenes, DefaultIsTheFrontEndsScene) {
   Profile p;
-  EXPECT_TRUE(same_triangles(find_builtin_scene("default")->generate(p), find_builtin_scene("overlap")->generate(p)));
+  EXPECT_EQ(find_builtin_scene("default"), nullptr);
+  EXPECT_TRUE(same_triangles(load_input("", "", p), frontend::builtin_scene("default", p, {})));
+  const auto list = scene_list();
+  ASSERT_FALSE(list.empty());
+  EXPECT_EQ(list.front().first, "default");
 }
 
 TEST(BuiltinScenes, OverlapHasInterpenetratingTriangles) {
@@ -156,11 +160,10 @@ std::string load_error(const std::string& path, const std::string& scene) {
 
 TEST(LoadInput, DispatchesScenesAndRejectsWhatItCannotRead) {
   Profile p;
-  EXPECT_TRUE(same_triangles(load_input("", "", p), find_builtin_scene("default")->generate(p)));
   EXPECT_TRUE(same_triangles(load_input("", "fan", p), find_builtin_scene("fan")->generate(p)));
   EXPECT_NE(load_error("", "nope").find("unknown scene 'nope'"), std::string::npos);
-  EXPECT_EQ(load_error("mesh.obj", ""), "mesh.obj: 3D inputs need the front end");
-  EXPECT_EQ(load_error("scene.JSON", ""), "scene.JSON: 3D inputs need the front end");
+  EXPECT_NE(load_error("missing-mesh.obj", "").find("missing-mesh.obj"), std::string::npos);
+  EXPECT_NE(load_error("missing-scene.json", "").find("missing-scene.json"), std::string::npos);
   EXPECT_NE(load_error("list.xyz", "").find("list.xyz: unknown input type '.xyz'"), std::string::npos);
   EXPECT_NE(load_error("a.tri", "fan").find("not both"), std::string::npos);
 }
