@@ -1,5 +1,6 @@
 #include "profile.h"
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -50,11 +51,26 @@ bool parse_bool(const std::string& text, bool& out) {
   return false;
 }
 
-// The line (1-based) of the first occurrence of `"key"` in text, or 0.
+// The line (1-based) where `key` appears as a key of the top-level object, or 0. Strings are
+// skipped as tokens, so a value that happens to spell the key is not taken for it.
 int line_of_key(const std::string& text, const std::string& key) {
-  const size_t at = text.find("\"" + key + "\"");
-  if (at == std::string::npos) return 0;
-  return 1 + int(std::count(text.begin(), text.begin() + long(at), '\n'));
+  int line = 1, depth = 0;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\n') ++line;
+    else if (c == '{' || c == '[') ++depth;
+    else if (c == '}' || c == ']') --depth;
+    else if (c == '"') {
+      const size_t begin = i + 1;
+      for (++i; i < text.size() && text[i] != '"'; ++i)
+        if (text[i] == '\\') ++i;
+      if (i >= text.size()) return 0;
+      size_t next = i + 1;
+      while (next < text.size() && std::isspace(static_cast<unsigned char>(text[next]))) ++next;
+      if (depth == 1 && next < text.size() && text[next] == ':' && text.compare(begin, i - begin, key) == 0) return line;
+    }
+  }
+  return 0;
 }
 
 }  // namespace
