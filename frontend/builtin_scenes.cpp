@@ -83,12 +83,14 @@ Scene closeup_scene() {
   return s;
 }
 
-// Inside a large sphere (seen from inside, every face is a back face: render with --cull front or
-// none) with a torus in front: every sphere triangle is clipped to the guard band.
+// Inside a large sphere (seen from inside, every face of it is a back face: render with --cull none)
+// with a torus in front: the sphere's triangles around the view are clipped to the near plane and
+// the guard band.
 Scene inside_scene() {
   Scene s;
   s.lighting = key_light();
   s.lighting.ambient = {0.35, 0.35, 0.35};
+  s.lighting.lights.push_back({{0.1, -0.2, -1.0}, {0.5, 0.5, 0.5}});  // from behind the camera, for the torus
   SceneObject room = object(make_sphere(6.0, 36, 18), {0, 0, 0}, {0, 0, 0}, rgb(200, 200, 185));
   room.material.shading = SurfaceShading::Faceted;
   s.objects.push_back(room);
@@ -111,7 +113,8 @@ const std::vector<Builtin>& builtins() {
        default_scene},
       {"shapes", "the five built-in surfaces side by side, smooth and faceted", shapes_scene},
       {"closeup", "the default scene from close up: near-plane and guard-band clipping", closeup_scene},
-      {"inside", "camera inside a sphere (use --cull front or none): every triangle clipped", inside_scene},
+      {"inside", "camera inside a faceted sphere (render with --cull none), a torus in front: heavy clipping",
+       inside_scene},
   };
   return list;
 }
