@@ -1,5 +1,5 @@
 // Homogeneous clipping (Sutherland-Hodgman, before the perspective divide), viewport mapping and
-// fanning into screen triangles the setup unit accepts. docs/frontend.md "Clipping".
+// triangulation into screen triangles the setup unit accepts. docs/frontend.md "Clipping".
 #pragma once
 
 #include <array>

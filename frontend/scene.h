@@ -36,7 +36,7 @@ struct RenderTrace {
 // The world-space bounding sphere of every object's vertices.
 Sphere scene_bounds(const Scene& scene);
 
-// Objects in order, triangles in mesh order, each clipped polygon fanned in place. A mirroring model
+// Objects in order, triangles in mesh order, each clipped polygon's triangles in place. A mirroring model
 // matrix (negative determinant) reverses each triangle's corners so front faces stay counter-clockwise.
 std::vector<ScreenTriangle> render_scene(const Scene& scene, const Camera& camera, const Profile& profile,
                                          RenderTrace* trace = nullptr);
@@ -45,7 +45,7 @@ std::vector<ScreenTriangle> render_scene(const Scene& scene, const Camera& camer
 Scene load_scene(const std::string& path);
 Scene parse_scene(const std::string& text, const std::string& file_name, const std::string& base_folder);
 
-// A built-in scene by name; nullptr-like empty optional is not used: unknown names throw InputError.
+// A built-in scene by name (builtin_scene_list); an unknown name throws InputError.
 Scene make_builtin_scene(const std::string& name);
 
 // The scene load_obj renders: the mesh, light grey, smooth, default lighting, no camera settings.

@@ -17,12 +17,23 @@
 
 namespace rastersim::frontend::test_util {
 
-// A file in this process's scratch folder (removed by nobody: the OS temp folder).
+inline std::filesystem::path scratch_folder() {
+  return std::filesystem::temp_directory_path() / ("rastersim_frontend_tests_" + std::to_string(::getpid()));
+}
+
+// Removes this process's scratch folder when the test program ends.
+struct ScratchCleanup {
+  ~ScratchCleanup() {
+    std::error_code ignored;
+    std::filesystem::remove_all(scratch_folder(), ignored);
+  }
+};
+inline ScratchCleanup scratch_cleanup;
+
+// A file in this process's scratch folder.
 inline std::string scratch_path(const std::string& name) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("rastersim_frontend_tests_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  return (dir / name).string();
+  std::filesystem::create_directories(scratch_folder());
+  return (scratch_folder() / name).string();
 }
 
 inline std::string write_file(const std::string& name, const std::string& text) {
