@@ -114,17 +114,27 @@ module rastersim_top #(
     end
   end
 
-  // Setup -> walker record.
+  // Setup -> walker record. Readable from C++ (public_flat_rd) so that the co-simulation compares
+  // the setup unit's outputs field by field when the walker takes them.
   wire setup_valid, walker_ready;
-  wire [X_BITS-1:0] rec_x0, rec_x1;
-  wire [Y_BITS-1:0] rec_y0, rec_y1;
-  wire [3*EB-1:0]  rec_edge_start, rec_span_quot;
-  wire [3*SXB-1:0] rec_edge_step_x;
-  wire [3*SYB-1:0] rec_edge_step_y, rec_span_step_quot;
-  wire [3*RB-1:0]  rec_span_rem, rec_span_step_rem;
-  wire [ZRB-1:0]   rec_depth_start, rec_depth_step_x, rec_depth_step_y;
-  wire [3*CRB-1:0] rec_color_start, rec_color_step_x, rec_color_step_y;
-  wire [23:0]      rec_flat_rgb;
+  wire [X_BITS-1:0] rec_x0 /*verilator public_flat_rd*/;
+  wire [X_BITS-1:0] rec_x1 /*verilator public_flat_rd*/;
+  wire [Y_BITS-1:0] rec_y0 /*verilator public_flat_rd*/;
+  wire [Y_BITS-1:0] rec_y1 /*verilator public_flat_rd*/;
+  wire [3*EB-1:0]  rec_edge_start /*verilator public_flat_rd*/;
+  wire [3*SXB-1:0] rec_edge_step_x /*verilator public_flat_rd*/;
+  wire [3*SYB-1:0] rec_edge_step_y /*verilator public_flat_rd*/;
+  wire [3*EB-1:0]  rec_span_quot /*verilator public_flat_rd*/;
+  wire [3*RB-1:0]  rec_span_rem /*verilator public_flat_rd*/;
+  wire [3*SYB-1:0] rec_span_step_quot /*verilator public_flat_rd*/;
+  wire [3*RB-1:0]  rec_span_step_rem /*verilator public_flat_rd*/;
+  wire [ZRB-1:0]   rec_depth_start /*verilator public_flat_rd*/;
+  wire [ZRB-1:0]   rec_depth_step_x /*verilator public_flat_rd*/;
+  wire [ZRB-1:0]   rec_depth_step_y /*verilator public_flat_rd*/;
+  wire [3*CRB-1:0] rec_color_start /*verilator public_flat_rd*/;
+  wire [3*CRB-1:0] rec_color_step_x /*verilator public_flat_rd*/;
+  wire [3*CRB-1:0] rec_color_step_y /*verilator public_flat_rd*/;
+  wire [23:0]      rec_flat_rgb /*verilator public_flat_rd*/;
   wire setup_ready;
   wire decided_front_facing_unused;
   wire [AREA_BITS-1:0] decided_area2_unused;

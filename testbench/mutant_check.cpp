@@ -5,6 +5,7 @@
 #include <string>
 
 #include "Vmutant.h"
+#include "Vmutant___024root.h"
 #include "Vmutant_rastersim_top.h"
 #include "testbench/cosim_cases.h"
 #include "testbench/rtl_harness.h"
@@ -27,8 +28,7 @@ int main(int argc, char** argv) {
       for (uint64_t seed = 1; seed <= 3; ++seed) cases.push_back(random_case(p, seed, 40));
       for (const CosimCase& c : cases) {
         const RtlResult model = run_model(p, c.triangles);
-        const RtlResult rtl = detail::run_verilated<Vmutant>(p, c.triangles, RtlOptions{}, int(Vmutant_rastersim_top::COORD_BITS),
-                                                             int(Vmutant_rastersim_top::SETUP_CYCLES));
+        const RtlResult rtl = detail::run_verilated<Vmutant, Vmutant_rastersim_top>(p, c.triangles, RtlOptions{});
         const Divergence d = compare(model, rtl);
         if (d.found) {
           const std::string command = write_replay(replay_dir + "/mutant_replay", p, c.triangles);

@@ -78,7 +78,17 @@ RtlResult run_model(const Profile& profile, const std::vector<SnappedTriangle>& 
   sink.out = &out.fragments;
   pipe.set_fragment_sink(&sink);
   pipe.set_triangle_log(&out.triangles);
-  for (const SnappedTriangle& t : triangles) pipe.submit(t);
+  const TriangleSetup setup(profile);
+  for (const SnappedTriangle& t : triangles) {
+    SetupResult s = setup.run(t);
+    if (s.status != SetupStatus::Drawn) s = SetupResult{};
+    // Fields the RTL record does not carry (see RtlResult::setups).
+    s.front_facing = false;
+    s.area2 = 0;
+    for (EdgeSetup& e : s.edge) e.top_left = false;
+    out.setups.push_back(s);
+    pipe.submit(t);
+  }
   out.stats = pipe.stats();
   out.depth = pipe.zbuffer().depth();
   out.color = pipe.zbuffer().color();
@@ -117,6 +127,43 @@ Divergence divergence(int64_t triangle, const std::string& unit, const std::stri
 template <class T>
 bool differs(const T& a, const T& b) { return !(a == b); }
 
+// The setup record, field by field, as the walker takes it in cycle `cycle`.
+Divergence compare_setup(int64_t t, const SetupResult& m, const SetupResult& r, int64_t cycle) {
+  using std::to_string;
+  struct Field {
+    std::string name;
+    int64_t expected, actual;
+  };
+  std::vector<Field> fields = {{"x0", m.x0, r.x0}, {"x1", m.x1, r.x1}, {"y0", m.y0, r.y0}, {"y1", m.y1, r.y1}};
+  for (int k = 0; k < 3; ++k) {
+    const std::string e = "edge[" + to_string(k) + "].";
+    const EdgeSetup &a = m.edge[k], &b = r.edge[k];
+    fields.push_back({e + "start", a.start, b.start});
+    fields.push_back({e + "step_x", a.step_x, b.step_x});
+    fields.push_back({e + "step_y", a.step_y, b.step_y});
+    fields.push_back({e + "span_quot", a.span_quot, b.span_quot});
+    fields.push_back({e + "span_rem", a.span_rem, b.span_rem});
+    fields.push_back({e + "span_step_quot", a.span_step_quot, b.span_step_quot});
+    fields.push_back({e + "span_step_rem", a.span_step_rem, b.span_step_rem});
+  }
+  fields.push_back({"depth.start", m.depth.start, r.depth.start});
+  fields.push_back({"depth.step_x", m.depth.step_x, r.depth.step_x});
+  fields.push_back({"depth.step_y", m.depth.step_y, r.depth.step_y});
+  static const char* const kChannel[] = {"red", "green", "blue"};
+  for (int c = 0; c < 3; ++c) {
+    const std::string p = std::string(kChannel[c]) + ".";
+    fields.push_back({p + "start", m.color[c].start, r.color[c].start});
+    fields.push_back({p + "step_x", m.color[c].step_x, r.color[c].step_x});
+    fields.push_back({p + "step_y", m.color[c].step_y, r.color[c].step_y});
+  }
+  for (const Field& f : fields)
+    if (f.expected != f.actual)
+      return divergence(t, "triangle_setup", "record " + f.name, to_string(f.expected), to_string(f.actual), cycle);
+  if (differs(m.flat_color, r.flat_color))
+    return divergence(t, "triangle_setup", "record flat colour", rgb_text(m.flat_color), rgb_text(r.flat_color), cycle);
+  return {};
+}
+
 }  // namespace
 
 Divergence compare(const RtlResult& model, const RtlResult& rtl) {
@@ -143,6 +190,10 @@ Divergence compare(const RtlResult& model, const RtlResult& rtl) {
       return divergence(t, "triangle_setup", "setup_done", to_string(m.setup_done), to_string(r.setup_done), m.setup_done);
     if (m.walker_load != r.walker_load)
       return divergence(t, "scanline_walker", "walker_load", to_string(m.walker_load), to_string(r.walker_load), m.walker_load);
+    if (m.status == SetupStatus::Drawn && i < model.setups.size() && i < rtl.setups.size()) {
+      const Divergence d = compare_setup(t, model.setups[i], rtl.setups[i], m.walker_load);
+      if (d.found) return d;
+    }
     for (int64_t n = 0;; ++n) {
       const bool has_m = next_model < model.fragments.size() && model.fragments[next_model].tri == t;
       const bool has_r = next_rtl < rtl.fragments.size() && rtl.fragments[next_rtl].tri == t;

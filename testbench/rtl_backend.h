@@ -26,6 +26,9 @@ struct RtlResult {
   std::vector<TriangleRecord> triangles;
   std::vector<uint32_t> depth, color;
   FrameStats stats;
+  // Per triangle, the setup unit's output record as the walker took it (drawn triangles only;
+  // front_facing, area2 and the top-left flags are not part of the record and stay default).
+  std::vector<SetupResult> setups;
   bool finished = true;  // false: the RTL did not finish within max_cycles
   std::string note;      // why it did not finish
 };

@@ -35,9 +35,59 @@ inline int64_t default_cycle_bound(const Profile& p, const std::vector<SnappedTr
   return bound;
 }
 
-template <class V>
-RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tris, const RtlOptions& options,
-                        int coord_bits, int setup_cycles) {
+// Bits [lo, lo + width) of a verilated signal, sign-extended when `is_signed`.
+inline int64_t field_bits(uint64_t value, int lo, int width, bool is_signed) {
+  uint64_t v = (value >> lo) & (width >= 64 ? ~uint64_t(0) : (uint64_t(1) << width) - 1);
+  if (is_signed && width < 64 && (v >> (width - 1)) & 1) v |= ~uint64_t(0) << width;
+  return int64_t(v);
+}
+template <std::size_t N>
+int64_t field_bits(const VlWide<N>& value, int lo, int width, bool is_signed) {
+  uint64_t v = 0;
+  for (int i = 0; i < width; ++i) {
+    const int bit = lo + i;
+    v |= uint64_t((value[bit / 32] >> (bit % 32)) & 1u) << i;
+  }
+  return field_bits(v, 0, width, is_signed);
+}
+
+// The setup record on the setup -> walker wires (rastersim_top rec_*, public_flat_rd).
+template <class V, class Top>
+SetupResult read_setup_record(V& top, bool gouraud) {
+  const auto& t = *top.rootp->rastersim_top;
+  SetupResult r;
+  r.status = SetupStatus::Drawn;
+  r.x0 = int(t.rec_x0), r.x1 = int(t.rec_x1), r.y0 = int(t.rec_y0), r.y1 = int(t.rec_y1);
+  const int eb = Top::EDGE_BITS, sxb = Top::EDGE_STEP_X_BITS, syb = Top::EDGE_STEP_Y_BITS, rb = Top::SPAN_REM_BITS;
+  for (int k = 0; k < 3; ++k) {
+    EdgeSetup& e = r.edge[k];
+    e.start = field_bits(t.rec_edge_start, k * eb, eb, true);
+    e.step_x = field_bits(t.rec_edge_step_x, k * sxb, sxb, true);
+    e.step_y = field_bits(t.rec_edge_step_y, k * syb, syb, true);
+    e.span_quot = field_bits(t.rec_span_quot, k * eb, eb, true);
+    e.span_rem = field_bits(t.rec_span_rem, k * rb, rb, false);
+    e.span_step_quot = field_bits(t.rec_span_step_quot, k * syb, syb, true);
+    e.span_step_rem = field_bits(t.rec_span_step_rem, k * rb, rb, false);
+  }
+  const int zrb = Top::Z_REG_BITS, crb = Top::COLOR_REG_BITS;
+  r.depth.start = field_bits(t.rec_depth_start, 0, zrb, true);
+  r.depth.step_x = field_bits(t.rec_depth_step_x, 0, zrb, true);
+  r.depth.step_y = field_bits(t.rec_depth_step_y, 0, zrb, true);
+  if (gouraud) {
+    for (int c = 0; c < 3; ++c) {
+      r.color[c].start = field_bits(t.rec_color_start, c * crb, crb, true);
+      r.color[c].step_x = field_bits(t.rec_color_step_x, c * crb, crb, true);
+      r.color[c].step_y = field_bits(t.rec_color_step_y, c * crb, crb, true);
+    }
+  }
+  const uint32_t flat = t.rec_flat_rgb;
+  r.flat_color = Rgb{uint8_t(flat >> 16), uint8_t(flat >> 8), uint8_t(flat)};
+  return r;
+}
+
+template <class V, class Top>
+RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tris, const RtlOptions& options) {
+  const int coord_bits = Top::COORD_BITS, setup_cycles = Top::SETUP_CYCLES;
   auto context = std::make_unique<VerilatedContext>();
   context->randReset(2);
   context->randSeed(int(options.seed % 2147483647u) + 1);
@@ -79,6 +129,7 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
 
   RtlResult out;
   out.triangles.reserve(tris.size());
+  out.setups.resize(tris.size());
   FrameStats& stats = out.stats;
   const int64_t bound = options.max_cycles > 0 ? options.max_cycles : default_cycle_bound(p, tris, setup_cycles);
   size_t next = 0;             // next triangle to submit
@@ -134,6 +185,7 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
     }
     if (top->trace_walker_load && in_setup >= 0) {
       out.triangles[size_t(in_setup)].walker_load = cycle;
+      out.setups[size_t(in_setup)] = read_setup_record<V, Top>(*top, p.shading == Shading::Gouraud);
       in_walker = in_setup;
     }
     if (top->trace_frag_valid && top->trace_frag_ready) {

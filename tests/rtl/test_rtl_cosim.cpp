@@ -178,12 +178,36 @@ TEST(RtlCompare, ReportsTheFirstDivergenceAsASentence) {
   EXPECT_EQ(d.actual, std::to_string(f.z));
   EXPECT_NE(d.sentence.find("triangle " + std::to_string(f.tri)), std::string::npos) << d.sentence;
 
+  // A setup field: reported by the setup unit in the cycle the walker took the record.
+  size_t drawn = 0;
+  while (drawn < r.rtl.triangles.size() && r.rtl.triangles[drawn].status != SetupStatus::Drawn) ++drawn;
+  ASSERT_LT(drawn, r.rtl.triangles.size());
+  RtlResult setup = r.rtl;
+  setup.setups[drawn].depth.step_x += 1;
+  const Divergence s = compare(r.model, setup);
+  EXPECT_EQ(s.unit, "triangle_setup");
+  EXPECT_EQ(s.field, "record depth.step_x");
+  EXPECT_EQ(s.triangle, int64_t(drawn));
+  EXPECT_EQ(s.cycle, r.model.triangles[drawn].walker_load);
+
   RtlResult late = r.rtl;
   late.stats.cycles += 1;
   EXPECT_EQ(compare(r.model, late).field, "frame cycles");
   RtlResult memory = r.rtl;
   memory.depth[7] ^= 4;
   EXPECT_EQ(compare(r.model, memory).field, "final depth memory word 7");
+}
+
+TEST(RtlWaveform, WritesAnFstFile) {
+  Profile p = small_profile();
+  RtlOptions options;
+  options.fst_path = replay_prefix("waveform") + ".fst";
+  std::filesystem::remove(options.fst_path);
+  const CosimCase c = random_case(p, 4, 3);
+  const RtlResult traced = run_rtl(p, c.triangles, options);
+  EXPECT_GT(std::filesystem::file_size(options.fst_path), 1000u);
+  // Tracing does not change what the RTL does.
+  EXPECT_FALSE(compare(run_model(p, c.triangles), traced).found);
 }
 
 TEST(RtlReplay, WritesATriAndAProfileThatSnapBack) {
