@@ -151,6 +151,37 @@ TEST(CoverageDirected, TopLeftRuleByHand) {
   }
 }
 
+// PRODUCT.md: front faces are counter-clockwise as the viewer sees the screen (y down), unless
+// front_face says cw; cull removes back or front faces, which then produce nothing.
+TEST(CoverageDirected, CullingFollowsTheScreenWinding) {
+  SnappedTriangle clockwise;  // (1, 1) -> (9, 1) -> (1, 9) in pixels: clockwise on a y-down screen
+  clockwise.v[0].x = 16, clockwise.v[0].y = 16, clockwise.v[1].x = 144, clockwise.v[1].y = 16;
+  clockwise.v[2].x = 16, clockwise.v[2].y = 144;
+  const SnappedTriangle counter_clockwise = test::reversed(clockwise);
+  for (FrontFace front : {FrontFace::CCW, FrontFace::CW})
+    for (CullMode cull : {CullMode::None, CullMode::Back, CullMode::Front}) {
+      Profile p = test::make_profile(16, 16, 4, Traversal::Span);
+      p.front_face = front;
+      p.cull = cull;
+      Pipeline pipe(p);
+      FragmentLog log;
+      pipe.set_fragment_sink(&log);
+      for (const bool is_clockwise : {true, false}) {
+        const SnappedTriangle& t = is_clockwise ? clockwise : counter_clockwise;
+        const bool is_front = is_clockwise == (front == FrontFace::CW);
+        const bool culled = (cull == CullMode::Back && !is_front) || (cull == CullMode::Front && is_front);
+        log.fragments.clear();
+        pipe.submit(t);
+        SCOPED_TRACE(::testing::Message() << "front_face " << to_string(front) << " cull " << to_string(cull)
+                                          << (is_clockwise ? " clockwise" : " counter-clockwise"));
+        EXPECT_EQ(pipe.last_setup().front_facing, is_front);
+        EXPECT_EQ(to_string(pipe.last_setup().status), std::string(culled ? "culled" : "drawn"));
+        EXPECT_EQ(log.fragments.size(), culled ? 0u : reference::covered_pixels(t, p).size());
+      }
+      EXPECT_EQ(pipe.stats().triangles_culled, cull == CullMode::None ? 0 : 1);
+    }
+}
+
 // A fragment recorder for big screens: checks the walker order of every fragment and keeps only
 // the fragments of selected rows.
 struct SampledRowsLog : FragmentSink {

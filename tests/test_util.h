@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <ostream>
 #include <random>
 #include <sstream>
 #include <string>
@@ -13,6 +14,13 @@
 
 #include "model/pipeline.h"
 #include "reference.h"
+
+namespace rastersim {
+// Readable test parameters in gtest and ctest output (found by argument-dependent lookup).
+inline void PrintTo(Traversal v, std::ostream* out) { *out << to_string(v); }
+inline void PrintTo(Shading v, std::ostream* out) { *out << to_string(v); }
+inline void PrintTo(DepthFunc v, std::ostream* out) { *out << to_string(v); }
+}  // namespace rastersim
 
 namespace rastersim::test {
 
