@@ -1,6 +1,11 @@
 #include "backend.h"
 
+#include <stdexcept>
+
 #include "model/input_error.h"
+#ifdef RASTERSIM_HAVE_RTL
+#include "testbench/rtl_backend.h"
+#endif
 
 namespace rastersim {
 
@@ -11,14 +16,39 @@ const std::vector<std::string>& backend_names() {
 
 Backend select_backend(const std::string& name) {
   if (name == "model") return Backend::Model;
-  // BACKEND DISPATCH: rtl, cosim and systemc are added here when their libraries are linked in.
+#ifdef RASTERSIM_HAVE_RTL
+  if (name == "rtl") return Backend::Rtl;
+  if (name == "cosim") return Backend::Cosim;
+#endif
   for (const std::string& known : backend_names())
     if (name == known) throw InputError("backend " + name + " is not built in this binary");
   throw InputError("unknown backend '" + name + "'");
 }
 
+void check_backend_profile(Backend backend, const Profile& profile) {
+  if (backend == Backend::Model) return;
+#ifdef RASTERSIM_HAVE_RTL
+  const std::string problem = rtl::configuration_error(profile);
+  if (!problem.empty()) throw InputError(problem);
+#else
+  (void)profile;
+#endif
+}
+
+namespace {
+
+#ifdef RASTERSIM_HAVE_RTL
+RenderResult from_rtl(const Profile& profile, const rtl::RtlResult& r, FragmentSink* sink) {
+  if (sink)
+    for (const Fragment& f : r.fragments) sink->on_fragment(f);
+  return RenderResult{r.stats, FrameBuffers{profile.width, profile.height, r.depth, r.color}, false, ""};
+}
+#endif
+
+}  // namespace
+
 RenderResult render_triangles(Backend backend, const Profile& profile, const std::vector<SnappedTriangle>& triangles,
-                              FragmentSink* sink, const ProgressCallback& progress) {
+                              FragmentSink* sink, const ProgressCallback& progress, const BackendOptions& options) {
   switch (backend) {
     case Backend::Model: {
       Pipeline pipeline(profile);
@@ -27,9 +57,36 @@ RenderResult render_triangles(Backend backend, const Profile& profile, const std
         pipeline.submit(triangles[i]);
         if (progress) progress(i + 1);
       }
-      return RenderResult{pipeline.stats(), pipeline.zbuffer()};
+      const ZBuffer& z = pipeline.zbuffer();
+      return RenderResult{pipeline.stats(), FrameBuffers{z.width(), z.height(), z.depth(), z.color()}, false, ""};
     }
+#ifdef RASTERSIM_HAVE_RTL
+    case Backend::Rtl: {
+      rtl::RtlOptions rtl_options;
+      rtl_options.seed = options.seed;
+      rtl_options.fst_path = options.fst_path;
+      const rtl::RtlResult r = rtl::run_rtl(profile, triangles, rtl_options);
+      if (!r.finished) throw std::runtime_error("the RTL did not finish: " + r.note);
+      if (progress) progress(triangles.size());
+      return from_rtl(profile, r, sink);
+    }
+    case Backend::Cosim: {
+      rtl::RtlOptions rtl_options;
+      rtl_options.seed = options.seed;
+      rtl_options.fst_path = options.fst_path;
+      const rtl::CosimReport report = rtl::cosim(profile, triangles, rtl_options, options.replay_prefix);
+      if (progress) progress(triangles.size());
+      RenderResult result = from_rtl(profile, report.model, sink);
+      result.check_failed = !report.passed;
+      result.report = report.passed ? "" : report.message();
+      return result;
+    }
+#else
+    default:
+      break;
+#endif
   }
+  (void)options;
   throw std::logic_error("unhandled backend");
 }
 

@@ -1,5 +1,5 @@
-// The one place where `--backend` is dispatched. This binary runs the C++ model; the RTL
-// (Verilator) and co-simulation backends are wired here when they are built.
+// The one place where `--backend` is dispatched: the C++ model, the verilated RTL, or both in
+// lockstep (cosim), when the RTL library is built in (RASTERSIM_HAVE_RTL).
 #pragma once
 
 #include <cstdint>
@@ -8,10 +8,11 @@
 #include <vector>
 
 #include "model/pipeline.h"
+#include "outputs.h"
 
 namespace rastersim {
 
-enum class Backend { Model };
+enum class Backend { Model, Rtl, Cosim };
 
 // Every name --backend accepts (known backends, built or not).
 const std::vector<std::string>& backend_names();
@@ -19,9 +20,20 @@ const std::vector<std::string>& backend_names();
 // Throws InputError "backend X is not built in this binary" for a known backend this binary lacks.
 Backend select_backend(const std::string& name);
 
+// Throws InputError (exit 2) when the backend cannot run this profile, saying how to build it.
+void check_backend_profile(Backend backend, const Profile& profile);
+
+struct BackendOptions {
+  uint64_t seed = 1;         // RTL random power-on state
+  std::string fst_path;      // RTL waveform, when not empty
+  std::string replay_prefix; // cosim: where a divergence's replay files go
+};
+
 struct RenderResult {
   FrameStats stats;
-  ZBuffer buffers;  // final depth and colour
+  FrameBuffers buffers;  // final depth and colour
+  bool check_failed = false;  // cosim: model and RTL diverged (exit 1)
+  std::string report;         // cosim: the first divergence and its replay command
 };
 
 // Called with the number of triangles submitted so far.
@@ -30,6 +42,6 @@ using ProgressCallback = std::function<void(size_t done)>;
 // Renders the triangles in order (triangle index = position) through the backend. `sink` (may be
 // null) receives every fragment in emission order.
 RenderResult render_triangles(Backend backend, const Profile& profile, const std::vector<SnappedTriangle>& triangles,
-                              FragmentSink* sink, const ProgressCallback& progress);
+                              FragmentSink* sink, const ProgressCallback& progress, const BackendOptions& options = {});
 
 }  // namespace rastersim

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "bench_command.h"
+#include "cosim_command.h"
 #include "model/input_error.h"
 #include "render_command.h"
 
@@ -20,14 +21,17 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   RenderOptions render_options;
   BenchOptions bench_options;
+  CosimOptions cosim_options;
   CLI::App* render = add_render_command(app, render_options);
   CLI::App* bench = add_bench_command(app, bench_options);
   CLI::App* scenes = add_scenes_command(app);
+  CLI::App* cosim = add_cosim_command(app, cosim_options);
 
   // CLI11 would report an unknown subcommand as a missing one; name it instead.
-  const bool known_subcommand = argc > 1 && (render->check_name(argv[1]) || bench->check_name(argv[1]) || scenes->check_name(argv[1]));
+  bool known_subcommand = false;
+  for (const CLI::App* sub : {render, bench, scenes, cosim}) known_subcommand |= argc > 1 && sub->check_name(argv[1]);
   if (argc > 1 && argv[1][0] != '-' && !known_subcommand) {
-    std::cerr << "rastersim: unknown subcommand '" << argv[1] << "' (render, bench, scenes; see --help)\n";
+    std::cerr << "rastersim: unknown subcommand '" << argv[1] << "' (render, cosim, bench, scenes; see --help)\n";
     return kExitBadInput;
   }
   try {
@@ -40,6 +44,7 @@ int main(int argc, char** argv) {
     if (render->parsed()) return run_render(render_options);
     if (bench->parsed()) return run_bench(bench_options);
     if (scenes->parsed()) return run_scenes();
+    if (cosim->parsed()) return run_cosim(cosim_options);
   } catch (const InputError& e) {
     std::cerr << "rastersim: " << e.what() << "\n";
     return kExitBadInput;

@@ -101,15 +101,15 @@ void check_image_format(const std::string& path, const std::string& what) {
   }
 }
 
-void write_color_image(const std::string& final_path, const std::string& temp_path, const ZBuffer& zbuffer) {
-  const std::vector<uint32_t>& words = zbuffer.color();
+void write_color_image(const std::string& final_path, const std::string& temp_path, const FrameBuffers& buffers) {
+  const std::vector<uint32_t>& words = buffers.color;
   std::vector<uint8_t> rgb(words.size() * 3);
   for (size_t i = 0; i < words.size(); ++i) {
     rgb[3 * i + 0] = uint8_t(words[i] >> 16);
     rgb[3 * i + 1] = uint8_t(words[i] >> 8);
     rgb[3 * i + 2] = uint8_t(words[i]);
   }
-  write_image(final_path, temp_path, zbuffer.width(), zbuffer.height(), 3, OIIO::TypeDesc::UINT8, rgb);
+  write_image(final_path, temp_path, buffers.width, buffers.height, 3, OIIO::TypeDesc::UINT8, rgb);
 }
 
 bool depth_image_is_float(const std::string& path) {
@@ -117,18 +117,18 @@ bool depth_image_is_float(const std::string& path) {
   return ext == ".exr" || ext == ".tif" || ext == ".tiff";
 }
 
-void write_depth_image(const std::string& final_path, const std::string& temp_path, const ZBuffer& zbuffer,
+void write_depth_image(const std::string& final_path, const std::string& temp_path, const FrameBuffers& buffers,
                        int z_bits) {
-  const std::vector<uint32_t>& depth = zbuffer.depth();
+  const std::vector<uint32_t>& depth = buffers.depth;
   const uint64_t depth_max = (uint64_t(1) << z_bits) - 1;
   if (depth_image_is_float(final_path)) {
     std::vector<float> values(depth.size());
     for (size_t i = 0; i < depth.size(); ++i) values[i] = float(double(depth[i]) / double(depth_max));
-    write_image(final_path, temp_path, zbuffer.width(), zbuffer.height(), 1, OIIO::TypeDesc::FLOAT, values);
+    write_image(final_path, temp_path, buffers.width, buffers.height, 1, OIIO::TypeDesc::FLOAT, values);
   } else {
     std::vector<uint16_t> values(depth.size());
     for (size_t i = 0; i < depth.size(); ++i) values[i] = uint16_t((depth[i] * uint64_t(65535) + depth_max / 2) / depth_max);
-    write_image(final_path, temp_path, zbuffer.width(), zbuffer.height(), 1, OIIO::TypeDesc::UINT16, values);
+    write_image(final_path, temp_path, buffers.width, buffers.height, 1, OIIO::TypeDesc::UINT16, values);
   }
 }
 

@@ -15,6 +15,16 @@
 
 namespace rastersim {
 
+// The final memories of a frame, from any backend: row-major words, colour 0x00RRGGBB.
+struct FrameBuffers {
+  int width = 0, height = 0;
+  std::vector<uint32_t> depth, color;
+};
+
+}  // namespace rastersim
+
+namespace rastersim {
+
 class OutputFiles {
  public:
   OutputFiles() = default;
@@ -42,11 +52,11 @@ void check_image_format(const std::string& path, const std::string& what);
 
 // Colour buffer (0x00RRGGBB words, row 0 at the top) as 8-bit RGB in the format the final path's
 // extension names, written to temp_path.
-void write_color_image(const std::string& final_path, const std::string& temp_path, const ZBuffer& zbuffer);
+void write_color_image(const std::string& final_path, const std::string& temp_path, const FrameBuffers& buffers);
 
 // Depth buffer as one channel: float32 depth / (2^N - 1) for exr, tif, tiff; otherwise (png,
 // ...) uint16 round(depth * 65535 / (2^N - 1)), converted by OpenImageIO where the format needs it.
-void write_depth_image(const std::string& final_path, const std::string& temp_path, const ZBuffer& zbuffer,
+void write_depth_image(const std::string& final_path, const std::string& temp_path, const FrameBuffers& buffers,
                        int z_bits);
 bool depth_image_is_float(const std::string& path);
 

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -67,7 +68,13 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
       ->type_name("FILE");
   cmd->add_option("--stats", o.stats_out, "stats JSON: counters, per-unit busy/stall, resolved profile")
       ->type_name("FILE");
-  cmd->add_option("--backend", o.backend, "model (rtl, cosim, systemc when built in)")
+  cmd->add_option("--seed", o.seed, "rtl, cosim: seed of the random power-on state of registers and memories")
+      ->type_name("S");
+  cmd->add_option("--fst", o.fst_out, "rtl, cosim: write the RTL waveform (FST)")->type_name("FILE");
+  cmd->add_option("--replay-dir", o.replay_dir, "cosim: folder for the replay files of a divergence")
+      ->type_name("DIR");
+  cmd->add_option("--backend", o.backend,
+                  "model (the C++ reference), rtl (the verilated RTL), cosim (both in lockstep, compared)")
       ->check(CLI::IsMember(backend_names()))
       ->type_name("NAME");
   cmd->add_option("--dump-tri", o.dump_tri_out,
@@ -106,6 +113,7 @@ int run_render(const RenderOptions& o) {
   // and nothing is written until everything has been computed.
   const Profile profile = resolve_profile(o.profile);
   const Backend backend = select_backend(o.backend);
+  check_backend_profile(backend, profile);
 
   OutputFiles outputs;
   std::string color_temp, depth_temp, fragments_temp, stats_temp;
@@ -130,9 +138,18 @@ int run_render(const RenderOptions& o) {
   std::unique_ptr<FragmentCsvWriter> csv;
   if (!fragments_temp.empty()) csv = std::make_unique<FragmentCsvWriter>(fragments_temp, o.fragments_out);
   ProgressLine progress(snapped.size(), isatty(STDERR_FILENO) != 0);
-  const RenderResult result =
-      render_triangles(backend, profile, snapped, csv.get(), [&](size_t done) { progress.update(done); });
+  BackendOptions backend_options;
+  backend_options.seed = o.seed;
+  backend_options.fst_path = o.fst_out;
+  backend_options.replay_prefix = (std::filesystem::path(o.replay_dir) / "rastersim-replay").string();
+  const RenderResult result = render_triangles(
+      backend, profile, snapped, csv.get(), [&](size_t done) { progress.update(done); }, backend_options);
   progress.finish();
+  if (result.check_failed) {
+    // A divergence writes no output: the temporaries are removed when `outputs` goes out of scope.
+    std::cout << "cosim: model and RTL diverge\n" << result.report << "\n";
+    return 1;
+  }
 
   if (csv) csv->close();
   if (!color_temp.empty()) write_color_image(o.color_out, color_temp, result.buffers);

@@ -1,6 +1,7 @@
 // `rastersim render` and `rastersim scenes`.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,9 @@ struct RenderOptions {
   std::vector<double> fov, near, far;   // 1 value each when given
   bool ortho = false;
   std::string backend = "model";
+  uint64_t seed = 1;          // rtl/cosim: random power-on state
+  std::string fst_out;        // rtl/cosim: waveform
+  std::string replay_dir = "."; // cosim: where a divergence's replay files go
   ProfileOptions profile;
 };
 

@@ -237,6 +237,45 @@ TEST(CliRender, DumpedTrianglesOfA3dInputRenderIdentically) {
   EXPECT_EQ(read_text(dir.path("a.csv")), read_text(dir.path("b.csv")));
 }
 
+#ifdef RASTERSIM_HAVE_RTL
+// The RTL backend gives byte-identical images, fragment trace and counters to the model (the
+// comparison is the product's claim; the co-simulation suite checks it transaction by transaction).
+TEST(CliRtl, RtlBackendEqualsModelByteForByte) {
+  ScratchDir dir;
+  const std::vector<std::string> common = {"--scene", "fan", "--width", "64", "--height", "48", "--traversal", "bbox"};
+  for (const std::string backend : {"model", "rtl", "cosim"}) {
+    std::vector<std::string> args = {"render", "--backend", backend, "-o", backend + ".png", "--depth-out",
+                                     backend + ".exr", "--fragments", backend + ".csv", "--stats", backend + ".json"};
+    args.insert(args.end(), common.begin(), common.end());
+    const RunResult r = run_rastersim(dir, args);
+    ASSERT_EQ(r.exit_code, 0) << backend << ": " << r.err;
+  }
+  for (const std::string backend : {"rtl", "cosim"}) {
+    for (const std::string ext : {".png", ".csv", ".json"})
+      EXPECT_EQ(read_text(dir.path("model" + ext)), read_text(dir.path(backend + ext))) << backend << ext;
+    // EXR headers carry a capture date: compare the depth pixels.
+    EXPECT_EQ(read_image(dir.path("model.exr")).pixels, read_image(dir.path(backend + ".exr")).pixels) << backend;
+  }
+  EXPECT_GT(read_json(dir.path("rtl.json"))["fragments"].get<int64_t>(), 0);
+}
+
+TEST(CliRtl, CosimEndsWithPassedLine) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"cosim", "--count", "3", "--width", "64", "--height", "48", "--seed", "7"});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
+  EXPECT_TRUE(contains(last, " passed, 0 failed")) << r.out;
+  EXPECT_FALSE(contains(last, "0 passed")) << r.out;
+}
+
+TEST(CliRtl, CosimRefusesAProfileThatIsNotBuilt) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"cosim", "--count", "1", "--width", "100"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(contains(r.err, "RASTERSIM_RTL_CONFIGS")) << r.err;
+}
+#endif
+
 TEST(CliRender, ScenesAreListed) {
   ScratchDir dir;
   const RunResult r = run_rastersim(dir, {"scenes"});
@@ -340,7 +379,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"EyeNeedsThreeValues", nullptr, {"--eye", "1,2"}, "--eye"},
         BadRun{"UnknownScene", nullptr, {"--scene", "teapot"}, "unknown scene 'teapot'"},
         BadRun{"InputAndScene", nullptr, {"a.tri", "--scene", "fan"}, "not both"},
+#ifdef RASTERSIM_HAVE_RTL
+        BadRun{"RtlProfileNotBuilt", nullptr, {"--backend", "rtl", "--width", "100"}, "no RTL is built for width 100"},
+#else
         BadRun{"RtlBackendNotBuilt", nullptr, {"--backend", "rtl"}, "backend rtl is not built in this binary"},
+#endif
+        BadRun{"SystemcBackendNotBuilt", nullptr, {"--backend", "systemc"}, "backend systemc is not built in this binary"},
         BadRun{"UnknownBackend", nullptr, {"--backend", "gpu"}, "--backend"},
         BadRun{"OutputFolderMissing", nullptr, {"--stats", "no/such/folder/s2.json"}, "folder 'no/such/folder' does not exist"},
         BadRun{"ImageFormatUnknown", nullptr, {"-o", "picture.nosuchformat"}, "no image format"}),
