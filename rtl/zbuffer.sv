@@ -5,8 +5,10 @@
 // cfg_depth_write) and colour (on pass) are written at the end of c+L.
 // Read-after-write hazard: a fragment is accepted in c only if no fragment to the same address
 // was accepted in c-L .. c-1 (frag_ready low meanwhile), so every read sees all earlier writes.
-// After reset the unit clears both memories, one word per cycle (depth cfg_depth_clear, colour 0),
-// then raises clear_done: the frame starts (cycle 0) in the first cycle with clear_done high.
+// Fast clear: each memory word has a "written since the clear" bit, 64 bits per bitmap row; after
+// reset the unit zeroes one row of both bitmaps per cycle (ceil(W H / 64) cycles), then raises
+// clear_done: the frame starts (cycle 0) in the first cycle with clear_done high. A word whose bit
+// is 0 reads as cfg_depth_clear (depth) or 0 (colour); writes set the bit (per-bit write enable).
 module zbuffer #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
@@ -41,12 +43,35 @@ module zbuffer #(
   localparam integer XB = rs_ubits32(WIDTH - 1);
   localparam integer AB = rs_ubits32(WIDTH * HEIGHT - 1);
   localparam integer WORDS = WIDTH * HEIGHT;
-  localparam integer LAST_WORD = WORDS - 1;
-  localparam [AB-1:0] LAST_ADDR = LAST_WORD[AB-1:0];
   localparam [AB-1:0] WIDTH_A = WIDTH[AB-1:0];
 
   reg [Z_BITS-1:0] depth_mem [0:WORDS-1];
   reg [23:0]       color_mem [0:WORDS-1];
+
+  localparam integer ROWS = (WORDS + 63) / 64;
+  localparam integer RAB = rs_ubits32(ROWS - 1);  // bitmap row address
+  localparam integer LAST_ROW = ROWS - 1;
+  localparam [RAB-1:0] LAST_ROW_A = LAST_ROW[RAB-1:0];
+  reg [63:0] depth_written [0:ROWS-1];
+  reg [63:0] color_written [0:ROWS-1];
+
+  // Bitmap row and bit of a word address (address / 64, address % 64).
+  /* verilator lint_off UNUSEDSIGNAL */
+  function automatic [RAB-1:0] row_of(input [AB-1:0] address);
+    reg [AB+5:0] wide;
+    begin
+      wide = {6'd0, address};
+      row_of = wide[RAB+5:6];
+    end
+  endfunction
+  function automatic [5:0] bit_of(input [AB-1:0] address);
+    reg [AB+5:0] wide;
+    begin
+      wide = {6'd0, address};
+      bit_of = wide[5:0];
+    end
+  endfunction
+  /* verilator lint_on UNUSEDSIGNAL */
 
   // In-flight fragments: a ring of 2^RB >= MAX_MEMORY_LATENCY entries, one written every cycle;
   // the entry of age k (1 .. L) holds the fragment accepted k cycles ago (valid: it was accepted).
@@ -58,9 +83,12 @@ module zbuffer #(
   reg [AB-1:0]     ring_addr [0:RING-1];
   reg [Z_BITS-1:0] ring_z [0:RING-1];
   reg [23:0]       ring_rgb [0:RING-1];
-  // The memory port's read data: read_q is the synchronous read of the fragment accepted in the
-  // previous cycle; ring_data keeps older reads until their data cycle (the read latency L).
+  // The memory port's read data: read_q (and its written bit) is the synchronous read of the
+  // fragment accepted in the previous cycle; ring_data keeps older reads until their data cycle
+  // (the read latency L).
   reg [Z_BITS-1:0] read_q;
+  reg              read_written_q;
+  wire [Z_BITS-1:0] read_value = read_written_q ? read_q : cfg_depth_clear;
   reg [Z_BITS-1:0] ring_data [0:RING-1];
 
   // Ages are taken modulo the ring size: the high bits of wide_age are not needed.
@@ -74,7 +102,7 @@ module zbuffer #(
   endfunction
   /* verilator lint_on UNUSEDSIGNAL */
 
-  reg [AB-1:0] clear_addr;
+  reg [RAB-1:0] clear_row;
 
   wire [AB-1:0] frag_addr = frag_y * WIDTH_A + {{(AB-XB){1'b0}}, frag_x};
 
@@ -107,7 +135,7 @@ module zbuffer #(
   wire [Z_BITS-1:0] done_z = ring_z[done_slot];
   wire [23:0]       done_rgb = ring_rgb[done_slot];
   // Read data of the fragment accepted L cycles ago: read_q when L = 1, else kept in the ring.
-  wire [Z_BITS-1:0] stored = cfg_memory_latency == 1 ? read_q : ring_data[done_slot];
+  wire [Z_BITS-1:0] stored = cfg_memory_latency == 1 ? read_value : ring_data[done_slot];
   reg pass;
   always @(*) begin
     case (cfg_depth_func)
@@ -128,26 +156,32 @@ module zbuffer #(
   // read-back port.
   always @(posedge clk) begin
     if (!clear_done) begin
-      depth_mem[clear_addr] <= cfg_depth_clear;
-      color_mem[clear_addr] <= 24'd0;
+      depth_written[clear_row] <= 64'd0;
+      color_written[clear_row] <= 64'd0;
     end else if (done_valid && pass) begin
-      if (cfg_depth_write) depth_mem[done_addr] <= done_z;
+      if (cfg_depth_write) begin
+        depth_mem[done_addr] <= done_z;
+        depth_written[row_of(done_addr)][bit_of(done_addr)] <= 1'b1;
+      end
       color_mem[done_addr] <= done_rgb;
+      color_written[row_of(done_addr)][bit_of(done_addr)] <= 1'b1;
     end
   end
   always @(posedge clk) begin
     read_q <= depth_mem[frag_addr];
-    readback_depth <= depth_mem[readback_addr];
-    readback_rgb <= color_mem[readback_addr];
+    read_written_q <= depth_written[row_of(frag_addr)][bit_of(frag_addr)];
+    readback_depth <= depth_written[row_of(readback_addr)][bit_of(readback_addr)] ? depth_mem[readback_addr]
+                                                                                  : cfg_depth_clear;
+    readback_rgb <= color_written[row_of(readback_addr)][bit_of(readback_addr)] ? color_mem[readback_addr] : 24'd0;
   end
 
   always @(posedge clk) begin
     if (rst) begin
       clear_done <= 1'b0;
-      clear_addr <= {AB{1'b0}};
+      clear_row <= {RAB{1'b0}};
     end else if (!clear_done) begin
-      clear_addr <= clear_addr + 1'b1;
-      if (clear_addr == LAST_ADDR) clear_done <= 1'b1;
+      clear_row <= clear_row + 1'b1;
+      if (clear_row == LAST_ROW_A) clear_done <= 1'b1;
     end
   end
 
@@ -166,6 +200,6 @@ module zbuffer #(
     ring_addr[now_slot] <= frag_addr;
     ring_z[now_slot] <= frag_z;
     ring_rgb[now_slot] <= frag_rgb;
-    ring_data[previous_slot] <= read_q;
+    ring_data[previous_slot] <= read_value;
   end
 endmodule
