@@ -45,15 +45,17 @@ module zbuffer #(
   localparam integer WORDS = WIDTH * HEIGHT;
   localparam [AB-1:0] WIDTH_A = WIDTH[AB-1:0];
 
-  reg [Z_BITS-1:0] depth_mem [0:WORDS-1];
-  reg [23:0]       color_mem [0:WORDS-1];
+  // Readable from C++ (public_flat_rd): the co-simulation reads the final memories directly
+  // instead of W H cycles through the read-back port (which a test checks against them).
+  reg [Z_BITS-1:0] depth_mem [0:WORDS-1] /*verilator public_flat_rd*/;
+  reg [23:0]       color_mem [0:WORDS-1] /*verilator public_flat_rd*/;
 
   localparam integer ROWS = (WORDS + 63) / 64;
   localparam integer RAB = rs_ubits32(ROWS - 1);  // bitmap row address
   localparam integer LAST_ROW = ROWS - 1;
   localparam [RAB-1:0] LAST_ROW_A = LAST_ROW[RAB-1:0];
-  reg [63:0] depth_written [0:ROWS-1];
-  reg [63:0] color_written [0:ROWS-1];
+  reg [63:0] depth_written [0:ROWS-1] /*verilator public_flat_rd*/;
+  reg [63:0] color_written [0:ROWS-1] /*verilator public_flat_rd*/;
 
   // Bitmap row and bit of a word address (address / 64, address % 64).
   /* verilator lint_off UNUSEDSIGNAL */

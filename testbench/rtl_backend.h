@@ -17,6 +17,9 @@ struct RtlOptions {
   uint64_t seed = 1;       // random power-on state (registers and memories), printed on failure
   std::string fst_path;    // write a waveform when not empty
   int64_t max_cycles = 0;  // 0: a generous bound from the triangles' bounding boxes
+  // Read the final memories through the RTL's synchronous read-back port (W H cycles) instead of
+  // directly from the verilated memory arrays; both give the same words (tests/rtl checks it).
+  bool readback_through_port = false;
 };
 
 // Everything a backend produces for one frame. Fragment.pass and TriangleRecord fields as in the

@@ -238,16 +238,27 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
   stats.cycles = last_busy + 1;
   stats.z_adder = stats.walker;
 
-  // Read the final memories back through the synchronous read-back port.
+  // The final memories: a word not written since the clear reads as the clear value (depth) or 0.
   const size_t words = size_t(p.width) * size_t(p.height);
   out.depth.resize(words);
   out.color.resize(words);
   top->cmd_valid = 0;
-  for (size_t a = 0; a < words; ++a) {
-    top->readback_addr = uint32_t(a);
-    half_cycle(0), half_cycle(1);
-    out.depth[a] = uint32_t(top->readback_depth);
-    out.color[a] = uint32_t(top->readback_rgb);
+  if (options.readback_through_port) {
+    for (size_t a = 0; a < words; ++a) {
+      top->readback_addr = uint32_t(a);
+      half_cycle(0), half_cycle(1);
+      out.depth[a] = uint32_t(top->readback_depth);
+      out.color[a] = uint32_t(top->readback_rgb);
+    }
+  } else {
+    const auto& t = *top->rootp->rastersim_top;
+    const uint32_t clear = p.depth_clear_value();
+    for (size_t a = 0; a < words; ++a) {
+      const bool depth_written = (t.zbuf__DOT__depth_written[a / 64] >> (a % 64)) & 1;
+      const bool color_written = (t.zbuf__DOT__color_written[a / 64] >> (a % 64)) & 1;
+      out.depth[a] = depth_written ? uint32_t(t.zbuf__DOT__depth_mem[a]) : clear;
+      out.color[a] = color_written ? uint32_t(t.zbuf__DOT__color_mem[a]) : 0u;
+    }
   }
   if (fst) fst->close();
   top->final();

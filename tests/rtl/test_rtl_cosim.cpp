@@ -2,6 +2,7 @@
 // triangle record, the final memories and the frame counters must be equal (compare()).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <tuple>
 
@@ -208,6 +209,22 @@ TEST(RtlWaveform, WritesAnFstFile) {
   EXPECT_GT(std::filesystem::file_size(options.fst_path), 1000u);
   // Tracing does not change what the RTL does.
   EXPECT_FALSE(compare(run_model(p, c.triangles), traced).found);
+}
+
+TEST(RtlReadback, PortAndDirectReadGiveTheSameMemories) {
+  Profile p = small_profile();
+  p.depth_clear = 12345;
+  p.depth_func = DepthFunc::Always;
+  const CosimCase c = random_case(p, 6, 30);
+  RtlOptions port;
+  port.readback_through_port = true;
+  const RtlResult direct = run_rtl(p, c.triangles), through_port = run_rtl(p, c.triangles, port);
+  EXPECT_EQ(direct.depth, through_port.depth);
+  EXPECT_EQ(direct.color, through_port.color);
+  EXPECT_FALSE(compare(run_model(p, c.triangles), through_port).found);
+  // Some words written, some still cleared.
+  EXPECT_GT(std::count(direct.depth.begin(), direct.depth.end(), 12345u), 0);
+  EXPECT_LT(std::count(direct.depth.begin(), direct.depth.end(), 12345u), long(direct.depth.size()));
 }
 
 TEST(RtlReplay, WritesATriAndAProfileThatSnapBack) {
