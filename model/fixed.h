@@ -38,6 +38,38 @@ constexpr bool fits_signed(i128 v, int bits) {
 
 std::string to_string_i128(i128 v);
 
+// A register whose width and signedness are part of its type. `Bits` is the register's width in
+// the largest profile (widths.h asserts that it covers derive_widths there); a value enters only
+// through a check, so storing a value the register cannot hold throws instead of wrapping. The
+// profile's own, usually narrower, width is checked where the setup unit makes the value.
+// Reading converts to int64_t, so arithmetic on register values reads like arithmetic on integers.
+template <int Bits, bool Signed = true>
+class Reg {
+  static_assert(Bits >= 1 && Bits <= (Signed ? 64 : 63), "a Reg is held in an int64_t");
+
+ public:
+  static constexpr int bits = Bits;
+  static constexpr bool is_signed = Signed;
+  static constexpr int64_t min = Signed ? int64_t(uint64_t(-1) << (Bits - 1)) : 0;
+  static constexpr int64_t max = Signed ? int64_t((uint64_t(1) << (Bits - 1)) - 1) : int64_t((uint64_t(1) << Bits) - 1);
+
+  constexpr Reg() = default;
+  constexpr Reg(int64_t value) : value_(checked(value)) {}  // NOLINT: implicit, always checked
+  constexpr operator int64_t() const { return value_; }      // NOLINT
+  constexpr int64_t value() const { return value_; }
+  constexpr Reg& operator+=(int64_t v) { return *this = Reg(value_ + v); }
+  constexpr Reg& operator-=(int64_t v) { return *this = Reg(value_ - v); }
+
+ private:
+  static constexpr int64_t checked(int64_t value) {
+    if (value < min || value > max)
+      throw WidthOverflow("value " + std::to_string(value) + " does not fit the register's " +
+                          (Signed ? "s" : "u") + std::to_string(Bits));
+    return value;
+  }
+  int64_t value_ = 0;
+};
+
 // Throws WidthOverflow naming the register when v does not fit a signed register of `bits`.
 inline void check_signed(i128 v, int bits, const char* what) {
   if (!fits_signed(v, bits))

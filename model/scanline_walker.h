@@ -79,7 +79,8 @@ class ScanlineWalker {
     } edge[3];
     for (int k = 0; k < 3; ++k) {
       const EdgeSetup& e = s.edge[k];
-      edge[k] = {e.start, e.span_quot, e.span_rem, e.step_x < 0 ? -e.step_x : e.step_x,
+      const int64_t step_x = e.step_x;
+      edge[k] = {e.start, e.span_quot, e.span_rem, step_x < 0 ? -step_x : step_x,
                  e.step_x, e.step_y, e.span_step_quot, e.span_step_rem};
     }
     const int64_t last = s.x1 - s.x0;

@@ -95,14 +95,14 @@ SetupResult TriangleSetup::run(const SnappedTriangle& input) const {
     step_x[k] = e.step_x;
     step_y[k] = e.step_y;
     if (e.step_x != 0) {
-      const int64_t d = e.step_x < 0 ? -e.step_x : e.step_x;
+      const int64_t d = e.step_x < 0 ? -int64_t(e.step_x) : int64_t(e.step_x);
       const FloorDiv q0 = floor_div(e.start, d), q1 = floor_div(e.step_y, d);
       e.span_quot = int64_t(q0.quotient);
       e.span_rem = int64_t(q0.remainder);
       e.span_step_quot = int64_t(q1.quotient);
       e.span_step_rem = int64_t(q1.remainder);
     } else {
-      e.span_quot = e.span_rem = e.span_step_quot = e.span_step_rem = 0;
+      e.span_quot = 0, e.span_rem = 0, e.span_step_quot = 0, e.span_step_rem = 0;
     }
   }
 

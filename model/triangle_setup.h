@@ -12,6 +12,23 @@
 
 namespace rastersim {
 
+// The setup record's register types, sized for the largest profile (4096 x 4096, S = 8, N = 32,
+// z_guard_bits up to 24); a smaller profile's narrower widths are checked when the values are made.
+using AreaValue = Reg<45>;                 // twice the signed area, s.2S
+using EdgeValue = Reg<45>;                 // edge function value, s.2S
+using EdgeStep = Reg<31>;                  // edge step per pixel, s.2S
+using SpanQuotient = Reg<45>;              // floor(E / |edge_step_x|), s.0
+using SpanStepQuotient = Reg<31>;          // floor(edge_step_y / |edge_step_x|), s.0
+using SpanRemainder = Reg<30, false>;      // in [0, |edge_step_x|), u.2S
+using PlaneValue = Reg<57>;                // plane register, s(N+1).F or s9.F, wrapped
+constexpr Widths kLargestWidths = derive_widths(4096, 4096, 8, 32, 24);
+static_assert(kLargestWidths.area_bits <= AreaValue::bits);
+static_assert(kLargestWidths.edge_bits <= EdgeValue::bits && kLargestWidths.edge_bits <= SpanQuotient::bits);
+static_assert(kLargestWidths.edge_step_x_bits <= EdgeStep::bits && kLargestWidths.edge_step_y_bits <= EdgeStep::bits);
+static_assert(kLargestWidths.edge_step_y_bits <= SpanStepQuotient::bits);
+static_assert(kLargestWidths.span_rem_bits <= SpanRemainder::bits);
+static_assert(kLargestWidths.z_reg_bits <= PlaneValue::bits && kLargestWidths.color_reg_bits <= PlaneValue::bits);
+
 enum class SetupStatus : uint8_t {
   Drawn,       // goes on to the walker
   Degenerate,  // zero signed area
@@ -23,31 +40,31 @@ const char* to_string(SetupStatus status);
 // One edge function E(P) = dx (Py - Ya) - dy (Px - Xa) - bias, for the edge from vertex a to b
 // after the vertices are ordered so that the interior has E >= 0 (twice the area > 0).
 struct EdgeSetup {
-  int64_t start;        // E at the first candidate's centre (bbox x0, y0), s(edge_bits).2S, biased
-  int64_t step_x;       // E change per pixel in x = -dy * 2^S, s.2S
-  int64_t step_y;       // E change per pixel in y =  dx * 2^S, s.2S
+  EdgeValue start;      // E at the first candidate's centre (bbox x0, y0), s(edge_bits).2S, biased
+  EdgeStep step_x;      // E change per pixel in x = -dy * 2^S, s(edge_step_x_bits).2S
+  EdgeStep step_y;      // E change per pixel in y =  dx * 2^S, s(edge_step_y_bits).2S
   bool top_left;        // bias 0 (top or left edge) or 1
   // Span walker (exact row bounds without division per row): with d = |step_x| > 0,
   // start = span_quot * d + span_rem and step_y = span_step_quot * d + span_step_rem, remainders
   // in [0, d). Unused when step_x == 0.
-  int64_t span_quot;
-  int64_t span_rem;
-  int64_t span_step_quot;
-  int64_t span_step_rem;
+  SpanQuotient span_quot;
+  SpanRemainder span_rem;
+  SpanStepQuotient span_step_quot;
+  SpanRemainder span_step_rem;
 };
 
 // A plane P(x, y) = start + (x - x0) * step_x + (y - y0) * step_y held in a wrapping register of
 // `reg_bits` with F fraction bits: start = floor(2^F P(x0 + 1/2, y0 + 1/2)), step = floor(2^F dP).
 struct PlaneSetup {
-  int64_t start;
-  int64_t step_x;
-  int64_t step_y;
+  PlaneValue start;
+  PlaneValue step_x;
+  PlaneValue step_y;
 };
 
 struct SetupResult {
   SetupStatus status = SetupStatus::Degenerate;
   bool front_facing = false;
-  int64_t area2 = 0;             // twice the signed area as submitted (s.2S, > 0 = clockwise on screen)
+  AreaValue area2 = 0;           // twice the signed area as submitted (s.2S, > 0 = clockwise on screen)
   int x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // candidate pixel range, inclusive, on screen
   EdgeSetup edge[3]{};           // edge k runs from ordered vertex k to vertex k+1
   PlaneSetup depth{};            // s(N+1).F
