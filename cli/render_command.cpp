@@ -163,8 +163,11 @@ int run_render(const RenderOptions& o) {
   outputs.commit();
 
   const std::string source = o.input.empty() ? "scene " + (o.scene.empty() ? std::string("default") : o.scene) : o.input;
-  std::cout << "rendered " << source << " through the " << o.backend << ", " << profile.width << "x"
-            << profile.height << ", " << to_string(profile.traversal) << " traversal\n";
+  const std::string through = backend == Backend::Cosim ? "the model and the RTL in lockstep" : "the " + o.backend;
+  std::cout << "rendered " << source << " through " << through << ", " << profile.width << "x" << profile.height
+            << ", " << to_string(profile.traversal) << " traversal\n";
+  if (backend == Backend::Cosim)
+    std::cout << "cosim: every setup record, fragment, memory word and cycle count agrees\n";
   print_summary(std::cout, result.stats);
   for (const std::string* path : {&o.color_out, &o.depth_out, &o.fragments_out, &o.stats_out, &o.dump_tri_out})
     if (!path->empty()) std::cout << "wrote " << *path << "\n";
