@@ -184,7 +184,7 @@ TEST(RtlCompare, ReportsTheFirstDivergenceAsASentence) {
   while (drawn < r.rtl.triangles.size() && r.rtl.triangles[drawn].status != SetupStatus::Drawn) ++drawn;
   ASSERT_LT(drawn, r.rtl.triangles.size());
   RtlResult setup = r.rtl;
-  setup.setups[drawn].depth.step_x += 1;
+  setup.setups[drawn].depth.step_x = int64_t(setup.setups[drawn].depth.step_x) + 1;
   const Divergence s = compare(r.model, setup);
   EXPECT_EQ(s.unit, "triangle_setup");
   EXPECT_EQ(s.field, "record depth.step_x");
