@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "frontend/json_lines.h"
+#include "model/json_lines.h"
 #include "frontend/obj_loader.h"
 #include "frontend/surfaces.h"
 #include "frontend/transform.h"

@@ -1,8 +1,8 @@
-#include "frontend/json_lines.h"
+#include "model/json_lines.h"
 
 #include <cctype>
 
-namespace rastersim::frontend {
+namespace rastersim {
 namespace {
 
 // A recursive walk over valid JSON that records where each value starts.
@@ -119,4 +119,4 @@ std::string JsonLines::child(const std::string& pointer, const std::string& key)
   return pointer + "/" + escaped;
 }
 
-}  // namespace rastersim::frontend
+}  // namespace rastersim

@@ -5,7 +5,7 @@
 #include <map>
 #include <string>
 
-namespace rastersim::frontend {
+namespace rastersim {
 
 class JsonLines {
  public:
@@ -23,4 +23,4 @@ class JsonLines {
   std::map<std::string, int> lines_;
 };
 
-}  // namespace rastersim::frontend
+}  // namespace rastersim

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "input_error.h"
+#include "json_lines.h"
 
 namespace rastersim {
 namespace {
@@ -49,28 +50,6 @@ bool parse_bool(const std::string& text, bool& out) {
   if (text == "true" || text == "on" || text == "1") return out = true, true;
   if (text == "false" || text == "off" || text == "0") return out = false, true;
   return false;
-}
-
-// The line (1-based) where `key` appears as a key of the top-level object, or 0. Strings are
-// skipped as tokens, so a value that happens to spell the key is not taken for it.
-int line_of_key(const std::string& text, const std::string& key) {
-  int line = 1, depth = 0;
-  for (size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (c == '\n') ++line;
-    else if (c == '{' || c == '[') ++depth;
-    else if (c == '}' || c == ']') --depth;
-    else if (c == '"') {
-      const size_t begin = i + 1;
-      for (++i; i < text.size() && text[i] != '"'; ++i)
-        if (text[i] == '\\') ++i;
-      if (i >= text.size()) return 0;
-      size_t next = i + 1;
-      while (next < text.size() && std::isspace(static_cast<unsigned char>(text[next]))) ++next;
-      if (depth == 1 && next < text.size() && text[next] == ':' && text.compare(begin, i - begin, key) == 0) return line;
-    }
-  }
-  return 0;
 }
 
 }  // namespace
@@ -165,8 +144,9 @@ void load_profile_file(Profile& profile, const std::string& path) {
     throw InputError(path, line, std::string("malformed JSON: ") + e.what());
   }
   if (!doc.is_object()) throw InputError(path, 1, "a profile must be a JSON object");
+  const JsonLines lines(text);
   for (auto it = doc.begin(); it != doc.end(); ++it) {
-    const int line = line_of_key(text, it.key());
+    const int line = lines.line(JsonLines::child("", it.key()));
     std::string value;
     if (it->is_string()) value = it->get<std::string>();
     else if (it->is_boolean()) value = it->get<bool>() ? "true" : "false";
