@@ -1,5 +1,7 @@
 // `rastersim cosim`: directed and constrained-random frames through the model and the RTL in
-// lockstep; the first divergence is reported with a replay command.
+// lockstep; the first divergence is reported with a replay command. Frames split deterministically
+// into shards (--shard K/N) and the results go to JUnit XML (--junit), so a batch system can farm a
+// long regression out and merge it.
 #pragma once
 
 #include <cstdint>
@@ -13,16 +15,20 @@ namespace rastersim {
 
 struct CosimOptions {
   int64_t count = 100;        // random frames (after the directed ones)
-  uint64_t seed = 1;          // frame k uses seed + k for its triangles and its power-on state
+  uint64_t seed = 1;          // frame k uses seed + k for its triangles, settings and power-on state
   int triangles = 16;         // triangles per random frame
   bool directed = true;
+  bool fixed_settings = false;  // random frames keep the profile's runtime settings
+  bool keep_going = false;      // run every frame even after a divergence
+  std::string shard = "1/1";    // K/N: this run takes frames k with k mod N = K - 1
+  std::string junit_out;        // JUnit XML of the frames run, when not empty
   std::string replay_dir = ".";
   std::string fst_out;
   ProfileOptions profile;
 };
 
 CLI::App* add_cosim_command(CLI::App& app, CosimOptions& options);
-// 0 when every frame agrees, 1 at the first divergence; throws InputError for bad usage.
+// 0 when every frame agrees, 1 when one diverged; throws InputError for bad usage.
 int run_cosim(const CosimOptions& options);
 
 }  // namespace rastersim

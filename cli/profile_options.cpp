@@ -1,6 +1,8 @@
 #include "profile_options.h"
 
 #include <algorithm>
+#include <fstream>
+#include <sstream>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -73,6 +75,21 @@ Profile resolve_profile(const ProfileOptions& options) {
     throw InputError(message);
   }
   return profile;
+}
+
+std::set<std::string> given_profile_keys(const ProfileOptions& options) {
+  std::set<std::string> keys;
+  for (const auto& [key, flag] : options.flags)
+    if (flag->count() > 0) keys.insert(key);
+  if (!options.profile_file.empty()) {
+    std::ifstream in(options.profile_file, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    const nlohmann::json doc = nlohmann::json::parse(text.str(), nullptr, false);
+    if (doc.is_object())
+      for (auto it = doc.begin(); it != doc.end(); ++it) keys.insert(it.key());
+  }
+  return keys;
 }
 
 }  // namespace rastersim

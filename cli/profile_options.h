@@ -3,6 +3,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -22,5 +23,9 @@ void add_profile_options(CLI::App& app, ProfileOptions& options);
 // Defaults, then the profile file, then the flags given (in profile_keys() order), then
 // validate(). Throws InputError with every problem found, one a line.
 Profile resolve_profile(const ProfileOptions& options);
+
+// The keys the user set: the flags given and the keys of the profile file (call after
+// resolve_profile, which has checked the file).
+std::set<std::string> given_profile_keys(const ProfileOptions& options);
 
 }  // namespace rastersim

@@ -130,7 +130,7 @@ class Generator {
 
 CosimCase random_case(const Profile& profile, uint64_t seed, int count) {
   Generator g(profile, seed);
-  CosimCase c{"random seed " + std::to_string(seed), {}};
+  CosimCase c{"random seed " + std::to_string(seed), {}, profile};
   while (int(c.triangles.size()) < count) {
     // Now and then repeat or re-colour a previous triangle: equal depths for the depth functions.
     if (!c.triangles.empty() && g.uniform(0, 9) == 0) {
@@ -144,11 +144,44 @@ CosimCase random_case(const Profile& profile, uint64_t seed, int count) {
   return c;
 }
 
-std::vector<CosimCase> directed_cases(const Profile& profile) {
+const std::vector<std::string>& runtime_setting_keys() {
+  static const std::vector<std::string> keys = {"depth_func", "depth_write", "depth_clear", "cull",
+                                                "front_face", "traversal",   "shading",     "memory_latency"};
+  return keys;
+}
+
+Profile random_settings(const Profile& profile, uint64_t seed, const std::set<std::string>& pinned,
+                        int max_memory_latency) {
+  // A stream of its own (not the triangles'), so pinning a key does not change the triangles.
+  std::mt19937_64 rng(seed ^ 0x5e7711a65ULL);
+  auto uniform = [&](int64_t lo, int64_t hi) { return std::uniform_int_distribution<int64_t>(lo, hi)(rng); };
+  auto free = [&](const char* key) { return pinned.count(key) == 0; };
+  Profile p = profile;
+  // Every key draws whether pinned or not, so each key's value depends on the seed alone.
+  const auto depth_func = DepthFunc(uniform(0, 7));
+  const bool depth_write = uniform(0, 3) != 0;
+  const int64_t depth_clear = uniform(0, 3) == 0 ? uniform(0, p.depth_max()) : -1;
+  const auto cull = CullMode(uniform(0, 2));
+  const auto front_face = FrontFace(uniform(0, 1));
+  const auto traversal = Traversal(uniform(0, 1));
+  const auto shading = Shading(uniform(0, 1));
+  const int latency = int(uniform(1, std::max(1, std::min(8, max_memory_latency))));
+  if (free("depth_func")) p.depth_func = depth_func;
+  if (free("depth_write")) p.depth_write = depth_write;
+  if (free("depth_clear")) p.depth_clear = depth_clear;
+  if (free("cull")) p.cull = cull;
+  if (free("front_face")) p.front_face = front_face;
+  if (free("traversal")) p.traversal = traversal;
+  if (free("shading")) p.shading = shading;
+  if (free("memory_latency")) p.memory_latency = latency;
+  return p;
+}
+
+std::vector<CosimCase> directed_cases(const Profile& profile, const std::set<std::string>& pinned) {
   Generator g(profile, 12345);
   std::vector<CosimCase> cases;
   auto add = [&](const std::string& name, auto make, int count) {
-    CosimCase c{"directed " + name, {}};
+    CosimCase c{"directed " + name, {}, profile};
     for (int i = 0; i < count; ++i) c.triangles.push_back(make(i));
     cases.push_back(std::move(c));
   };
@@ -175,6 +208,20 @@ std::vector<CosimCase> directed_cases(const Profile& profile) {
     return t;
   }, 6);
   add("mixed", [&](int) { return g.any(); }, 40);
+  if (pinned.count("depth_func") == 0) {
+    // Every depth function on triangles drawn twice, at the clear depth, and overlapping.
+    for (int f = 0; f <= int(DepthFunc::Always); ++f) {
+      Profile p = profile;
+      p.depth_func = DepthFunc(f);
+      CosimCase c{std::string("directed depth ") + to_string(p.depth_func), {}, p};
+      for (int i = 0; i < 24; ++i) {
+        const SnappedTriangle t = i % 3 == 0 ? repeated : i % 3 == 1 ? g.at_clear_depth(g.medium()) : g.any();
+        c.triangles.push_back(t);
+        if (i % 3 == 0) c.triangles.back().v[0].color = g.color();
+      }
+      cases.push_back(std::move(c));
+    }
+  }
   return cases;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -15,12 +16,23 @@ namespace rastersim::rtl {
 struct CosimCase {
   std::string name;                        // e.g. "random 17" or "directed hazards"
   std::vector<SnappedTriangle> triangles;  // one frame
+  Profile profile;                         // the frame's profile (its runtime settings may differ)
 };
 
 // A constrained-random frame of `count` triangles drawn from every category, reproducible from seed.
 CosimCase random_case(const Profile& profile, uint64_t seed, int count);
 
-// The directed frames, each a few dozen triangles at most.
-std::vector<CosimCase> directed_cases(const Profile& profile);
+// The profile keys the RTL samples at reset rather than being built for (depth_func, depth_write,
+// depth_clear, cull, front_face, traversal, shading, memory_latency).
+const std::vector<std::string>& runtime_setting_keys();
+
+// `profile` with every runtime setting that is not in `pinned` drawn from `seed`: memory latency in
+// 1..min(8, max_memory_latency), the depth clear mostly 2^N - 1, the rest uniformly.
+Profile random_settings(const Profile& profile, uint64_t seed, const std::set<std::string>& pinned,
+                        int max_memory_latency);
+
+// The directed frames, each a few dozen triangles at most, on `profile`. Unless depth_func is in
+// `pinned`, they end with one frame per depth function (equal depths, the clear value, overlaps).
+std::vector<CosimCase> directed_cases(const Profile& profile, const std::set<std::string>& pinned = {"depth_func"});
 
 }  // namespace rastersim::rtl

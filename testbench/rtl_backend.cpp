@@ -37,6 +37,11 @@ const BuiltConfiguration* find_configuration(const Profile& p) {
 
 }  // namespace
 
+int built_max_memory_latency(const Profile& p) {
+  const BuiltConfiguration* c = find_configuration(p);
+  return c ? c->max_memory_latency : 0;
+}
+
 std::string configuration_error(const Profile& p) {
   const std::vector<std::string> errors = validate(p);
   if (!errors.empty()) return "invalid profile: " + errors.front();

@@ -38,6 +38,8 @@ struct RtlResult {
 
 // The profiles verilated into this build, as "WxH S=.. N=.. guard=.. latency<=.." lines.
 std::vector<std::string> built_configurations();
+// The largest memory_latency the RTL built for `profile`'s geometry takes; 0 when none is built.
+int built_max_memory_latency(const Profile& profile);
 // Empty when the RTL can run `profile`; otherwise a sentence saying why and how to build it.
 std::string configuration_error(const Profile& profile);
 

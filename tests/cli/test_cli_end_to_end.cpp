@@ -268,6 +268,81 @@ TEST(CliRtl, CosimEndsWithPassedLine) {
   EXPECT_FALSE(contains(last, "0 passed")) << r.out;
 }
 
+// The testcase names of a JUnit file, in order.
+std::vector<std::string> junit_testcases(const fs::path& path) {
+  const std::string xml = read_text(path);
+  std::vector<std::string> names;
+  const std::string tag = "<testcase classname=\"rastersim.cosim\" name=\"";
+  for (size_t at = xml.find(tag); at != std::string::npos; at = xml.find(tag, at + 1)) {
+    const size_t begin = at + tag.size();
+    names.push_back(xml.substr(begin, xml.find('"', begin) - begin));
+  }
+  return names;
+}
+
+// Shards split the frames of a run without overlap or loss, each frame keeping its seed, so the
+// shards' JUnit files together hold exactly the unsharded run's testcases.
+TEST(CliRtl, CosimShardsPartitionTheRunAndWriteJunit) {
+  ScratchDir dir;
+  const std::vector<std::string> common = {"cosim", "--count", "7", "--width", "64", "--height", "48", "--seed", "11"};
+  auto run = [&](const std::string& shard, const std::string& junit) {
+    std::vector<std::string> args = common;
+    args.insert(args.end(), {"--shard", shard, "--junit", junit});
+    const RunResult r = run_rastersim(dir, args);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    return r;
+  };
+  run("1/1", "all.xml");
+  const std::vector<std::string> all = junit_testcases(dir.path("all.xml"));
+  ASSERT_GT(all.size(), 7u);  // the directed frames and the random ones
+  EXPECT_TRUE(contains(read_text(dir.path("all.xml")), "tests=\"" + std::to_string(all.size()) + "\" failures=\"0\""));
+  std::multiset<std::string> merged;
+  int64_t passed = 0;
+  for (int k = 1; k <= 3; ++k) {
+    const std::string file = "shard" + std::to_string(k) + ".xml";
+    const RunResult r = run(std::to_string(k) + "/3", file);
+    const std::vector<std::string> names = junit_testcases(dir.path(file));
+    EXPECT_TRUE(contains(r.out, std::to_string(names.size()) + " passed, 0 failed")) << r.out;
+    passed += int64_t(names.size());
+    merged.insert(names.begin(), names.end());
+  }
+  EXPECT_EQ(passed, int64_t(all.size()));
+  EXPECT_EQ(merged, std::multiset<std::string>(all.begin(), all.end()));
+}
+
+// Random frames draw the runtime settings a flag does not pin, from the frame's seed.
+TEST(CliRtl, CosimRandomFramesVaryTheSettingsThatAreNotPinned) {
+  ScratchDir dir;
+  const std::vector<std::string> common = {"cosim", "--count", "12", "--no-directed", "--width", "64",
+                                           "--height", "48", "--junit", "j.xml"};
+  ASSERT_EQ(run_rastersim(dir, common).exit_code, 0);
+  std::set<std::string> functions;
+  for (const std::string& name : junit_testcases(dir.path("j.xml")))
+    for (const char* f : {"never", "less,", "equal", "lequal", "greater", "notequal", "gequal", "always"})
+      if (contains(name, std::string("depth ") + f)) functions.insert(f);
+  EXPECT_GE(functions.size(), 3u);
+
+  std::vector<std::string> pinned = common;
+  pinned.insert(pinned.end(), {"--depth-func", "lequal", "--traversal", "bbox"});
+  const RunResult r = run_rastersim(dir, pinned);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const std::string& name : junit_testcases(dir.path("j.xml"))) {
+    EXPECT_TRUE(contains(name, "bbox,") && contains(name, "depth lequal")) << name;
+  }
+  EXPECT_FALSE(contains(r.out, "draw depth_func")) << r.out;
+}
+
+TEST(CliRtl, CosimRejectsABadShardAndWritesNothing) {
+  ScratchDir dir;
+  for (const char* shard : {"0/2", "3/2", "1/0", "a/b", "1/2/3"}) {
+    const RunResult r =
+        run_rastersim(dir, {"cosim", "--count", "1", "--width", "64", "--height", "48", "--shard", shard, "--junit", "j.xml"});
+    EXPECT_EQ(r.exit_code, 2) << shard;
+    EXPECT_TRUE(contains(r.err, "--shard")) << r.err;
+  }
+  EXPECT_TRUE(dir.listing().empty());
+}
+
 TEST(CliRtl, CosimRefusesAProfileThatIsNotBuilt) {
   ScratchDir dir;
   const RunResult r = run_rastersim(dir, {"cosim", "--count", "1", "--width", "100"});
