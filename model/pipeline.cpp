@@ -36,6 +36,19 @@ struct Pipeline::Glue {
     if (Trace) p.sink_->on_fragment(Fragment{record.index, x, y, z, color, pass, accepted});
     return accepted;
   }
+  // Without a trace, once no hazard can stall them, a run of fragments is accepted one per cycle:
+  // the z-buffer's timing at once, then each fragment's depth test and write in order.
+  bool run(int x, int y, int64_t n, ZAdder& adders, int64_t cycle) {
+    if (Trace || !p.zbuffer_.settled()) return false;
+    const uint32_t address = uint32_t(y) * uint32_t(p.profile_.width) + uint32_t(x);
+    p.zbuffer_.accept_run(address, cycle, n);
+    const ZAdder values = adders;  // a local copy the compiler keeps in machine registers
+    const int64_t passes = p.zbuffer_.test_and_write_run(address, n, values);
+    adders.step_x(n);
+    record.fragments += n;
+    record.depth_pass += passes;
+    return true;
+  }
 };
 
 template <bool Trace>

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <type_traits>
+#include <utility>
 
 #include "profile.h"
 #include "triangle_setup.h"
@@ -21,6 +23,16 @@ struct WalkerCounters {
   int64_t candidates = 0;  // pixel candidates visited (bbox: all bbox pixels; span: span pixels)
   int64_t rows = 0;
 };
+
+// A sink takes each covered candidate through fragment(x, y, adders, cycle). It may also offer
+// run(x, y, n, adders, cycle): take n covered candidates of row y from pixel x, presented in
+// consecutive cycles from `cycle`, at once (stepping the adders n times), when none of them can
+// stall; it returns false to have them one at a time. The pipeline offers it; observers need not.
+template <class Sink, class = void>
+struct TakesRuns : std::false_type {};
+template <class Sink>
+struct TakesRuns<Sink, std::void_t<decltype(std::declval<Sink&>().run(0, 0, int64_t(0), std::declval<ZAdder&>(),
+                                                                      int64_t(0)))>> : std::true_type {};
 
 class ScanlineWalker {
  public:
@@ -49,6 +61,20 @@ class ScanlineWalker {
     return accepted + 1;
   }
 
+  // n covered candidates of row y from pixel x, one per clock (each held while the z-buffer stalls
+  // it); the adders step past each. Returns the cycle after the last.
+  template <class Sink>
+  static int64_t emit_run(int x, int y, int64_t n, ZAdder& adders, int64_t cycle, Sink& sink,
+                          WalkerCounters& counters) {
+    for (; n > 0; ++x, --n) {
+      if constexpr (TakesRuns<Sink>::value)
+        if (sink.run(x, y, n, adders, cycle)) return cycle + n;
+      cycle = emit(x, y, adders, cycle, sink, counters);
+      adders.step_x();
+    }
+    return cycle;
+  }
+
   template <class Sink>
   int64_t walk_bbox(const SetupResult& s, ZAdder& adders, int64_t cycle, Sink& sink, WalkerCounters& counters) const {
     int64_t row0 = s.edge[0].start, row1 = s.edge[1].start, row2 = s.edge[2].start;
@@ -56,11 +82,22 @@ class ScanlineWalker {
     const int64_t width = s.x1 - s.x0 + 1;
     for (int y = s.y0; y <= s.y1; ++y) {
       int64_t e0 = row0, e1 = row1, e2 = row2;
-      for (int x = s.x0; x <= s.x1; ++x) {
-        if ((e0 | e1 | e2) >= 0) cycle = emit(x, y, adders, cycle, sink, counters);
-        else ++cycle;
-        e0 += sx0, e1 += sx1, e2 += sx2;
-        adders.step_x();
+      for (int x = s.x0; x <= s.x1;) {
+        if ((e0 | e1 | e2) >= 0) {
+          // A run of covered candidates (one per row: the triangle is convex).
+          int end = x;
+          do {
+            ++end;
+            e0 += sx0, e1 += sx1, e2 += sx2;
+          } while (end <= s.x1 && (e0 | e1 | e2) >= 0);
+          cycle = emit_run(x, y, end - x, adders, cycle, sink, counters);
+          x = end;
+        } else {
+          ++cycle;
+          e0 += sx0, e1 += sx1, e2 += sx2;
+          adders.step_x();
+          ++x;
+        }
       }
       row0 += s.edge[0].step_y, row1 += s.edge[1].step_y, row2 += s.edge[2].step_y;
       adders.next_row();
@@ -96,10 +133,7 @@ class ScanlineWalker {
       counters.busy += row_cycles_;
       if (lo <= hi) {
         adders.enter_row_at(lo);
-        for (int64_t t = lo; t <= hi; ++t) {
-          cycle = emit(int(s.x0 + t), y, adders, cycle, sink, counters);
-          adders.step_x();
-        }
+        cycle = emit_run(int(s.x0 + lo), y, hi - lo + 1, adders, cycle, sink, counters);
         counters.candidates += hi - lo + 1;
         counters.busy += hi - lo + 1;
       }

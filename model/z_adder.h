@@ -10,27 +10,40 @@
 
 namespace rastersim {
 
-// One plane register as the hardware holds it: a two's-complement value of `reg_bits` with
-// `guard_bits` fraction bits (depth s(N+1).F, colour s9.F).
-class PlaneRegister {
+// The format of a plane register: a two's-complement value of `reg_bits` with `guard_bits` fraction
+// bits (depth s(N+1).F, colour s9.F), and its output: the rounded integer clamped to [0, out_max].
+class PlaneFormat {
  public:
-  PlaneRegister(int64_t value, int reg_bits, int guard_bits, int64_t out_max)
-      : value_(int64_t(uint64_t(value) << (64 - reg_bits)) >> (64 - reg_bits)),
-        guard_bits_(guard_bits), out_max_(out_max), reg_bits_(reg_bits) {}
-  int64_t value() const { return value_; }
-  // Rounded integer output, clamped to [0, out_max]: (value + 2^(F-1)) >> F.
-  int64_t output() const {
-    const int shift = 64 - reg_bits_;
-    const int64_t sum = int64_t(uint64_t(value_ + (int64_t(1) << (guard_bits_ - 1))) << shift) >> shift;
-    const int64_t rounded = sum >> guard_bits_;
+  PlaneFormat(int reg_bits, int guard_bits, int64_t out_max)
+      : wrap_shift_(64 - reg_bits), round_shift_(64 - reg_bits + guard_bits),
+        half_(uint64_t(1) << (guard_bits - 1)), out_max_(out_max) {}
+
+  // v modulo 2^reg_bits: what the register holds.
+  int64_t wrap(uint64_t v) const { return int64_t(v << wrap_shift_) >> wrap_shift_; }
+  // clamp((value + 2^(F-1)) >> F, 0, out_max), the sum taken in the register's width. `value` may be
+  // held modulo 2^64: 2^reg_bits divides 2^64, so wrapping the sum once gives the register's result
+  // (the wrap's right shift and the rounding shift are one shift).
+  int64_t output(uint64_t value) const {
+    const int64_t rounded = int64_t((value + half_) << wrap_shift_) >> round_shift_;
     return rounded < 0 ? 0 : (rounded > out_max_ ? out_max_ : rounded);
   }
 
  private:
-  int64_t value_;
-  int guard_bits_;
+  int wrap_shift_, round_shift_;
+  uint64_t half_;
   int64_t out_max_;
-  int reg_bits_;
+};
+
+// One plane register as the hardware holds it.
+class PlaneRegister {
+ public:
+  PlaneRegister(uint64_t value, PlaneFormat format) : value_(format.wrap(value)), format_(format) {}
+  int64_t value() const { return value_; }
+  int64_t output() const { return format_.output(uint64_t(value_)); }
+
+ private:
+  int64_t value_;
+  PlaneFormat format_;
 };
 
 // The unit: the depth register and three colour registers (used for Gouraud shading), stepped
@@ -39,8 +52,9 @@ class PlaneRegister {
 class ZAdder {
  public:
   ZAdder(const Widths& widths, int z_bits, bool gouraud)
-      : gouraud_(gouraud), guard_bits_(widths.guard_bits), z_reg_bits_(widths.z_reg_bits),
-        color_reg_bits_(widths.color_reg_bits), z_max_((int64_t(1) << z_bits) - 1) {}
+      : gouraud_(gouraud),
+        depth_format_{widths.z_reg_bits, widths.guard_bits, (int64_t(1) << z_bits) - 1},
+        color_format_{widths.color_reg_bits, widths.guard_bits, 255} {}
 
   void load(const SetupResult& s) {
     const PlaneSetup* planes[kPlanes] = {&s.depth, &s.color[0], &s.color[1], &s.color[2]};
@@ -55,6 +69,10 @@ class ZAdder {
   void step_x() {
     for (int k = 0; k < kPlanes; ++k) value_[k] += step_x_[k];
   }
+  // n steps at once: value + n step_x, equal to n additions modulo 2^64 (and so modulo 2^reg_bits).
+  void step_x(int64_t n) {
+    for (int k = 0; k < kPlanes; ++k) value_[k] += uint64_t(n) * step_x_[k];
+  }
   void next_row() {
     for (int k = 0; k < kPlanes; ++k) value_[k] = row_[k] += step_y_[k];
   }
@@ -64,20 +82,23 @@ class ZAdder {
     for (int k = 0; k < kPlanes; ++k) value_[k] = row_[k] + uint64_t(t) * step_x_[k];
   }
 
-  PlaneRegister depth_register() const { return {int64_t(value_[0]), z_reg_bits_, guard_bits_, z_max_}; }
-  PlaneRegister color_register(int c) const { return {int64_t(value_[1 + c]), color_reg_bits_, guard_bits_, 255}; }
-  uint32_t depth() const { return uint32_t(depth_register().output()); }
-  Rgb color() const {
+  PlaneRegister depth_register() const { return {value_[0], depth_format_}; }
+  PlaneRegister color_register(int c) const { return {value_[1 + c], color_format_}; }
+  uint32_t depth() const { return depth_at(0); }
+  Rgb color() const { return color_at(0); }
+  // The outputs i pixels to the right (the values after i step_x() calls), for a loop over a run
+  // of pixels that steps the registers once at its end.
+  uint32_t depth_at(int64_t i) const { return uint32_t(depth_format_.output(value_[0] + uint64_t(i) * step_x_[0])); }
+  Rgb color_at(int64_t i) const {
     if (!gouraud_) return flat_;
-    return Rgb{uint8_t(color_register(0).output()), uint8_t(color_register(1).output()),
-               uint8_t(color_register(2).output())};
+    auto channel = [&](int k) { return uint8_t(color_format_.output(value_[k] + uint64_t(i) * step_x_[k])); };
+    return Rgb{channel(1), channel(2), channel(3)};
   }
 
  private:
   static constexpr int kPlanes = 4;  // depth, r, g, b
   bool gouraud_;
-  int guard_bits_, z_reg_bits_, color_reg_bits_;
-  int64_t z_max_;
+  PlaneFormat depth_format_, color_format_;
   Rgb flat_;
   uint64_t step_x_[kPlanes] = {}, step_y_[kPlanes] = {}, row_[kPlanes] = {}, value_[kPlanes] = {};
 };

@@ -6,7 +6,7 @@
 namespace rastersim {
 
 ZBuffer::ZBuffer(const Profile& p)
-    : width_(p.width), height_(p.height), func_(p.depth_func), depth_write_(p.depth_write),
+    : width_(p.width), height_(p.height), pass_mask_(pass_mask(p.depth_func)), depth_write_(p.depth_write),
       clear_depth_(p.depth_clear_value()), latency_(p.memory_latency),
       depth_(size_t(p.width) * p.height), color_(size_t(p.width) * p.height),
       inflight_address_(size_t(p.memory_latency)), inflight_cycle_(size_t(p.memory_latency)) {

@@ -4,6 +4,7 @@
 // than c + L + 1 (read-after-write hazard: the unit stalls, docs/cycle-model.md).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -31,6 +32,8 @@ class ZBuffer {
 
   // Starts a new triangle: its own fragments never collide, so after L of them no check is needed.
   void begin_triangle() { fresh_ = 0; }
+  // True once no fragment can stall until the next triangle: accept_run() may be used.
+  bool settled() const { return fresh_ >= latency_; }
 
   // Timing: the cycle at which a fragment presented in `cycle` for `address` is accepted.
   int64_t accept(uint32_t address, int64_t cycle) {
@@ -51,12 +54,28 @@ class ZBuffer {
     return accepted;
   }
 
+  // Timing of n fragments at consecutive addresses presented in consecutive cycles from `cycle`, when
+  // settled(): each is accepted in the cycle it is presented. The same state and counters as n calls
+  // of accept(), without the per-fragment bookkeeping.
+  void accept_run(uint32_t address, int64_t cycle, int64_t n) {
+    // The first fragment extends the busy interval as accept() does; each later one by one cycle.
+    counters_.busy += cycle + latency_ - std::max(cycle, busy_until_ + 1) + 1 + (n - 1);
+    busy_until_ = cycle + n - 1 + latency_;
+    // Only the last L of them stay in the ring.
+    for (int64_t i = std::max<int64_t>(0, n - latency_); i < n; ++i) {
+      const int slot = int((slot_ + i) % latency_);
+      inflight_address_[slot] = address + uint32_t(i);
+      inflight_cycle_[slot] = cycle + i;
+    }
+    slot_ = int((slot_ + n) % latency_);
+  }
+
   // Function: depth test and conditional write. Returns the depth test result.
   bool test_and_write(uint32_t address, uint32_t z, Rgb c) {
-    const bool pass = depth_test(z, depth_[address]);
+    const bool pass = depth_test(pass_mask_, z, depth_[address]);
     if (pass) {
       if (depth_write_) depth_[address] = z;
-      color_[address] = (uint32_t(c.r) << 16) | (uint32_t(c.g) << 8) | c.b;
+      color_[address] = packed(c);
       ++counters_.depth_pass;
     } else {
       ++counters_.depth_fail;
@@ -64,26 +83,58 @@ class ZBuffer {
     return pass;
   }
 
-  bool depth_test(uint32_t z, uint32_t stored) const {
-    switch (func_) {
-      case DepthFunc::Never: return false;
-      case DepthFunc::Less: return z < stored;
-      case DepthFunc::Equal: return z == stored;
-      case DepthFunc::LEqual: return z <= stored;
-      case DepthFunc::Greater: return z > stored;
-      case DepthFunc::NotEqual: return z != stored;
-      case DepthFunc::GEqual: return z >= stored;
-      case DepthFunc::Always: return true;
+  // test_and_write() of n fragments at consecutive addresses, in order; fragment i's depth and
+  // colour are values.depth_at(i) and values.color_at(i). Returns how many passed.
+  template <class Values>
+  int64_t test_and_write_run(uint32_t address, int64_t n, const Values& values) {
+    uint32_t* const depth = depth_.data() + address;
+    uint32_t* const color = color_.data() + address;
+    const unsigned mask = pass_mask_;  // locals: the stores below cannot change them
+    const bool depth_write = depth_write_;
+    int64_t passes = 0;
+    for (int64_t i = 0; i < n; ++i) {
+      const uint32_t z = values.depth_at(i);
+      const bool pass = depth_test(mask, z, depth[i]);
+      if (pass) {
+        if (depth_write) depth[i] = z;
+        color[i] = packed(values.color_at(i));
+      }
+      passes += pass;
     }
-    return false;
+    counters_.depth_pass += passes;
+    counters_.depth_fail += n - passes;
+    return passes;
   }
+
+  bool depth_test(uint32_t z, uint32_t stored) const { return depth_test(pass_mask_, z, stored); }
 
   int64_t last_busy_cycle() const { return busy_until_; }
   const ZBufferCounters& counters() const { return counters_; }
 
  private:
   int width_, height_;
-  DepthFunc func_;
+  // The comparator gives one of three relations; the depth function's mask says which of them pass.
+  static constexpr unsigned kLess = 1, kEqual = 2, kGreater = 4;
+  static bool depth_test(unsigned pass_mask, uint32_t z, uint32_t stored) {
+    const unsigned relation = z < stored ? kLess : (z == stored ? kEqual : kGreater);
+    return (pass_mask & relation) != 0;
+  }
+  static uint32_t packed(Rgb c) { return (uint32_t(c.r) << 16) | (uint32_t(c.g) << 8) | c.b; }
+  static constexpr unsigned pass_mask(DepthFunc func) {
+    switch (func) {
+      case DepthFunc::Never: return 0;
+      case DepthFunc::Less: return kLess;
+      case DepthFunc::Equal: return kEqual;
+      case DepthFunc::LEqual: return kLess | kEqual;
+      case DepthFunc::Greater: return kGreater;
+      case DepthFunc::NotEqual: return kLess | kGreater;
+      case DepthFunc::GEqual: return kGreater | kEqual;
+      case DepthFunc::Always: return kLess | kEqual | kGreater;
+    }
+    return 0;
+  }
+
+  unsigned pass_mask_;
   bool depth_write_;
   uint32_t clear_depth_;
   int latency_;
