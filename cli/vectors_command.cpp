@@ -1,0 +1,87 @@
+#include "vectors_command.h"
+
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+
+#include "inputs.h"
+#include "model/input_error.h"
+#ifdef RASTERSIM_HAVE_VECTORS
+#include "testbench/cosim_cases.h"
+#include "testbench/vectors/package.h"
+#include "testbench/vectors/suites.h"
+#endif
+
+namespace rastersim {
+
+CLI::App* add_vectors_command(CLI::App& app, VectorsOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "vectors", "write a test-vector package for FPGA ports: $readmemh files of the model's expected words, a "
+                 "manifest, a self-checking Verilog testbench and scripts for Icarus and Verilator (docs/vectors.md)");
+  cmd->add_option("--out", o.out, "the package folder to write (missing or empty; see --force)")
+      ->type_name("DIR")
+      ->required();
+  cmd->add_option("input", o.input, "a screen-space .tri file, a Wavefront .obj mesh or a .json scene file")
+      ->type_name("INPUT");
+  cmd->add_option("--scene", o.scene, "a built-in scene (see `rastersim scenes`); the default scene when no "
+                                      "INPUT, --random or --suite is given")
+      ->type_name("NAME");
+  o.random_option = cmd->add_option("--random", o.random, "N constrained-random triangles (rastersim cosim's generator)")
+                        ->type_name("N");
+  o.seed_option = cmd->add_option("--seed", o.seed, "seed of --random (default 1)")->type_name("S");
+  cmd->add_option("--suite", o.suite, "a directed suite: rules (rasterization corner cases) or depth (for every "
+                                      "depth function)")
+      ->type_name("NAME");
+  cmd->add_option("--rtl-path", o.rtl_path, "do not copy the RTL into the package; its scripts use this folder, "
+                                            "relative to the package (the checked-in vectors/ use ../../rtl)")
+      ->type_name("REL");
+  cmd->add_flag("--force", o.force, "replace the package already in --out");
+  add_profile_options(*cmd, o.profile);
+  return cmd;
+}
+
+int run_vectors(const VectorsOptions& o) {
+  const Profile profile = resolve_profile(o.profile);
+  const bool random = o.random_option && o.random_option->count() > 0;
+  const int sources = int(!o.input.empty()) + int(!o.scene.empty()) + int(random) + int(!o.suite.empty());
+  if (sources > 1) throw InputError("give one of INPUT, --scene, --random and --suite");
+  if (o.seed_option && o.seed_option->count() > 0 && !random) throw InputError("--seed goes with --random");
+  if (random && (o.random < 1 || o.random > 1000000)) throw InputError("--random must be in 1..1000000");
+  if (!o.rtl_path.empty() && std::filesystem::path(o.rtl_path).is_absolute())
+    throw InputError("--rtl-path must be relative to the package folder (a package must not depend on where it was made)");
+#ifndef RASTERSIM_HAVE_VECTORS
+  (void)profile;
+  throw InputError("vectors needs the RTL library, which is not built in this binary (install Verilator and rebuild)");
+#else
+  // The folder is checked before the model runs, and written only when everything is computed.
+  vectors::check_package_dir(o.out, o.force);
+  vectors::Source source;
+  std::vector<SnappedTriangle> triangles;
+  if (random) {
+    source = {"random", "", o.random, o.seed};
+    triangles = rtl::random_case(profile, o.seed, int(o.random)).triangles;
+  } else if (!o.suite.empty()) {
+    source = {"suite", o.suite, 0, 0};
+    try {
+      triangles = vectors::suite_triangles(o.suite, profile);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(std::string("--suite: ") + e.what());
+    }
+  } else {
+    if (o.input.empty()) source = {"scene", o.scene.empty() ? "default" : o.scene, 0, 0};
+    else source = {"file", std::filesystem::path(o.input).filename().string(), 0, 0};
+    for (const ScreenTriangle& t : load_input(o.input, o.scene, profile)) triangles.push_back(snap(t, profile));
+  }
+  vectors::PackageOptions options;
+  options.rtl_path = o.rtl_path;
+  const vectors::Package package = vectors::build_package(profile, triangles, source, options);
+  vectors::write_package(package, o.out, o.force);
+  std::cout << "wrote " << o.out << ": " << package.triangles << " triangles (" << package.drawn << " drawn), "
+            << package.fragments << " fragments, " << package.cycles << " cycles, " << profile.width << "x"
+            << profile.height << "\n"
+            << "replay: " << o.out << "/run_icarus.sh or " << o.out << "/run_verilator.sh\n";
+  return 0;
+#endif
+}
+
+}  // namespace rastersim

@@ -1,0 +1,487 @@
+#include "testbench/vectors/package.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "model/input_error.h"
+#include "model/widths.h"
+#include "testbench/rtl_backend.h"
+#include "testbench/vectors/package_text.h"
+#include "testbench/vectors/rtl_sources.h"
+
+namespace rastersim::vectors {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+uint32_t crc32(const std::string& bytes) {
+  static const std::array<uint32_t, 256> table = [] {
+    std::array<uint32_t, 256> t{};
+    for (uint32_t n = 0; n < 256; ++n) {
+      uint32_t c = n;
+      for (int k = 0; k < 8; ++k) c = c & 1 ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+      t[n] = c;
+    }
+    return t;
+  }();
+  uint32_t c = 0xFFFFFFFFu;
+  for (const char ch : bytes) c = table[(c ^ uint8_t(ch)) & 0xFF] ^ (c >> 8);
+  return c ^ 0xFFFFFFFFu;
+}
+
+std::string generator_name() { return std::string("rastersim ") + RASTERSIM_VERSION; }
+
+std::string Source::arguments() const {
+  if (kind == "random") return "--random " + std::to_string(count) + " --seed " + std::to_string(seed);
+  if (kind == "suite") return "--suite " + name;
+  if (kind == "scene") return "--scene " + name;
+  return name;  // a file
+}
+
+namespace {
+
+std::string source_text(const Source& s) {
+  if (s.kind == "random")
+    return std::to_string(s.count) + " constrained-random triangles (rastersim cosim's generator, seed " +
+           std::to_string(s.seed) + ")";
+  if (s.kind == "suite") return "the directed suite '" + s.name + "'";
+  if (s.kind == "scene") return "the built-in scene '" + s.name + "'";
+  return "the input file '" + s.name + "'";
+}
+
+std::string hex32(uint32_t v) {
+  char text[16];
+  std::snprintf(text, sizeof text, "0x%08x", v);
+  return text;
+}
+
+// The profile as command-line flags, every key, in profile_keys() order.
+std::string profile_flags(const Profile& profile) {
+  const Json j = Json::parse(profile_to_json(profile));
+  std::string out;
+  for (const std::string& key : profile_keys()) {
+    if (!j.contains(key)) continue;
+    std::string flag = key;
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    const Json& v = j[key];
+    out += " --" + flag + " " + (v.is_string() ? v.get<std::string>() : v.dump());
+  }
+  return out;
+}
+
+// JSON with small objects and arrays on one line and long arrays of numbers in rows (a manifest a
+// person can read).
+std::string json_text(const Json& j, int level = 0) {
+  const std::string flat = j.dump();
+  if (!j.is_structured() || j.empty() || flat.size() + size_t(2 * level) <= 110) return flat;
+  const std::string pad(size_t(2 * level + 2), ' ');
+  if (j.is_array() && std::all_of(j.begin(), j.end(), [](const Json& e) { return e.is_number(); })) {
+    std::string out = "[\n" + pad, row;
+    for (size_t i = 0; i < j.size(); ++i) {
+      const std::string item = j[i].dump() + (i + 1 < j.size() ? "," : "");
+      if (!row.empty() && row.size() + 1 + item.size() > 100) out += row + "\n" + pad, row.clear();
+      row += (row.empty() ? "" : " ") + item;
+    }
+    return out + row + "\n" + std::string(size_t(2 * level), ' ') + "]";
+  }
+  std::string out = j.is_object() ? "{\n" : "[\n";
+  size_t i = 0;
+  for (auto it = j.begin(); it != j.end(); ++it, ++i) {
+    out += pad;
+    if (j.is_object()) out += Json(it.key()).dump() + ": ";
+    out += json_text(it.value(), level + 1);
+    out += i + 1 < j.size() ? ",\n" : "\n";
+  }
+  return out + std::string(size_t(2 * level), ' ') + (j.is_object() ? "}" : "]");
+}
+
+}  // namespace
+
+Layouts make_layouts(const Profile& p) {
+  const Widths w = derive_widths(p);
+  Layouts l;
+  for (int k = 0; k < 3; ++k) {
+    const std::string v = std::to_string(k);
+    l.commands.add("x" + v, w.coord_bits, true, "vertex " + v + " x, subpixels (s.S, S = subpixel_bits)");
+    l.commands.add("y" + v, w.coord_bits, true, "vertex " + v + " y, subpixels (s.S)");
+  }
+  for (int k = 0; k < 3; ++k)
+    l.commands.add("z" + std::to_string(k), p.z_bits, false, "vertex " + std::to_string(k) + " depth (uN)");
+  for (int k = 0; k < 3; ++k)
+    l.commands.add("rgb" + std::to_string(k), 24, false, "vertex " + std::to_string(k) + " colour 0xRRGGBB");
+
+  const char* const none = "; -1 (all ones): none";
+  l.triangles.add("status", 2, false, "setup decision: 0 drawn, 1 degenerate, 2 culled, 3 offscreen");
+  l.triangles.add("setup_accept", 32, true, "cycle the setup unit accepted the command");
+  l.triangles.add("setup_done", 32, true, "cycle its record became valid (drawn) or its decision cycle (rejected)");
+  l.triangles.add("walker_load", 32, true, std::string("cycle the walker took the record") + none);
+  l.triangles.add("walker_end", 32, true, std::string("walker's last cycle on the triangle") + none);
+  l.triangles.add("fragments", 32, false, "fragments the z-buffer accepted");
+  l.triangles.add("depth_pass", 32, false, "of which passed the depth test");
+  l.triangles.add("last_write", 32, true, std::string("cycle of its last depth-test result (write)") + none);
+
+  l.setup.add("tri", 32, false, "triangle index (line of commands.hex)");
+  l.setup.add("x0", w.x_bits, false, "first candidate column (bounding box clipped to the screen)");
+  l.setup.add("x1", w.x_bits, false, "last candidate column");
+  l.setup.add("y0", w.y_bits, false, "first candidate row");
+  l.setup.add("y1", w.y_bits, false, "last candidate row");
+  for (int k = 0; k < 3; ++k) {
+    const std::string e = "edge" + std::to_string(k) + "_";
+    l.setup.add(e + "start", w.edge_bits, true, "edge function at the first candidate's centre, s.2S, biased");
+    l.setup.add(e + "step_x", w.edge_step_x_bits, true, "edge change per pixel in x, s.2S");
+    l.setup.add(e + "step_y", w.edge_step_y_bits, true, "edge change per pixel in y, s.2S");
+    l.setup.add(e + "span_quot", w.edge_bits, true, "span walker: floor(start / |step_x|)");
+    l.setup.add(e + "span_rem", w.span_rem_bits, false, "span walker: start mod |step_x|");
+    l.setup.add(e + "span_step_quot", w.edge_step_y_bits, true, "span walker: floor(step_y / |step_x|)");
+    l.setup.add(e + "span_step_rem", w.span_rem_bits, false, "span walker: step_y mod |step_x|");
+  }
+  const char* const plane = " plane register, s(N+1).F, wrapped";
+  l.setup.add("depth_start", w.z_reg_bits, true, std::string("depth") + plane + ", at the first candidate");
+  l.setup.add("depth_step_x", w.z_reg_bits, true, std::string("depth") + plane + ", per pixel in x");
+  l.setup.add("depth_step_y", w.z_reg_bits, true, std::string("depth") + plane + ", per pixel in y");
+  if (p.shading == Shading::Gouraud) {
+    for (const char* channel : {"red", "green", "blue"}) {
+      const std::string c = channel;
+      l.setup.add(c + "_start", w.color_reg_bits, true, c + " plane register, s9.F, at the first candidate");
+      l.setup.add(c + "_step_x", w.color_reg_bits, true, c + " plane register, s9.F, per pixel in x");
+      l.setup.add(c + "_step_y", w.color_reg_bits, true, c + " plane register, s9.F, per pixel in y");
+    }
+  }
+  l.setup.add("flat_rgb", 24, false, "provoking (first) vertex colour 0xRRGGBB");
+
+  l.fragments.add("tri", 32, false, "triangle index");
+  l.fragments.add("cycle", 32, true, "cycle the z-buffer accepted it (frag_valid and frag_ready)");
+  l.fragments.add("x", w.x_bits, false, "pixel column");
+  l.fragments.add("y", w.y_bits, false, "pixel row");
+  l.fragments.add("z", p.z_bits, false, "depth entering the test (uN)");
+  l.fragments.add("rgb", 24, false, "colour 0xRRGGBB");
+  l.fragments.add("pass", 1, false, "depth test result, memory_latency cycles after the accept");
+
+  l.depth.add("depth", p.z_bits, false, "final depth word (uN); address y * width + x");
+  l.color.add("rgb", 24, false, "final colour word 0xRRGGBB; address y * width + x");
+
+  const std::pair<const char*, const char*> frame_fields[] = {
+      {"cycles", "1 + the last cycle in which setup, walker or z-buffer was busy"},
+      {"triangles", "commands accepted"},
+      {"triangles_drawn", "setup decisions: drawn"},
+      {"triangles_degenerate", "setup decisions: zero area"},
+      {"triangles_culled", "setup decisions: culled"},
+      {"triangles_offscreen", "setup decisions: no pixel centre in the clipped bounding box"},
+      {"candidates", "cycles with trace_walker_candidate"},
+      {"fragments", "depth-test results"},
+      {"depth_pass", "results with pass"},
+      {"depth_fail", "results without pass"},
+      {"setup_busy", "cycles with trace_setup_busy and not trace_setup_stall"},
+      {"setup_stall", "cycles with trace_setup_stall"},
+      {"walker_busy", "cycles with trace_walker_busy"},
+      {"walker_stall", "cycles with trace_frag_valid and not trace_frag_ready"},
+      {"zbuffer_busy", "cycles with trace_zbuffer_busy"},
+      {"zbuffer_stall", "cycles with trace_frag_valid and not trace_frag_ready (hazards)"},
+  };
+  for (const auto& [name, meaning] : frame_fields) l.frame.add(name, 32, false, meaning);
+  return l;
+}
+
+std::vector<VectorFile> vector_files(const Layouts& l) {
+  return {
+      {"commands.hex", &l.commands, "input: one triangle command per line, in submission order"},
+      {"triangles.hex", &l.triangles, "expected: one transaction record per triangle (decision and cycles)"},
+      {"setup.hex", &l.setup, "expected: the setup -> walker record of every drawn triangle, in order"},
+      {"fragments.hex", &l.fragments, "expected: every fragment the z-buffer accepts, in order"},
+      {"depth.hex", &l.depth, "expected: the final depth memory, one word per pixel"},
+      {"color.hex", &l.color, "expected: the final colour memory, one word per pixel"},
+      {"frame.hex", &l.frame, "expected: the frame's counters (one line)"},
+  };
+}
+
+namespace {
+
+int64_t cycle_field(int64_t v) {
+  if (v >= (int64_t(1) << 31))
+    throw InputError("the frame takes more than 2^31 cycles; vector packages hold cycle numbers in 32 bits");
+  return v;
+}
+
+std::string lines(const WordLayout& layout, const std::vector<std::vector<int64_t>>& words) {
+  std::string out;
+  out.reserve(words.size() * size_t(layout.digits() + 1));
+  for (const std::vector<int64_t>& w : words) out += layout.word(w) + "\n";
+  return out;
+}
+
+uint32_t rgb_word(const Rgb& c) { return (uint32_t(c.r) << 16) | (uint32_t(c.g) << 8) | c.b; }
+
+}  // namespace
+
+Package build_package(const Profile& profile, const std::vector<SnappedTriangle>& tris, const Source& source,
+                      const PackageOptions& options) {
+  const std::vector<std::string> problems = validate(profile);
+  if (!problems.empty()) throw InputError("invalid profile: " + problems.front());
+  const rtl::RtlResult model = rtl::run_model(profile, tris);
+  const Layouts layouts = make_layouts(profile);
+  const Widths widths = derive_widths(profile);
+
+  std::vector<std::vector<int64_t>> commands, triangles, setups, fragments, depth, color;
+  for (const SnappedTriangle& t : tris) {
+    std::vector<int64_t> w;
+    for (const SnappedVertex& v : t.v) w.push_back(v.x), w.push_back(v.y);
+    for (const SnappedVertex& v : t.v) w.push_back(v.z);
+    for (const SnappedVertex& v : t.v) w.push_back(rgb_word(v.color));
+    commands.push_back(w);
+  }
+  int64_t drawn = 0;
+  for (size_t i = 0; i < model.triangles.size(); ++i) {
+    const TriangleRecord& r = model.triangles[i];
+    triangles.push_back({int64_t(r.status), cycle_field(r.setup_accept), cycle_field(r.setup_done),
+                         cycle_field(r.walker_load), cycle_field(r.walker_end), r.fragments, r.depth_pass,
+                         cycle_field(r.last_write)});
+    if (r.status != SetupStatus::Drawn) continue;
+    ++drawn;
+    const SetupResult& s = model.setups[i];
+    std::vector<int64_t> w = {int64_t(i), s.x0, s.x1, s.y0, s.y1};
+    for (const EdgeSetup& e : s.edge)
+      w.insert(w.end(), {e.start, e.step_x, e.step_y, e.span_quot, e.span_rem, e.span_step_quot, e.span_step_rem});
+    w.insert(w.end(), {s.depth.start, s.depth.step_x, s.depth.step_y});
+    if (profile.shading == Shading::Gouraud)
+      for (const PlaneSetup& c : s.color) w.insert(w.end(), {c.start, c.step_x, c.step_y});
+    w.push_back(rgb_word(s.flat_color));
+    setups.push_back(w);
+  }
+  for (const Fragment& f : model.fragments)
+    fragments.push_back({f.tri, cycle_field(f.cycle), f.x, f.y, f.z, rgb_word(f.color), f.pass ? 1 : 0});
+  for (size_t a = 0; a < model.depth.size(); ++a) depth.push_back({model.depth[a]}), color.push_back({model.color[a]});
+  const FrameStats& st = model.stats;
+  const std::vector<std::vector<int64_t>> frame = {
+      {cycle_field(st.cycles), st.triangles, st.triangles_drawn, st.triangles_degenerate, st.triangles_culled,
+       st.triangles_offscreen, st.candidates, st.fragments, st.depth_pass, st.depth_fail, st.setup.busy,
+       st.setup.stall, st.walker.busy, st.walker.stall, st.zbuffer.busy, st.zbuffer.stall}};
+
+  PackageFacts facts;
+  facts.profile = profile;
+  facts.widths = widths;
+  facts.layouts = layouts;
+  facts.triangles = int64_t(tris.size());
+  facts.drawn = drawn;
+  facts.fragments = int64_t(model.fragments.size());
+  facts.cycles = st.cycles;
+  facts.words = int64_t(profile.width) * profile.height;
+  facts.source_text = source_text(source);
+  facts.rtl_included = options.rtl_path.empty();
+  facts.rtl_folder = facts.rtl_included ? "rtl" : options.rtl_path;
+  facts.regenerate_command = "rastersim vectors " + source.arguments() + profile_flags(profile) +
+                             (facts.rtl_included ? "" : " --rtl-path " + options.rtl_path) + " --out DIR";
+
+  Package package;
+  package.triangles = facts.triangles;
+  package.drawn = drawn;
+  package.fragments = facts.fragments;
+  package.cycles = st.cycles;
+  const std::vector<VectorFile> files = vector_files(layouts);
+  const std::vector<std::vector<int64_t>>* contents[] = {&commands, &triangles, &setups, &fragments,
+                                                         &depth,    &color,     &frame};
+  package.files.push_back({"README.md", readme_text(facts), false});
+  package.files.push_back({kTestbenchFile, testbench_text(facts), false});
+  package.files.push_back({"run_icarus.sh", icarus_script(facts), true});
+  package.files.push_back({"run_verilator.sh", verilator_script(facts), true});
+  for (size_t k = 0; k < files.size(); ++k) package.files.push_back({files[k].path, lines(*files[k].layout, *contents[k]), false});
+  if (facts.rtl_included)
+    for (const EmbeddedFile& f : embedded_rtl())
+      package.files.push_back({std::string("rtl/") + f.name, std::string(reinterpret_cast<const char*>(f.data), f.size), false});
+
+  // The manifest: everything above, described.
+  Json m;
+  m["format"] = "rastersim-vectors";
+  m["format_version"] = kFormatVersion;
+  m["generator"] = generator_name();
+  m["source"] = Json::object();
+  m["source"]["kind"] = source.kind;
+  if (source.kind == "random") {
+    m["source"]["count"] = source.count;
+    m["source"]["seed"] = source.seed;
+  } else {
+    m["source"]["name"] = source.name;
+  }
+  m["regenerate"] = facts.regenerate_command;
+  m["profile"] = Json::parse(profile_to_json(profile));
+  Json wj;
+  wj["coord_bits"] = widths.coord_bits;
+  wj["x_bits"] = widths.x_bits;
+  wj["y_bits"] = widths.y_bits;
+  wj["addr_bits"] = widths.addr_bits;
+  wj["guard_bits"] = widths.guard_bits;
+  wj["edge_bits"] = widths.edge_bits;
+  wj["edge_step_x_bits"] = widths.edge_step_x_bits;
+  wj["edge_step_y_bits"] = widths.edge_step_y_bits;
+  wj["span_rem_bits"] = widths.span_rem_bits;
+  wj["z_reg_bits"] = widths.z_reg_bits;
+  wj["color_reg_bits"] = widths.color_reg_bits;
+  wj["divider_bits"] = widths.divider_bits;
+  wj["setup_cycles"] = widths.setup_cycles;
+  m["widths"] = wj;
+  Json rtl;
+  rtl["top"] = "rastersim_top";
+  rtl["parameters"] = {{"WIDTH", profile.width},
+                       {"HEIGHT", profile.height},
+                       {"SUBPIXEL_BITS", profile.subpixel_bits},
+                       {"Z_BITS", profile.z_bits},
+                       {"Z_GUARD_BITS", profile.z_guard_bits},
+                       {"MAX_MEMORY_LATENCY", profile.memory_latency}};
+  rtl["included"] = facts.rtl_included;
+  rtl["folder"] = facts.rtl_folder;
+  if (facts.rtl_included) {
+    rtl["version"] = generator_name() + " rtl/ (the files below, by CRC-32)";
+  } else {
+    rtl["version"] = "the rastersim repository's rtl/ at the commit that holds this package";
+  }
+  m["rtl"] = rtl;
+  Json file_list = Json::array();
+  for (const PackageFile& f : package.files) {
+    Json e;
+    e["path"] = f.path;
+    const auto vf = std::find_if(files.begin(), files.end(), [&](const VectorFile& v) { return v.path == f.path; });
+    if (vf != files.end()) {
+      e["meaning"] = vf->meaning;
+      e["word_bits"] = vf->layout->word_bits();
+      e["words"] = std::count(f.content.begin(), f.content.end(), '\n');
+    } else if (f.path == "README.md") {
+      e["meaning"] = "what the package is, how to run it, every file's bit layout";
+    } else if (f.path == kTestbenchFile) {
+      e["meaning"] = std::string("self-checking testbench, top module ") + kTestbenchTop;
+    } else if (f.path == "run_icarus.sh" || f.path == "run_verilator.sh") {
+      e["meaning"] = f.path == "run_icarus.sh" ? "runs the testbench with Icarus Verilog"
+                                               : "runs the testbench with verilator --binary";
+    } else {
+      e["meaning"] = "RTL source of rastersim_top";
+    }
+    e["bytes"] = f.content.size();
+    e["crc32"] = hex32(crc32(f.content));
+    if (vf != files.end()) {
+      Json fields = Json::array();
+      for (const Field& field : vf->layout->fields()) {
+        Json fj;
+        fj["field"] = field.name;
+        fj["bits"] = field.bits;
+        fj["signed"] = field.is_signed;
+        fj["slot"] = {field.lsb + field.slot_bits - 1, field.lsb};
+        fields.push_back(fj);
+      }
+      e["layout"] = fields;
+    }
+    file_list.push_back(e);
+  }
+  m["files"] = file_list;
+  Json cycles;
+  cycles["total"] = st.cycles;
+  cycles["per_triangle_meaning"] =
+      "cycles from the triangle's setup_accept to its last event (setup_done, walker_end or last_write), "
+      "inclusive; triangles.hex holds every event's cycle";
+  Json per = Json::array();
+  for (const TriangleRecord& r : model.triangles)
+    per.push_back(std::max({r.setup_done, r.walker_end, r.last_write}) - r.setup_accept + 1);
+  cycles["per_triangle"] = per;
+  m["cycles"] = cycles;
+  Json stats;
+  stats["triangles"] = st.triangles;
+  stats["triangles_drawn"] = st.triangles_drawn;
+  stats["fragments"] = st.fragments;
+  stats["depth_pass"] = st.depth_pass;
+  stats["depth_fail"] = st.depth_fail;
+  m["stats"] = stats;
+  package.files.push_back({"manifest.json", json_text(m) + "\n", false});
+  return package;
+}
+
+namespace {
+
+bool holds_package(const fs::path& dir) {
+  std::ifstream in(dir / "manifest.json");
+  if (!in) return false;
+  const Json j = Json::parse(in, nullptr, false);
+  return !j.is_discarded() && j.is_object() && j.value("format", "") == "rastersim-vectors";
+}
+
+fs::path make_temp_dir(const fs::path& parent, const std::string& stem) {
+  std::string pattern = (parent / ("." + stem + "-XXXXXX")).string();
+  if (!mkdtemp(pattern.data()))
+    throw InputError("--out: cannot create a folder in '" + parent.string() + "': " + std::strerror(errno));
+  return pattern;
+}
+
+fs::path normal_out(const std::string& out_dir) {
+  if (out_dir.empty()) throw InputError("--out: no folder given");
+  fs::path out = fs::path(out_dir).lexically_normal();
+  if (out.filename().empty()) out = out.parent_path();
+  return out;
+}
+
+fs::path parent_of(const fs::path& out) { return out.parent_path().empty() ? fs::path(".") : out.parent_path(); }
+
+}  // namespace
+
+void check_package_dir(const std::string& out_dir, bool force) {
+  const fs::path out = normal_out(out_dir);
+  const fs::path parent = parent_of(out);
+  std::error_code ec;
+  if (!fs::is_directory(parent, ec))
+    throw InputError("--out: folder '" + parent.string() + "' does not exist (or is not a folder)");
+  if (!fs::exists(out, ec)) return;
+  if (!fs::is_directory(out, ec)) throw InputError("--out: '" + out.string() + "' exists and is not a folder");
+  if (fs::is_empty(out, ec)) return;
+  if (!force) throw InputError("--out: folder '" + out.string() + "' is not empty (--force replaces an existing package)");
+  if (!holds_package(out))
+    throw InputError("--out: folder '" + out.string() +
+                     "' is not empty and holds no rastersim-vectors manifest.json; --force replaces only a package");
+}
+
+void write_package(const Package& package, const std::string& out_dir, bool force) {
+  check_package_dir(out_dir, force);
+  const fs::path out = normal_out(out_dir);
+  const fs::path parent = parent_of(out);
+  std::error_code ec;
+  const bool exists = fs::exists(out, ec);
+  const std::string stem = out.filename().string();
+  const fs::path temp = make_temp_dir(parent, stem + ".tmp");
+  try {
+    for (const PackageFile& f : package.files) {
+      const fs::path path = temp / f.path;
+      fs::create_directories(path.parent_path());
+      std::ofstream file(path, std::ios::binary);
+      file << f.content;
+      file.close();
+      if (!file) throw InputError("--out: cannot write '" + (out / f.path).string() + "': " + std::strerror(errno));
+      if (f.executable) fs::permissions(path, fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,
+                                        fs::perm_options::add);
+    }
+    // mkdtemp makes the folder 0700; a package is an ordinary folder.
+    fs::permissions(temp, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                              fs::perms::others_read | fs::perms::others_exec);
+    if (exists && !fs::is_empty(out)) {
+      const fs::path old = make_temp_dir(parent, stem + ".old");
+      fs::rename(out, old);  // onto the empty folder mkdtemp made
+      fs::rename(temp, out);
+      fs::remove_all(old);
+    } else {
+      fs::rename(temp, out);  // replaces an empty folder
+    }
+  } catch (const fs::filesystem_error& e) {
+    fs::remove_all(temp, ec);
+    throw InputError("--out: cannot write '" + out.string() + "': " + e.code().message());
+  } catch (...) {
+    fs::remove_all(temp, ec);
+    throw;
+  }
+}
+
+}  // namespace rastersim::vectors

@@ -1,0 +1,73 @@
+// Test-vector packages for FPGA ports (docs/vectors.md): the model's expected words for one frame
+// as $readmemh files, a manifest, a self-checking Verilog testbench of rastersim_top, scripts that
+// run it with Icarus Verilog and Verilator, and a README. Everything here is deterministic: the same
+// profile, triangles and source give the same bytes.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "model/profile.h"
+#include "model/triangle.h"
+#include "testbench/vectors/word_layout.h"
+
+namespace rastersim::vectors {
+
+// Bumped when a file, a layout or the testbench's contract changes incompatibly (docs/vectors.md).
+constexpr int kFormatVersion = 1;
+
+// Where the triangles came from, recorded in the manifest and in the regeneration command.
+struct Source {
+  std::string kind;   // "scene", "file", "random" or "suite"
+  std::string name;   // scene or suite name, or the input file's name (without its folder)
+  int64_t count = 0;  // random: triangles
+  uint64_t seed = 0;  // random: seed
+  // The words of `rastersim vectors` that select these triangles (a file by its bare name).
+  std::string arguments() const;
+};
+
+struct PackageOptions {
+  // Empty: the RTL sources are copied into rtl/ (self-contained). Otherwise the package refers to
+  // the RTL folder at this path relative to the package (vectors/ in this repository: ../../rtl).
+  std::string rtl_path;
+};
+
+// The word layouts of the vector files for one profile.
+struct Layouts {
+  WordLayout commands, triangles, setup, fragments, depth, color, frame;
+};
+Layouts make_layouts(const Profile& profile);
+
+struct PackageFile {
+  std::string path;     // relative, '/' separated
+  std::string content;
+  bool executable = false;
+};
+
+struct Package {
+  std::vector<PackageFile> files;  // manifest.json last
+  int64_t triangles = 0, drawn = 0, fragments = 0, cycles = 0;
+};
+
+// Runs the model on the triangles (checked and snapped) and assembles every file in memory.
+Package build_package(const Profile& profile, const std::vector<SnappedTriangle>& triangles, const Source& source,
+                      const PackageOptions& options);
+
+// Throws InputError (naming --out) unless out_dir can receive a package: its parent folder exists
+// and out_dir is missing, an empty folder, or (with `force`) a folder holding a package.
+void check_package_dir(const std::string& out_dir, bool force);
+
+// Checks as above, then writes the package into a temporary folder beside out_dir and renames it into place, so that a
+// failure leaves nothing behind. out_dir may be missing or empty; an existing package (a folder
+// with a rastersim-vectors manifest.json) is replaced only with `force`. Throws InputError naming
+// --out and the problem.
+void write_package(const Package& package, const std::string& out_dir, bool force);
+
+// CRC-32 (IEEE 802.3, reflected, as zlib and `gzip -l`), written as in the manifest: "0x%08x".
+uint32_t crc32(const std::string& bytes);
+
+// The generator, as the manifest names it: "rastersim <project version>".
+std::string generator_name();
+
+}  // namespace rastersim::vectors

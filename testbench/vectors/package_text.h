@@ -1,0 +1,43 @@
+// The text files of a test-vector package, written from what package.cpp computed: the Verilog
+// testbench, the two run scripts and the README. Internal to testbench/vectors/.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "model/profile.h"
+#include "model/widths.h"
+#include "testbench/vectors/package.h"
+
+namespace rastersim::vectors {
+
+struct PackageFacts {
+  Profile profile;
+  Widths widths;
+  Layouts layouts;
+  int64_t triangles = 0, drawn = 0, fragments = 0, cycles = 0, words = 0;
+  std::string source_text;        // "the built-in scene default", "500 random triangles (seed 1)", ...
+  std::string regenerate_command; // rastersim vectors ... --out DIR
+  std::string rtl_folder;         // the RTL folder relative to the package: "rtl" or options.rtl_path
+  bool rtl_included = true;
+};
+
+// File names inside the package.
+inline const char* const kTestbenchFile = "rastersim_vectors_tb.v";
+inline const char* const kTestbenchTop = "rastersim_vectors_tb";
+
+std::string testbench_text(const PackageFacts& facts);
+std::string icarus_script(const PackageFacts& facts);
+std::string verilator_script(const PackageFacts& facts);
+std::string readme_text(const PackageFacts& facts);
+
+// The vector files in package order: name, layout, what one word is.
+struct VectorFile {
+  std::string path;
+  const WordLayout* layout;
+  std::string meaning;
+};
+std::vector<VectorFile> vector_files(const Layouts& layouts);
+
+}  // namespace rastersim::vectors

@@ -1,0 +1,126 @@
+// `rastersim vectors` end to end: a package from each kind of source, and exit 2 with a message
+// naming the problem and nothing written for every kind of bad usage.
+#include <gtest/gtest.h>
+
+#include "cli_test_support.h"
+
+namespace rastersim::cli_test {
+namespace {
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(CliVectors, HelpNamesEverySource) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"vectors", "--help"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  for (const char* flag : {"Usage", "--out", "--random", "--seed", "--suite", "--scene", "--rtl-path", "--force",
+                           "--memory-latency"})
+    EXPECT_TRUE(contains(r.out, flag)) << flag << "\n" << r.out;
+  EXPECT_TRUE(dir.listing().empty());
+}
+
+#ifdef RASTERSIM_HAVE_RTL
+
+TEST(CliVectors, WritesAPackageFromEachSource) {
+  ScratchDir dir;
+  dir.write("two.tri", "0 0 0.5 10 0 0.5 0 10 0.5\n2 2 0.25 14 3 0.75 4 11 0.5 0 255 0\n");
+  const std::vector<std::vector<std::string>> sources = {
+      {"two.tri"}, {"--scene", "fan"}, {"--random", "5", "--seed", "3"}, {"--suite", "rules"}, {"--suite", "depth"}};
+  int n = 0;
+  for (const std::vector<std::string>& source : sources) {
+    const std::string out = "pkg" + std::to_string(n++);
+    std::vector<std::string> args = {"vectors", "--width", "32", "--height", "24", "--out", out};
+    args.insert(args.end(), source.begin(), source.end());
+    const RunResult r = run_rastersim(dir, args);
+    ASSERT_EQ(r.exit_code, 0) << source[0] << ": " << r.err;
+    EXPECT_TRUE(contains(r.out, "wrote " + out + ": ")) << r.out;
+    const nlohmann::json manifest = nlohmann::json::parse(read_text(dir.path(out) / "manifest.json"));
+    EXPECT_EQ(manifest["format"], "rastersim-vectors");
+    EXPECT_EQ(manifest["profile"]["width"], 32);
+    for (const char* file : {"commands.hex", "triangles.hex", "setup.hex", "fragments.hex", "depth.hex", "color.hex",
+                             "frame.hex", "rastersim_vectors_tb.v", "run_icarus.sh", "run_verilator.sh", "README.md",
+                             "rtl/rastersim_top.sv"})
+      EXPECT_TRUE(fs::exists(dir.path(out) / file)) << out << "/" << file;
+    EXPECT_TRUE((fs::status(dir.path(out) / "run_icarus.sh").permissions() & fs::perms::owner_exec) != fs::perms::none);
+  }
+  const nlohmann::json random = nlohmann::json::parse(read_text(dir.path("pkg2") / "manifest.json"));
+  EXPECT_EQ(random["source"]["count"], 5);
+  EXPECT_EQ(random["source"]["seed"], 3);
+  EXPECT_EQ(random["cycles"]["per_triangle"].size(), 5u);
+}
+
+TEST(CliVectors, TheSameCommandGivesTheSameBytesAndForceReplaces) {
+  ScratchDir dir;
+  const std::vector<std::string> args = {"vectors", "--random", "4", "--seed", "9", "--width", "16", "--height", "12"};
+  std::vector<std::string> a = args, b = args;
+  a.insert(a.end(), {"--out", "a"});
+  b.insert(b.end(), {"--out", "b"});
+  ASSERT_EQ(run_rastersim(dir, a).exit_code, 0);
+  ASSERT_EQ(run_rastersim(dir, b).exit_code, 0);
+  for (const auto& entry : fs::recursive_directory_iterator(dir.path("a"))) {
+    if (!entry.is_regular_file()) continue;
+    const fs::path relative = fs::relative(entry.path(), dir.path("a"));
+    EXPECT_TRUE(read_text(entry.path()) == read_text(dir.path("b") / relative)) << relative;
+  }
+  const RunResult again = run_rastersim(dir, a);
+  EXPECT_EQ(again.exit_code, 2);
+  EXPECT_TRUE(contains(again.err, "--out: folder 'a' is not empty (--force replaces an existing package)")) << again.err;
+  a.push_back("--force");
+  EXPECT_EQ(run_rastersim(dir, a).exit_code, 0);
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"a", "b"}));
+}
+
+struct BadVectors {
+  const char* name;
+  std::vector<std::string> args;
+  const char* message;
+};
+
+class CliVectorsBadInput : public ::testing::TestWithParam<BadVectors> {};
+
+// Nothing is written: the scratch folder holds what the test put there, and the existing folder
+// `full` keeps its one file.
+TEST_P(CliVectorsBadInput, ExitsTwoWithMessageAndWritesNothing) {
+  const BadVectors& bad = GetParam();
+  ScratchDir dir;
+  dir.write("bad.tri", "0 0 0.5 10 0 0.5 0 10 0.5\n1 1 0.5 9 1 0.5 1 nine 0.5\n");
+  fs::create_directory(dir.path("full"));
+  dir.write("full/notes.txt", "keep");
+  std::vector<std::string> args = {"vectors", "--width", "16", "--height", "12"};
+  args.insert(args.end(), bad.args.begin(), bad.args.end());
+  if (std::find(bad.args.begin(), bad.args.end(), "--out") == bad.args.end()) args.insert(args.end(), {"--out", "pkg"});
+  const RunResult r = run_rastersim(dir, args);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, bad.message)) << "stderr: " << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"bad.tri", "full"}));
+  EXPECT_EQ(read_text(dir.path("full/notes.txt")), "keep");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir.path("full")), fs::directory_iterator()), 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    AllKinds, CliVectorsBadInput,
+    ::testing::Values(
+        BadVectors{"OutNotEmpty", {"--suite", "depth", "--out", "full"}, "--out: folder 'full' is not empty"},
+        BadVectors{"ForceOnAFolderThatIsNoPackage", {"--suite", "depth", "--out", "full", "--force"},
+                   "holds no rastersim-vectors manifest.json"},
+        BadVectors{"OutParentMissing", {"--suite", "depth", "--out", "no/such/pkg"}, "folder 'no/such' does not exist"},
+        BadVectors{"OutIsAFile", {"--suite", "depth", "--out", "bad.tri"}, "'bad.tri' exists and is not a folder"},
+        BadVectors{"OutMissing", {"--suite", "depth", "--out"}, "--out"},
+        BadVectors{"UnknownSuite", {"--suite", "corners"}, "--suite: unknown suite 'corners' (rules, depth)"},
+        BadVectors{"TwoSources", {"--suite", "depth", "--random", "3"}, "give one of INPUT, --scene, --random and --suite"},
+        BadVectors{"SeedWithoutRandom", {"--suite", "depth", "--seed", "4"}, "--seed goes with --random"},
+        BadVectors{"RandomZero", {"--random", "0"}, "--random must be in 1..1000000"},
+        BadVectors{"RandomNotANumber", {"--random", "many"}, "--random"},
+        BadVectors{"AbsoluteRtlPath", {"--suite", "depth", "--rtl-path", "/work/rtl"}, "--rtl-path must be relative"},
+        BadVectors{"BadTriLine", {"bad.tri"}, "bad.tri:2: y2 'nine' is not a number"},
+        BadVectors{"MissingInput", {"missing.tri"}, "missing.tri: cannot open"},
+        BadVectors{"UnknownScene", {"--scene", "teapot"}, "unknown scene 'teapot'"},
+        BadVectors{"BadProfile", {"--suite", "depth", "--z-bits", "8"}, "z_bits is 8"},
+        BadVectors{"BadDepthFunc", {"--suite", "depth", "--depth-func", "sometimes"}, "depth_func is 'sometimes'"}),
+    [](const ::testing::TestParamInfo<BadVectors>& info) { return info.param.name; });
+
+#endif
+
+}  // namespace
+}  // namespace rastersim::cli_test

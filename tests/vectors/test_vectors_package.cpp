@@ -1,0 +1,367 @@
+// The test-vector package writer (testbench/vectors/): word layouts, CRC-32, the manifest against
+// the files it describes, the --out folder rules, and (with Icarus Verilog) that the generated
+// testbench passes the package, fails a package with any single expected word changed, naming
+// that word's file, vector index and field, and fails when two commands are swapped.
+#include <stdlib.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "model/input_error.h"
+#include "testbench/vectors/package.h"
+#include "testbench/vectors/suites.h"
+
+namespace rastersim::vectors {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+class TempDir {
+ public:
+  TempDir() {
+    std::string pattern = (fs::temp_directory_path() / "rastersim-vectors-XXXXXX").string();
+    if (!mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
+    path_ = pattern;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::string join_lines(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const std::string& line : lines) text += line + "\n";
+  return text;
+}
+
+// A small package: the depth suite on a 16 x 12 screen, Gouraud (every setup field), latency 3.
+Profile small_profile() {
+  Profile p;
+  p.width = 16;
+  p.height = 12;
+  p.memory_latency = 3;
+  p.depth_func = DepthFunc::LEqual;
+  return p;
+}
+
+Package small_package(const PackageOptions& options = {}) {
+  const Profile p = small_profile();
+  return build_package(p, suite_triangles("depth", p), Source{"suite", "depth", 0, 0}, options);
+}
+
+const PackageFile& file_named(const Package& package, const std::string& path) {
+  for (const PackageFile& f : package.files)
+    if (f.path == path) return f;
+  throw std::runtime_error("no file " + path);
+}
+
+TEST(VectorsCrc32, MatchesTheStandardCheckValue) {
+  EXPECT_EQ(crc32("123456789"), 0xCBF43926u);  // the CRC-32/ISO-HDLC check value
+  EXPECT_EQ(crc32(""), 0u);
+}
+
+TEST(VectorsWordLayout, FieldsSitInHexDigitSlotsFromTheTop) {
+  WordLayout layout;
+  layout.add("a", 5, true, "");
+  layout.add("b", 3, false, "");
+  layout.add("c", 8, false, "");
+  EXPECT_EQ(layout.word_bits(), 20);
+  EXPECT_EQ(layout.field("a").lsb, 12);
+  EXPECT_EQ(layout.field("a").slot_bits, 8);
+  EXPECT_EQ(layout.field("b").lsb, 8);
+  EXPECT_EQ(layout.field("c").lsb, 0);
+  // -3 sign-extended to 8 bits is 0xfd; 5 zero-extended to 4 bits is 5.
+  EXPECT_EQ(layout.word({-3, 5, 0xab}), "fd5ab");
+  EXPECT_EQ(layout.parse("fd5ab"), (std::vector<int64_t>{-3, 5, 0xab}));
+  EXPECT_EQ(layout.word({15, 7, 0}), "0f700");
+  EXPECT_EQ(layout.word({-16, 0, 255}), "f00ff");
+  EXPECT_THROW(layout.word({16, 0, 0}), std::logic_error);   // a 5-bit signed field holds -16..15
+  EXPECT_THROW(layout.word({-17, 0, 0}), std::logic_error);
+  EXPECT_THROW(layout.word({0, 8, 0}), std::logic_error);    // 3 unsigned bits hold 0..7
+  EXPECT_THROW(layout.word({0, -1, 0}), std::logic_error);
+  EXPECT_THROW(layout.word({0, 0}), std::logic_error);
+  EXPECT_THROW(layout.parse("fd5a"), std::invalid_argument);
+  EXPECT_THROW(layout.parse("fd5aG"), std::invalid_argument);
+}
+
+TEST(VectorsManifest, DescribesEveryFileExactly) {
+  const Profile profile = small_profile();
+  const Package package = small_package();
+  ASSERT_EQ(package.files.back().path, "manifest.json");
+  const Json m = Json::parse(package.files.back().content);
+  EXPECT_EQ(m["format"], "rastersim-vectors");
+  EXPECT_EQ(m["format_version"], kFormatVersion);
+  EXPECT_EQ(m["generator"], generator_name());
+  EXPECT_EQ(m["profile"], Json::parse(profile_to_json(profile)));
+  EXPECT_EQ(m["source"]["kind"], "suite");
+  EXPECT_EQ(m["source"]["name"], "depth");
+
+  ASSERT_EQ(m["files"].size(), package.files.size() - 1);  // every file but the manifest itself
+  const std::regex hex_word("[0-9a-f]+");
+  for (size_t i = 0; i + 1 < package.files.size(); ++i) {
+    const PackageFile& f = package.files[i];
+    const Json& e = m["files"][i];
+    SCOPED_TRACE(f.path);
+    EXPECT_EQ(e["path"], f.path);
+    EXPECT_FALSE(e["meaning"].get<std::string>().empty());
+    EXPECT_EQ(e["bytes"], f.content.size());
+    char crc[16];
+    std::snprintf(crc, sizeof crc, "0x%08x", crc32(f.content));
+    EXPECT_EQ(e["crc32"], crc);
+    if (f.path.size() < 4 || f.path.substr(f.path.size() - 4) != ".hex") continue;
+    // A $readmemh file: one word per line, word_bits / 4 lowercase hex digits, and a layout whose
+    // slots tile the word from word_bits - 1 down to 0.
+    const int word_bits = e["word_bits"];
+    ASSERT_EQ(word_bits % 4, 0);
+    const std::vector<std::string> lines = split_lines(f.content);
+    EXPECT_EQ(e["words"], lines.size());
+    for (const std::string& line : lines) {
+      ASSERT_EQ(int(line.size()), word_bits / 4) << line;
+      ASSERT_TRUE(std::regex_match(line, hex_word)) << line;
+    }
+    int next_msb = word_bits - 1;
+    for (const Json& field : e["layout"]) {
+      EXPECT_EQ(field["slot"][0], next_msb) << field.dump();
+      const int slot_bits = field["slot"][0].get<int>() - field["slot"][1].get<int>() + 1;
+      EXPECT_EQ(slot_bits % 4, 0);
+      EXPECT_GE(slot_bits, field["bits"].get<int>());
+      EXPECT_LT(slot_bits, field["bits"].get<int>() + 4);
+      next_msb -= slot_bits;
+    }
+    EXPECT_EQ(next_msb, -1);
+  }
+
+  // Word counts against the frame.
+  const Layouts layouts = make_layouts(profile);
+  const std::vector<std::string> commands = split_lines(file_named(package, "commands.hex").content);
+  const std::vector<std::string> triangles = split_lines(file_named(package, "triangles.hex").content);
+  const std::vector<std::string> fragments = split_lines(file_named(package, "fragments.hex").content);
+  const std::vector<std::string> setups = split_lines(file_named(package, "setup.hex").content);
+  EXPECT_EQ(commands.size(), suite_triangles("depth", profile).size());
+  EXPECT_EQ(triangles.size(), commands.size());
+  EXPECT_EQ(split_lines(file_named(package, "depth.hex").content).size(), size_t(profile.width * profile.height));
+  EXPECT_EQ(split_lines(file_named(package, "color.hex").content).size(), size_t(profile.width * profile.height));
+  const std::vector<int64_t> frame = layouts.frame.parse(split_lines(file_named(package, "frame.hex").content).at(0));
+
+  // Per-triangle cycles: from setup_accept to the last of its events, inclusive; all within the
+  // frame's total. Per-triangle fragments and passes add up to fragments.hex.
+  const auto field_index = [](const WordLayout& l, const std::string& name) {
+    const auto& fs = l.fields();
+    return size_t(std::find_if(fs.begin(), fs.end(), [&](const Field& f) { return f.name == name; }) - fs.begin());
+  };
+  const auto tri_field = [&](const std::vector<int64_t>& w, const char* name) {
+    return w.at(field_index(layouts.triangles, name));
+  };
+  const Json& per = m["cycles"]["per_triangle"];
+  ASSERT_EQ(per.size(), triangles.size());
+  EXPECT_EQ(m["cycles"]["total"], frame.at(field_index(layouts.frame, "cycles")));
+  int64_t fragment_sum = 0, pass_sum = 0, drawn = 0;
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    const std::vector<int64_t> w = layouts.triangles.parse(triangles[t]);
+    const int64_t last = std::max({tri_field(w, "setup_done"), tri_field(w, "walker_end"), tri_field(w, "last_write")});
+    EXPECT_EQ(per[t], last - tri_field(w, "setup_accept") + 1) << "triangle " << t;
+    EXPECT_LT(last, m["cycles"]["total"].get<int64_t>());
+    fragment_sum += tri_field(w, "fragments");
+    pass_sum += tri_field(w, "depth_pass");
+    drawn += tri_field(w, "status") == 0;
+  }
+  EXPECT_EQ(fragment_sum, int64_t(fragments.size()));
+  EXPECT_EQ(drawn, int64_t(setups.size()));
+  int64_t passes = 0;
+  for (const std::string& line : fragments) passes += layouts.fragments.parse(line).back();  // pass is last
+  EXPECT_EQ(pass_sum, passes);
+  EXPECT_GT(passes, 0);
+  EXPECT_LT(passes, int64_t(fragments.size()));  // lequal over overlaps: some pass, some fail
+}
+
+TEST(VectorsPackage, SameInputsGiveTheSameBytes) {
+  const Package a = small_package(), b = small_package();
+  ASSERT_EQ(a.files.size(), b.files.size());
+  for (size_t i = 0; i < a.files.size(); ++i) {
+    EXPECT_EQ(a.files[i].path, b.files[i].path);
+    EXPECT_TRUE(a.files[i].content == b.files[i].content) << a.files[i].path;
+  }
+}
+
+TEST(VectorsPackage, RtlIsCopiedUnlessARelativePathIsGiven) {
+  const Package copied = small_package();
+  EXPECT_NO_THROW(file_named(copied, "rtl/rastersim_top.sv"));
+  PackageOptions options;
+  options.rtl_path = "../../rtl";
+  const Package referring = small_package(options);
+  for (const PackageFile& f : referring.files) EXPECT_NE(f.path.rfind("rtl/", 0), 0u) << f.path;
+  EXPECT_NE(file_named(referring, "run_icarus.sh").content.find("$here/../../rtl"), std::string::npos);
+}
+
+TEST(VectorsOutFolder, RefusesWhatItMustNotOverwrite) {
+  TempDir dir;
+  const Package package = small_package();
+  const fs::path out = dir.path() / "pkg";
+  EXPECT_THROW(check_package_dir((dir.path() / "missing" / "pkg").string(), false), InputError);
+  write_text(dir.path() / "file", "x");
+  EXPECT_THROW(check_package_dir((dir.path() / "file").string(), true), InputError);
+  // An empty folder is fine; a folder with something else in it never is.
+  fs::create_directory(out);
+  EXPECT_NO_THROW(check_package_dir(out.string(), false));
+  write_text(out / "notes.txt", "mine");
+  EXPECT_THROW(write_package(package, out.string(), false), InputError);
+  EXPECT_THROW(write_package(package, out.string(), true), InputError);
+  EXPECT_EQ(read_text(out / "notes.txt"), "mine");
+  fs::remove(out / "notes.txt");
+  // A package is replaced only with force.
+  write_package(package, out.string(), false);
+  EXPECT_EQ(read_text(out / "manifest.json"), package.files.back().content);
+  EXPECT_THROW(write_package(package, out.string(), false), InputError);
+  EXPECT_NO_THROW(write_package(package, out.string(), true));
+  // Nothing is left beside it (no temporary folders).
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir.path())) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"file", "pkg"}));
+}
+
+#if defined(RASTERSIM_IVERILOG) && defined(RASTERSIM_VVP)
+
+struct CommandResult {
+  int status = -1;
+  std::string output;
+};
+
+CommandResult run_command(const std::string& command) {
+  CommandResult r;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return r;
+  char buffer[4096];
+  for (size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) r.output.append(buffer, n);
+  const int status = pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string last_line(const std::string& text) {
+  const std::vector<std::string> lines = split_lines(text);
+  return lines.empty() ? "" : lines.back();
+}
+
+// The package written to a scratch folder, its testbench compiled once with Icarus; each run
+// replays whatever the .hex files hold then.
+class IcarusPackage : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = dir_holder_.path() / "pkg";
+    write_package(package_, dir_.string(), false);
+    const std::string compile = std::string(RASTERSIM_IVERILOG) + " -g2012 -I rtl -s rastersim_vectors_tb -o tb.vvp " +
+                                "rastersim_vectors_tb.v rtl/*.sv";
+    const CommandResult built = run_command("cd '" + dir_.string() + "' && " + compile);
+    ASSERT_EQ(built.status, 0) << built.output;
+  }
+  CommandResult replay() const { return run_command("cd '" + dir_.string() + "' && " + RASTERSIM_VVP + " -n tb.vvp"); }
+  int64_t vector_count() const {
+    int64_t n = 0;
+    for (const char* file : {"triangles.hex", "setup.hex", "fragments.hex", "depth.hex", "color.hex", "frame.hex"})
+      n += int64_t(split_lines(file_named(package_, file).content).size());
+    return n;
+  }
+
+  TempDir dir_holder_;
+  fs::path dir_;
+  Package package_ = small_package();
+};
+
+TEST_F(IcarusPackage, ChangingAnySingleExpectedWordFailsNamingItsVectorAndField) {
+  const CommandResult clean = replay();
+  ASSERT_EQ(last_line(clean.output), std::to_string(vector_count()) + " passed, 0 failed") << clean.output;
+
+  // Every field of every expected file, each in a different vector: its lowest bit flipped.
+  const Layouts layouts = make_layouts(small_profile());
+  struct ExpectedFile {
+    std::string path;
+    const WordLayout* layout;
+  };
+  const std::vector<ExpectedFile> files = {
+      {"triangles.hex", &layouts.triangles}, {"setup.hex", &layouts.setup}, {"fragments.hex", &layouts.fragments},
+      {"depth.hex", &layouts.depth},         {"color.hex", &layouts.color}, {"frame.hex", &layouts.frame}};
+  int mutations = 0;
+  for (size_t k = 0; k < files.size(); ++k) {
+    const std::string original = file_named(package_, files[k].path).content;
+    std::vector<std::string> lines = split_lines(original);
+    ASSERT_FALSE(lines.empty()) << files[k].path;
+    const std::vector<Field>& fields = files[k].layout->fields();
+    for (size_t f = 0; f < fields.size(); ++f) {
+      const size_t index = (f * 37 + k * 11) % lines.size();
+      const std::string word = lines[index];
+      const int digit = (files[k].layout->word_bits() - 1 - fields[f].lsb) / 4;  // its lowest digit
+      const int value = std::stoi(word.substr(size_t(digit), 1), nullptr, 16) ^ 1;
+      lines[index][size_t(digit)] = "0123456789abcdef"[value];
+      write_text(dir_ / files[k].path, join_lines(lines));
+      lines[index] = word;
+
+      const CommandResult r = replay();
+      const std::string expected_first = "first mismatch: " + files[k].path + " vector " + std::to_string(index) +
+                                         " field " + fields[f].name + ":";
+      EXPECT_NE(r.output.find(expected_first), std::string::npos) << expected_first << "\n" << r.output;
+      EXPECT_EQ(last_line(r.output), std::to_string(vector_count() - 1) + " passed, 1 failed") << r.output;
+      ++mutations;
+    }
+    write_text(dir_ / files[k].path, original);
+  }
+  EXPECT_GT(mutations, 60);
+}
+
+TEST_F(IcarusPackage, SwappingTwoCommandsFailsAndTheScriptSaysSo) {
+  std::vector<std::string> commands = split_lines(file_named(package_, "commands.hex").content);
+  ASSERT_GT(commands.size(), 5u);
+  ASSERT_NE(commands[1], commands[5]);
+  std::swap(commands[1], commands[5]);
+  write_text(dir_ / "commands.hex", join_lines(commands));
+  const CommandResult r = run_command("'" + (dir_ / "run_icarus.sh").string() + "'");
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_TRUE(std::regex_search(r.output, std::regex("first mismatch: [a-z]+\\.hex vector [0-9]+ field [a-z0-9_]+: "
+                                                     "expected 0x[0-9a-f]+, actual 0x[0-9a-f]+")))
+      << r.output;
+  EXPECT_TRUE(std::regex_match(last_line(r.output), std::regex("[0-9]+ passed, [1-9][0-9]* failed"))) << r.output;
+
+  std::swap(commands[1], commands[5]);
+  write_text(dir_ / "commands.hex", join_lines(commands));
+  const CommandResult restored = run_command("'" + (dir_ / "run_icarus.sh").string() + "'");
+  EXPECT_EQ(restored.status, 0) << restored.output;
+}
+
+#endif
+
+}  // namespace
+}  // namespace rastersim::vectors

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Runs this package's testbench (rastersim_vectors_tb.v) with Icarus Verilog 11 or later.
+# Exit 0 when the last line is "N passed, 0 failed"; 1 when a vector failed; 2 when it cannot build.
+# RTL_DIR: the pipeline's Verilog (default ../../rtl/ beside this script); every .sv and .v
+# file in it is compiled, with it as the include folder. SIM_FLAGS: more compiler arguments
+# (e.g. -DRS_NO_SETUP_RECORD for a port without the setup record wires).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+rtl="${RTL_DIR:-$here/../../rtl}"
+shopt -s nullglob
+sources=("$rtl"/*.sv "$rtl"/*.v)
+if [ ${#sources[@]} -eq 0 ]; then
+  echo "$0: no .sv or .v files in $rtl" >&2
+  exit 2
+fi
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+# shellcheck disable=SC2086  # SIM_FLAGS is a list of words
+if ! iverilog -g2012 -I "$rtl" -s rastersim_vectors_tb ${SIM_FLAGS:-} -o "$work/tb.vvp" \
+    "$here/rastersim_vectors_tb.v" "${sources[@]}"; then
+  exit 2
+fi
+cd "$here"
+vvp -n "$work/tb.vvp" | tee "$work/log"
+if grep -Eq '^[0-9]+ passed, 0 failed' "$work/log"; then exit 0; fi
+exit 1

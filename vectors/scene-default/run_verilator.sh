@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Runs this package's testbench (rastersim_vectors_tb.v) with Verilator 5 (verilator --binary).
+# Exit 0 when the last line is "N passed, 0 failed"; 1 when a vector failed; 2 when it cannot build.
+# RTL_DIR: the pipeline's Verilog (default ../../rtl/ beside this script); every .sv and .v
+# file in it is compiled, with it as the include folder. SIM_FLAGS: more compiler arguments
+# (e.g. -DRS_NO_SETUP_RECORD for a port without the setup record wires).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+rtl="${RTL_DIR:-$here/../../rtl}"
+shopt -s nullglob
+sources=("$rtl"/*.sv "$rtl"/*.v)
+if [ ${#sources[@]} -eq 0 ]; then
+  echo "$0: no .sv or .v files in $rtl" >&2
+  exit 2
+fi
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+# shellcheck disable=SC2086  # SIM_FLAGS is a list of words
+if ! verilator --binary -j "$(nproc)" -Wno-fatal -Wno-lint -Wno-style --top-module rastersim_vectors_tb \
+    -I"$rtl" ${SIM_FLAGS:-} --Mdir "$work/obj" -o tb "$here/rastersim_vectors_tb.v" "${sources[@]}" \
+    > "$work/build.log" 2>&1; then
+  cat "$work/build.log" >&2
+  exit 2
+fi
+# Verilator reports $finish on a line of its own; the summary stays the last line.
+cd "$here"
+"$work/obj/tb" | grep -v '^- .*: Verilog \$finish$' | tee "$work/log"
+if grep -Eq '^[0-9]+ passed, 0 failed' "$work/log"; then exit 0; fi
+exit 1
