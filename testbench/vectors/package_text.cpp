@@ -49,6 +49,13 @@ int ubits(int64_t v) {  // bits of an unsigned value, at least 1 (rs_ubits32)
 
 int64_t at_least_one(int64_t n) { return n > 0 ? n : 1; }
 
+// Markdown table cell text: a '|' (as in |step_x|) would end the cell.
+std::string table_cell(const std::string& text) {
+  std::string out;
+  for (const char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
 }  // namespace
 
 std::string testbench_text(const PackageFacts& k) {
@@ -653,7 +660,7 @@ std::string readme_text(const PackageFacts& k) {
       << f.layout->digits() << " hex digits.\n\n| bits (slot) | field | width | signed | meaning |\n|---|---|---|---|---|\n";
     for (const Field& field : f.layout->fields())
       r << "| " << field.lsb + field.slot_bits - 1 << ":" << field.lsb << " | " << field.name << " | " << field.bits
-        << " | " << (field.is_signed ? "yes" : "no") << " | " << field.meaning << " |\n";
+        << " | " << (field.is_signed ? "yes" : "no") << " | " << table_cell(field.meaning) << " |\n";
   }
   r << "\n## Versioning\n\n"
     << "`format_version` in manifest.json is " << kFormatVersion << ". It changes when a file, a field, a layout "

@@ -254,6 +254,20 @@ TEST(VectorsOutFolder, RefusesWhatItMustNotOverwrite) {
   EXPECT_EQ(names, (std::vector<std::string>{"file", "pkg"}));
 }
 
+// docs/vectors.md decodes the first command of vectors/depth-less field by field.
+TEST(VectorsDocs, CommandExampleIsWhatThePackageHolds) {
+  const std::string doc = read_text(RASTERSIM_SOURCE_DIR "/docs/vectors.md");
+  const std::string marker = "\n020 018 ";
+  const size_t at = doc.find(marker);
+  ASSERT_NE(at, std::string::npos) << "no command example in docs/vectors.md";
+  std::string example = doc.substr(at + 1, doc.find('\n', at + 1) - at - 1);
+  example.erase(std::remove(example.begin(), example.end(), ' '), example.end());
+  const std::string checked_in = read_text(RASTERSIM_SOURCE_DIR "/vectors/depth-less/commands.hex");
+  EXPECT_EQ(example, checked_in.substr(0, checked_in.find('\n')));
+  const std::string built = file_named(small_package(), "commands.hex").content;  // same screen, same suite
+  EXPECT_EQ(example, built.substr(0, built.find('\n')));
+}
+
 #if defined(RASTERSIM_IVERILOG) && defined(RASTERSIM_VVP)
 
 struct CommandResult {
