@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -91,6 +92,15 @@ class PreScan {
     if (!text.empty() && text.back() == '\r') text.pop_back();
     const size_t hash = text.find('#');
     if (hash != std::string::npos) text.erase(hash);
+    // tinyobjloader separates values by spaces and tabs only and ends a line at CR or NUL, where
+    // the split below sees white space: a line with such a character would be read differently.
+    for (const char c : text)
+      if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f) {
+        char code[8];
+        std::snprintf(code, sizeof code, "0x%02X", static_cast<unsigned char>(c));
+        fail(line, std::string("control character ") + code +
+                       " (values are separated by spaces or tabs; lines end with LF or CR LF)");
+      }
     const std::vector<std::string> tokens = split(text);
     if (tokens.empty()) return std::string();
     if (!text.empty() && text.find_last_not_of(" \t") != std::string::npos &&

@@ -304,14 +304,7 @@ std::string read_text(const std::string& path, const char* what) {
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& file_name, const std::string& base_folder) {
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::parse_error& e) {
-    const size_t at = std::min(e.byte, text.size());
-    const int line = 1 + int(std::count(text.begin(), text.begin() + long(at == 0 ? 0 : at - 1), '\n'));
-    throw InputError(file_name, line, std::string("malformed JSON: ") + e.what());
-  }
+  const json doc = parse_json_document(text, file_name);
   return SceneReader(text, file_name, base_folder).read(doc);
 }
 

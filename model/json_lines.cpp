@@ -1,9 +1,40 @@
 #include "model/json_lines.h"
 
+#include <algorithm>
 #include <cctype>
+
+#include "model/input_error.h"
 
 namespace rastersim {
 namespace {
+
+// A SAX consumer that builds nothing and keeps where the parser gave up: nlohmann's
+// out_of_range errors (number overflow) carry no position, the parser's own report does.
+struct ErrorLocator : nlohmann::json_sax<nlohmann::json> {
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool start_object(std::size_t) override { return true; }
+  bool key(string_t&) override { return true; }
+  bool end_object() override { return true; }
+  bool start_array(std::size_t) override { return true; }
+  bool end_array() override { return true; }
+  bool parse_error(std::size_t byte, const std::string&, const nlohmann::detail::exception&) override {
+    located_byte = byte;
+    return false;
+  }
+  std::size_t located_byte = 0;
+};
+
+// The 1-based line of the character before byte `byte` (nlohmann counts the failing character).
+int line_before_byte(const std::string& text, std::size_t byte) {
+  const std::size_t at = std::min(byte, text.size());
+  return 1 + int(std::count(text.begin(), text.begin() + long(at == 0 ? 0 : at - 1), '\n'));
+}
 
 // A recursive walk over valid JSON that records where each value starts.
 class Walker {
@@ -11,7 +42,7 @@ class Walker {
   Walker(const std::string& text, std::map<std::string, int>& lines) : s_(text), lines_(lines) {}
   void run() {
     skip_space();
-    value("");
+    value("", 0);
   }
 
  private:
@@ -47,10 +78,32 @@ class Walker {
     return out;
   }
 
-  void value(const std::string& pointer) {
+  // Containers nested deeper than this are stepped over without recording their members: the
+  // recursion (and the pointers, which grow with the depth) stay bounded for any input.
+  static constexpr int kMaxRecordedDepth = 64;
+
+  // Steps over one object or array, whatever its depth, counting lines.
+  void skip_container() {
+    int depth = 0;
+    do {
+      const char c = s_[at_];
+      if (c == '"') {
+        string_token();
+        continue;
+      }
+      if (c == '\n') ++line_;
+      if (c == '{' || c == '[') ++depth;
+      else if (c == '}' || c == ']') --depth;
+      ++at_;
+    } while (at_ < s_.size() && depth > 0);
+  }
+
+  void value(const std::string& pointer, int depth) {
     if (at_ >= s_.size()) return;
     const char c = s_[at_];
-    if (c == '{') {
+    if ((c == '{' || c == '[') && depth >= kMaxRecordedDepth) {
+      skip_container();
+    } else if (c == '{') {
       ++at_;
       skip_space();
       while (at_ < s_.size() && s_[at_] != '}') {
@@ -61,7 +114,7 @@ class Walker {
         skip_space();
         ++at_;  // ':'
         skip_space();
-        value(member);
+        value(member, depth + 1);
         skip_space();
         if (at_ < s_.size() && s_[at_] == ',') ++at_;
         skip_space();
@@ -74,7 +127,7 @@ class Walker {
       while (at_ < s_.size() && s_[at_] != ']') {
         const std::string element = JsonLines::child(pointer, index++);
         lines_.emplace(element, line_);
-        value(element);
+        value(element, depth + 1);
         skip_space();
         if (at_ < s_.size() && s_[at_] == ',') ++at_;
         skip_space();
@@ -96,6 +149,18 @@ class Walker {
 };
 
 }  // namespace
+
+nlohmann::json parse_json_document(const std::string& text, const std::string& file_name) {
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(file_name, line_before_byte(text, e.byte), std::string("malformed JSON: ") + e.what());
+  } catch (const nlohmann::json::exception& e) {
+    ErrorLocator locator;
+    nlohmann::json::sax_parse(text, &locator);
+    throw InputError(file_name, line_before_byte(text, locator.located_byte), std::string("malformed JSON: ") + e.what());
+  }
+}
 
 JsonLines::JsonLines(const std::string& text) { Walker(text, lines_).run(); }
 

@@ -5,14 +5,21 @@
 #include <map>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 namespace rastersim {
+
+// Parses a JSON document. Any error, a syntax error or a number outside the range of a double,
+// throws InputError(file_name, line, "malformed JSON: ...") with the line where parsing stopped.
+nlohmann::json parse_json_document(const std::string& text, const std::string& file_name);
 
 class JsonLines {
  public:
   // `text` must be valid JSON (parse it with nlohmann::json first).
   explicit JsonLines(const std::string& text);
   // The 1-based line where the member's key (or the array element) starts; for a pointer that is
-  // not there, the line of its closest recorded ancestor; 1 for the root.
+  // not there (or nested more than 64 containers deep), the line of its closest recorded ancestor;
+  // 1 for the root.
   int line(const std::string& pointer) const;
 
   // "/a/b" + "c" with the JSON pointer escapes (~0, ~1).

@@ -134,26 +134,23 @@ void load_profile_file(Profile& profile, const std::string& path) {
   if (!in) throw InputError(path, 0, "cannot open profile file");
   std::stringstream buffer;
   buffer << in.rdbuf();
-  const std::string text = buffer.str();
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    const size_t at = std::min(e.byte, text.size());
-    const int line = 1 + int(std::count(text.begin(), text.begin() + long(at == 0 ? 0 : at - 1), '\n'));
-    throw InputError(path, line, std::string("malformed JSON: ") + e.what());
-  }
-  if (!doc.is_object()) throw InputError(path, 1, "a profile must be a JSON object");
+  load_profile_text(profile, buffer.str(), path);
+}
+
+void load_profile_text(Profile& profile, const std::string& text, const std::string& file_name) {
+  const nlohmann::json doc = parse_json_document(text, file_name);
+  if (!doc.is_object()) throw InputError(file_name, 1, "a profile must be a JSON object");
   const JsonLines lines(text);
   for (auto it = doc.begin(); it != doc.end(); ++it) {
     const int line = lines.line(JsonLines::child("", it.key()));
     std::string value;
     if (it->is_string()) value = it->get<std::string>();
     else if (it->is_boolean()) value = it->get<bool>() ? "true" : "false";
+    else if (it->is_number_unsigned()) value = std::to_string(it->get<uint64_t>());  // above INT64_MAX too
     else if (it->is_number_integer()) value = std::to_string(it->get<int64_t>());
-    else throw InputError(path, line, "profile key '" + it.key() + "' must be a string, integer or boolean");
+    else throw InputError(file_name, line, "profile key '" + it.key() + "' must be a string, integer or boolean");
     const std::string error = set_profile_key(profile, it.key(), value);
-    if (!error.empty()) throw InputError(path, line, error);
+    if (!error.empty()) throw InputError(file_name, line, error);
   }
 }
 

@@ -59,6 +59,8 @@ std::string set_profile_key(Profile& profile, const std::string& key, const std:
 
 // Reads a JSON profile file over `profile`. Throws InputError naming file, line and problem.
 void load_profile_file(Profile& profile, const std::string& path);
+// The same for the JSON text of a profile; `file_name` names it in errors.
+void load_profile_text(Profile& profile, const std::string& text, const std::string& file_name);
 
 // The profile as a JSON object text (all keys, resolved values).
 std::string profile_to_json(const Profile& profile, int indent = 2);

@@ -26,15 +26,17 @@ PlaneSetup TriangleSetup::plane(const i128 value[3], const i128 edge_at_start[3]
   const i128 start_num = weighted([&](int k) { return edge_at_start[k]; });
   const i128 step_x_num = weighted([&](int k) { return i128(step_x[k]); });
   const i128 step_y_num = weighted([&](int k) { return i128(step_y[k]); });
-  for (i128 num : {start_num, step_x_num, step_y_num}) {
+  // num 2^F as a product: a left shift of a negative value is undefined behaviour in C++17.
+  auto quotient = [&](i128 num) {
     const i128 dividend = num * (i128(1) << F);
     if (unsigned_bits(dividend < 0 ? -dividend : dividend) > widths_.divider_bits)
       throw WidthOverflow(std::string(what) + " dividend exceeds divider_bits");
-  }
+    return wrap_signed(floor_div(dividend, area2).quotient, reg_bits);
+  };
   PlaneSetup p;
-  p.start = wrap_signed(floor_div(start_num << F, area2).quotient, reg_bits);
-  p.step_x = wrap_signed(floor_div(step_x_num << F, area2).quotient, reg_bits);
-  p.step_y = wrap_signed(floor_div(step_y_num << F, area2).quotient, reg_bits);
+  p.start = quotient(start_num);
+  p.step_x = quotient(step_x_num);
+  p.step_y = quotient(step_y_num);
   return p;
 }
 

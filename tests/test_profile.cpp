@@ -182,6 +182,8 @@ TEST(ProfileFile, LoadsEveryKey) {
 
 TEST(ProfileFile, ErrorsNameFileLineAndProblem) {
   const std::string dir = ::testing::TempDir() + "rastersim_profile_" + std::to_string(getpid()) + "_";
+  const std::string deep_json =
+      "{\n  \"width\": 64,\n  \"deep\": " + std::string(100000, '[') + std::string(100000, ']') + "\n}\n";
   struct Bad {
     const char* name;
     const char* text;
@@ -200,6 +202,13 @@ TEST(ProfileFile, ErrorsNameFileLineAndProblem) {
       {"array.json", "[1, 2]\n", 1, "JSON object"},
       // A key whose name appears earlier as a value: the line is the key's, not the value's.
       {"value_named_like_key.json", "{\n  \"traversal\": \"span\",\n  \"span\": 5\n}\n", 3, "unknown profile key 'span'"},
+      // Found by fuzz_profile. A number beyond a double's range is a JSON error with a line (it
+      // escaped as an uncaught exception).
+      {"overflow.json", "{\n  \"width\": 64,\n  \"height\": 1e999\n}\n", 3, "malformed JSON"},
+      // An integer above INT64_MAX is refused as written (it wrapped to -1, which is 'max').
+      {"unsigned.json", "{\n  \"depth_clear\": 18446744073709551615\n}\n", 2, "not '18446744073709551615'"},
+      // Nesting deeper than any stack: the line finder steps over it (it recursed once per level).
+      {"deep.json", deep_json.c_str(), 3, "profile key 'deep' must be a string, integer or boolean"},
   };
   for (const Bad& c : cases) {
     const std::string error = load_error(c.name, c.text);

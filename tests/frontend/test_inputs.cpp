@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <iterator>
+#include <vector>
 
 #include "frontend/frontend.h"
 #include "frontend/obj_loader.h"
@@ -128,6 +130,12 @@ TEST(FrontendObj, ErrorsNameTheLineAndTheProblem) {
       {v3 + "l 1\n", "bad.obj:4: ", "'l' needs at least 2 vertices"},
       {v3 + "frobnicate 1 2\n", "bad.obj:4: ", "unknown statement 'frobnicate'"},
       {"v 0 0 0 \\\n 1\n", "bad.obj:1: ", "line continuation"},
+      // Found by fuzz_obj: tinyobjloader ends a line at a lone CR (and NUL) and separates values by
+      // spaces and tabs only; "f\r 1 2 3" was accepted with no triangle drawn.
+      {v3 + "f\r 1 2 3\n", "bad.obj:4: ", "control character 0x0D"},
+      {v3 + "f 1 2 3\rf 1 2 3\n", "bad.obj:4: ", "control character 0x0D"},
+      {v3 + "f 1\v2 3\n", "bad.obj:4: ", "control character 0x0B"},
+      {v3 + std::string("f 1 2 3\0 1\n", 11), "bad.obj:4: ", "control character 0x00"},
       {v3, "bad.obj: ", "the file has no faces"},
       {"", "bad.obj: ", "the file has no faces"},
   };
@@ -342,8 +350,18 @@ TEST(FrontendScene, ErrorsNameTheLineOfTheKey) {
       {"{\"objects\": [{\"surface\": \"plane\"}],\n \"camera\": {\"eye\": [1, 1, 1],\n  \"target\": [1, 1, 1]}\n}\n", 3,
        "eye and target are the same point"},
   };
-  for (const Case& c : cases) {
-    SCOPED_TRACE(c.text);
+  // Found by fuzz_scene: a number beyond a double's range escaped as an uncaught exception, and
+  // deep nesting overflowed the stack of the line finder.
+  const Case found_by_fuzzing[] = {
+      {"{\"objects\": [{\"surface\": \"plane\"}],\n \"ambient\": [1e400, 0, 0]\n}\n", 2, "malformed JSON"},
+      {"{\"objects\": [{\"surface\": \"plane\"}],\n \"extra\": " + std::string(100000, '[') + std::string(100000, ']') +
+           "\n}\n",
+       2, "unknown key 'extra' in the scene"},
+  };
+  std::vector<Case> all(std::begin(cases), std::end(cases));
+  all.insert(all.end(), std::begin(found_by_fuzzing), std::end(found_by_fuzzing));
+  for (const Case& c : all) {
+    SCOPED_TRACE(c.text.substr(0, 200));
     const std::string path = write_file("bad-scene.json", c.text);
     expect_input_error([&] { load_scene_file(path, profile(), {}); },
                        path + (c.line ? ":" + std::to_string(c.line) : std::string()) + ": ", c.reason);
