@@ -29,9 +29,12 @@ std::string assign_slot(const std::string& word, const Field& f, const std::stri
 std::string check_fields(const std::string& file, const WordLayout& layout, const std::string& expected,
                          const std::string& observed, const std::string& index, const std::string& indent) {
   std::string out;
-  for (const Field& f : layout.fields())
+  for (const Field& f : layout.fields()) {
+    // check_field's string inputs hold 16 and 24 characters.
+    if (file.size() > 16 || f.name.size() > 24) throw std::logic_error("testbench: name too long: " + file + " " + f.name);
     out += indent + "check_field(\"" + file + "\", " + index + ", \"" + f.name + "\", " + expected + slot(f) + ", " +
            observed + slot(f) + ");\n";
+  }
   return out;
 }
 
@@ -57,6 +60,14 @@ std::string table_cell(const std::string& text) {
 }
 
 }  // namespace
+
+int64_t vector_words(const PackageFacts& k, const std::string& path) {
+  const std::map<std::string, int64_t> words = {{"commands.hex", k.triangles}, {"triangles.hex", k.triangles},
+                                                {"setup.hex", k.drawn},        {"fragments.hex", k.fragments},
+                                                {"depth.hex", k.words},        {"color.hex", k.words},
+                                                {"frame.hex", 1}};
+  return words.at(path);
+}
 
 std::string testbench_text(const PackageFacts& k) {
   const Profile& p = k.profile;
@@ -257,12 +268,8 @@ std::string testbench_text(const PackageFacts& k) {
   const std::pair<const char*, const char*> loads[] = {
       {"commands.hex", "commands"}, {"triangles.hex", "triangles"}, {"setup.hex", "setups"},
       {"fragments.hex", "fragments"}, {"depth.hex", "depth"}, {"color.hex", "color"}, {"frame.hex", "frame"}};
-  const std::map<std::string, int64_t> counts = {{"commands", k.triangles}, {"triangles", k.triangles},
-                                                 {"setups", k.drawn},       {"fragments", k.fragments},
-                                                 {"depth", k.words},        {"color", k.words},
-                                                 {"frame", 1}};
   for (const auto& [file, array] : loads) {
-    const int64_t n = counts.at(array);
+    const int64_t n = vector_words(k, file);
     if (n > 0) v << "    $readmemh(\"" << file << "\", " << array << ", 0, " << n - 1 << ");\n";
   }
   v << "    for (t = 0; t < TRIANGLE_SLOTS; t = t + 1) begin\n"
@@ -637,12 +644,8 @@ std::string readme_text(const PackageFacts& k) {
     << "## Files\n\n"
     << "| file | words | bits | what one word is |\n|---|---|---|---|\n";
   const std::vector<VectorFile> files = vector_files(k.layouts);
-  const std::map<std::string, int64_t> words = {{"commands.hex", k.triangles}, {"triangles.hex", k.triangles},
-                                                {"setup.hex", k.drawn},        {"fragments.hex", k.fragments},
-                                                {"depth.hex", k.words},        {"color.hex", k.words},
-                                                {"frame.hex", 1}};
   for (const VectorFile& f : files)
-    r << "| " << f.path << " | " << words.at(f.path) << " | " << f.layout->word_bits() << " | " << f.meaning << " |\n";
+    r << "| " << f.path << " | " << vector_words(k, f.path) << " | " << f.layout->word_bits() << " | " << f.meaning << " |\n";
   r << "| manifest.json | | | format and generator version, profile, widths, every file's size and CRC-32, "
        "the cycles of every triangle |\n"
     << "| " << kTestbenchFile << " | | | the self-checking testbench (top module " << kTestbenchTop << ") |\n"

@@ -39,5 +39,7 @@ struct VectorFile {
   std::string meaning;
 };
 std::vector<VectorFile> vector_files(const Layouts& layouts);
+// The words (lines) of a vector file of the package, by its path.
+int64_t vector_words(const PackageFacts& facts, const std::string& path);
 
 }  // namespace rastersim::vectors
