@@ -1,4 +1,5 @@
-// `rastersim bench`: model throughput on a large random triangle list.
+// `rastersim bench`: model throughput (fragments and triangles per second, render only) on a large
+// random triangle list, or on the same inputs `rastersim render` takes (a file or a built-in scene).
 #pragma once
 
 #include <cstdint>
@@ -11,6 +12,8 @@
 namespace rastersim {
 
 struct BenchOptions {
+  std::string input;           // a .tri / .obj / .json file, as `rastersim render`
+  std::string scene;           // or a built-in scene; neither: random triangles
   int64_t triangles = 200000;
   std::string size = "1..32";  // triangle size range in pixels, MIN..MAX
   uint64_t seed = 1;
@@ -23,5 +26,9 @@ int run_bench(const BenchOptions& options);
 
 // Parses "MIN..MAX" or "SIZE" (pixels, 0 < MIN <= MAX); throws InputError.
 void parse_size_range(const std::string& text, double& min_size, double& max_size);
+
+// CPU time of the whole process, in seconds: on a shared machine it counts only the cycles the run
+// got, where wall time also counts the other jobs'.
+double process_cpu_seconds();
 
 }  // namespace rastersim

@@ -7,6 +7,7 @@ packages=(
   libopenimageio-dev openimageio-tools
   nlohmann-json3-dev libcli11-dev libtinyobjloader-dev
   verilator libsystemc-dev iverilog yosys
+  libosmesa6-dev nextpnr-ice40 fpga-icestorm
 )
 missing=()
 for p in "${packages[@]}"; do
