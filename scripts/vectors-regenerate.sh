@@ -40,10 +40,13 @@ while read -r name args; do
 done < "$root/vectors/packages.txt"
 for dir in "$root"/vectors/*/; do
   name="$(basename "$dir")"
-  if [[ ! " ${names[*]} " =~ " $name " ]]; then
-    echo "vectors/$name is not listed in vectors/packages.txt"
-    status=1
-  fi
+  case " ${names[*]} " in
+    *" $name "*) ;;
+    *)
+      echo "vectors/$name is not listed in vectors/packages.txt"
+      status=1
+      ;;
+  esac
 done
 if [ $status -ne 0 ] && [ $check -eq 1 ]; then
   echo "regenerate them with: scripts/vectors-regenerate.sh $exe"

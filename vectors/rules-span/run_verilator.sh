@@ -22,8 +22,9 @@ if ! verilator --binary -j "$(nproc)" -Wno-fatal -Wno-lint -Wno-style --top-modu
   cat "$work/build.log" >&2
   exit 2
 fi
-# Verilator reports $finish on a line of its own; the summary stays the last line.
 cd "$here"
+# Verilator reports $finish on a line of its own; the summary stays the last line.
+# shellcheck disable=SC2016  # a literal $finish
 "$work/obj/tb" | grep -v '^- .*: Verilog \$finish$' | tee "$work/log"
 if grep -Eq '^[0-9]+ passed, 0 failed' "$work/log"; then exit 0; fi
 exit 1
