@@ -27,9 +27,9 @@ constexpr int signed_bits(i128 v) {
 
 // Smallest unsigned width b holding v >= 0: v < 2^b (at least 1).
 constexpr int unsigned_bits(i128 v) {
-  int bits = 1;
-  while (v >= (i128(1) << bits)) ++bits;
-  return bits;
+  if (v < 2) return 1;
+  const uint64_t high = uint64_t((unsigned __int128)v >> 64), low = uint64_t(v);
+  return high != 0 ? 128 - __builtin_clzll(high) : 64 - __builtin_clzll(low);
 }
 
 constexpr bool fits_signed(i128 v, int bits) {
@@ -93,8 +93,14 @@ struct FloorDiv {
 };
 inline FloorDiv floor_div(i128 n, i128 d) {
   const unsigned __int128 mag = n < 0 ? (unsigned __int128)(-n) : (unsigned __int128)n;
-  const unsigned __int128 q0 = mag / (unsigned __int128)d;
-  const unsigned __int128 r0 = mag % (unsigned __int128)d;
+  unsigned __int128 q0, r0;
+  if ((mag >> 64) == 0 && ((unsigned __int128)d >> 64) == 0) {
+    q0 = uint64_t(mag) / uint64_t(d);  // the same numbers; one 64-bit division instead of two 128-bit calls
+    r0 = uint64_t(mag) % uint64_t(d);
+  } else {
+    q0 = mag / (unsigned __int128)d;
+    r0 = mag % (unsigned __int128)d;
+  }
   if (n >= 0) return {i128(q0), i128(r0)};
   if (r0 == 0) return {-i128(q0), 0};
   return {-i128(q0) - 1, d - i128(r0)};

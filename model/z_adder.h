@@ -27,6 +27,14 @@ class PlaneFormat {
     const int64_t rounded = int64_t((value + half_) << wrap_shift_) >> round_shift_;
     return rounded < 0 ? 0 : (rounded > out_max_ ? out_max_ : rounded);
   }
+  // output() without a 64-bit arithmetic shift (SIMD units up to AVX2 have none): a negative
+  // register gives 0; otherwise the logical shift equals the arithmetic one. The same result for
+  // every value; ZBuffer::test_and_write_run() uses it so that the compiler can vectorize.
+  uint32_t output_unsigned(uint64_t value) const {
+    const uint64_t shifted = (value + half_) << wrap_shift_;
+    const uint64_t rounded = shifted >> round_shift_;
+    return int64_t(shifted) < 0 ? 0u : uint32_t(rounded > uint64_t(out_max_) ? uint64_t(out_max_) : rounded);
+  }
 
  private:
   int wrap_shift_, round_shift_;
@@ -84,6 +92,19 @@ class ZAdder {
 
   PlaneRegister depth_register() const { return {value_[0], depth_format_}; }
   PlaneRegister color_register(int c) const { return {value_[1 + c], color_format_}; }
+  // The registers at the current pixel and their x steps, for a run of pixels taken at once
+  // (ZBuffer::test_and_write_run).
+  struct Run {
+    uint64_t value[4], step_x[4];  // depth, r, g, b
+    PlaneFormat depth_format, color_format;
+    bool gouraud;
+    Rgb flat;
+  };
+  Run run() const {
+    return {{value_[0], value_[1], value_[2], value_[3]}, {step_x_[0], step_x_[1], step_x_[2], step_x_[3]},
+            depth_format_, color_format_, gouraud_, flat_};
+  }
+
   uint32_t depth() const { return depth_at(0); }
   Rgb color() const { return color_at(0); }
   // The outputs i pixels to the right (the values after i step_x() calls), for a loop over a run

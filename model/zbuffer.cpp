@@ -2,8 +2,118 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 
 namespace rastersim {
+namespace {
+
+// The depth test and conditional write of n fragments, written without branches or 64-bit
+// arithmetic shifts so that it vectorizes: every word is stored back, changed or not.
+template <bool Gouraud, bool DepthWrite>
+inline __attribute__((always_inline)) int64_t run_loop(uint32_t* depth, uint32_t* color, int64_t n, unsigned mask,
+                                                        const ZAdder::Run& p) {
+  const bool pass_less = mask & ZBuffer::kLess, pass_equal = mask & ZBuffer::kEqual, pass_greater = mask & ZBuffer::kGreater;
+  // Local copies: stores through depth and color could otherwise alias the formats' int fields.
+  const PlaneFormat depth_format = p.depth_format, color_format = p.color_format;
+  uint64_t z_value = p.value[0], r_value = p.value[1], g_value = p.value[2], b_value = p.value[3];
+  const uint64_t z_step = p.step_x[0], r_step = p.step_x[1], g_step = p.step_x[2], b_step = p.step_x[3];
+  const uint32_t flat = (uint32_t(p.flat.r) << 16) | (uint32_t(p.flat.g) << 8) | p.flat.b;
+  int64_t passes = 0;
+  for (int64_t i = 0; i < n; ++i) {
+    const uint32_t z = depth_format.output_unsigned(z_value);
+    const uint32_t stored = depth[i];
+    const bool pass = ((z < stored) & pass_less) | ((z == stored) & pass_equal) | ((z > stored) & pass_greater);
+    const uint32_t c = Gouraud ? (color_format.output_unsigned(r_value) << 16) |
+                                     (color_format.output_unsigned(g_value) << 8) |
+                                     color_format.output_unsigned(b_value)
+                               : flat;
+    if (DepthWrite) depth[i] = pass ? z : stored;
+    color[i] = pass ? c : color[i];
+    passes += pass;
+    z_value += z_step;
+    if (Gouraud) r_value += r_step, g_value += g_step, b_value += b_step;
+  }
+  return passes;
+}
+
+// The same, one fragment at a time with branches: faster for short runs (colours computed only
+// for fragments that pass, no vector set-up).
+template <bool Gouraud, bool DepthWrite>
+inline __attribute__((always_inline)) int64_t short_run_loop(uint32_t* depth, uint32_t* color, int64_t n,
+                                                              unsigned mask, const ZAdder::Run& p) {
+  const PlaneFormat depth_format = p.depth_format, color_format = p.color_format;
+  const uint32_t flat = (uint32_t(p.flat.r) << 16) | (uint32_t(p.flat.g) << 8) | p.flat.b;
+  int64_t passes = 0;
+  for (int64_t i = 0; i < n; ++i) {
+    const uint32_t z = depth_format.output_unsigned(p.value[0] + uint64_t(i) * p.step_x[0]);
+    const uint32_t stored = depth[i];
+    const unsigned relation = z < stored ? ZBuffer::kLess : (z == stored ? ZBuffer::kEqual : ZBuffer::kGreater);
+    if ((mask & relation) == 0) continue;
+    if (DepthWrite) depth[i] = z;
+    auto channel = [&](int k) { return color_format.output_unsigned(p.value[k] + uint64_t(i) * p.step_x[k]); };
+    color[i] = Gouraud ? (channel(1) << 16) | (channel(2) << 8) | channel(3) : flat;
+    ++passes;
+  }
+  return passes;
+}
+
+using RunKernel = int64_t (*)(uint32_t*, uint32_t*, int64_t, unsigned, bool, const ZAdder::Run&);
+
+template <bool Gouraud>
+inline __attribute__((always_inline)) int64_t run_shaded(uint32_t* depth, uint32_t* color, int64_t n, unsigned mask,
+                                                          bool depth_write, const ZAdder::Run& planes) {
+  constexpr int64_t kShortRun = 24;  // measured: below this the branching loop is faster
+  if (n < kShortRun)
+    return depth_write ? short_run_loop<Gouraud, true>(depth, color, n, mask, planes)
+                       : short_run_loop<Gouraud, false>(depth, color, n, mask, planes);
+  return depth_write ? run_loop<Gouraud, true>(depth, color, n, mask, planes)
+                     : run_loop<Gouraud, false>(depth, color, n, mask, planes);
+}
+
+// The same loop compiled for several instruction sets; the best one this CPU has is used.
+#define RASTERSIM_RUN_KERNEL(NAME, ATTRIBUTES)                                                              \
+  ATTRIBUTES int64_t NAME(uint32_t* depth, uint32_t* color, int64_t n, unsigned mask, bool depth_write,     \
+                          const ZAdder::Run& planes) {                                                      \
+    return planes.gouraud ? run_shaded<true>(depth, color, n, mask, depth_write, planes)                   \
+                          : run_shaded<false>(depth, color, n, mask, depth_write, planes);                 \
+  }
+RASTERSIM_RUN_KERNEL(run_generic, )
+#if defined(__x86_64__) && defined(__GNUC__)
+RASTERSIM_RUN_KERNEL(run_avx2, __attribute__((target("avx2,bmi,bmi2,fma"))))
+RASTERSIM_RUN_KERNEL(run_avx512, __attribute__((target("avx512f,avx512bw,avx512dq,avx512vl,avx2,bmi,bmi2,fma"))))
+#define RASTERSIM_X86_KERNELS 1
+#endif
+
+struct KernelVersion {
+  const char* name;
+  RunKernel kernel;
+  bool available;
+};
+
+std::vector<KernelVersion> kernel_versions() {
+  std::vector<KernelVersion> versions;
+#ifdef RASTERSIM_X86_KERNELS
+  __builtin_cpu_init();
+  const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("fma");
+  const bool avx512 = avx2 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+                      __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl");
+  versions.push_back({"avx512", run_avx512, avx512});
+  versions.push_back({"avx2", run_avx2, avx2});
+#endif
+  versions.push_back({"generic", run_generic, true});
+  return versions;
+}
+
+RunKernel& selected_kernel() {
+  static RunKernel kernel = [] {
+    for (const KernelVersion& v : kernel_versions())
+      if (v.available) return v.kernel;
+    return RunKernel(run_generic);
+  }();
+  return kernel;
+}
+
+}  // namespace
 
 ZBuffer::ZBuffer(const Profile& p)
     : width_(p.width), height_(p.height), pass_mask_(pass_mask(p.depth_func)), depth_write_(p.depth_write),
@@ -22,6 +132,36 @@ void ZBuffer::clear() {
   fresh_ = 0;
   busy_until_ = -1;
   counters_ = {};
+}
+
+std::vector<std::string> run_kernel_versions() {
+  std::vector<std::string> names;
+  for (const KernelVersion& v : kernel_versions())
+    if (v.available) names.push_back(v.name);
+  return names;
+}
+
+void select_run_kernel(const std::string& name) {
+  for (const KernelVersion& v : kernel_versions())
+    if (v.available && name == v.name) {
+      selected_kernel() = v.kernel;
+      return;
+    }
+  throw std::invalid_argument("run kernel '" + name + "' is not available on this CPU");
+}
+
+int64_t ZBuffer::test_and_write_run(uint32_t address, int64_t n, const ZAdder::Run& planes) {
+  // The walker's next row most likely covers the words below these: have them fetched meanwhile
+  // (the buffers outgrow the caches; this is the model's main memory cost).
+  if (address + uint32_t(width_) + uint32_t(n) <= depth_.size())
+    for (int64_t i = 0; i < n + 15; i += 16) {
+      __builtin_prefetch(depth_.data() + address + width_ + i, 1);
+      __builtin_prefetch(color_.data() + address + width_ + i, 1);
+    }
+  const int64_t passes = selected_kernel()(depth_.data() + address, color_.data() + address, n, pass_mask_, depth_write_, planes);
+  counters_.depth_pass += passes;
+  counters_.depth_fail += n - passes;
+  return passes;
 }
 
 }  // namespace rastersim

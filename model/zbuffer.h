@@ -6,10 +6,12 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "profile.h"
 #include "triangle.h"
+#include "z_adder.h"
 
 namespace rastersim {
 
@@ -20,8 +22,16 @@ struct ZBufferCounters {
   int64_t depth_fail = 0;
 };
 
+// test_and_write_run()'s loop is compiled for several instruction sets (x86-64: avx512, avx2,
+// generic); the best the CPU has is used. Every version gives the same results; tests run each.
+std::vector<std::string> run_kernel_versions();  // those this CPU can run, best first
+void select_run_kernel(const std::string& name);  // throws std::invalid_argument if not available
+
 class ZBuffer {
  public:
+  // The comparator gives one of three relations; the depth function's mask says which of them pass.
+  static constexpr unsigned kLess = 1, kEqual = 2, kGreater = 4;
+
   explicit ZBuffer(const Profile& profile);
 
   void clear();
@@ -62,12 +72,14 @@ class ZBuffer {
     counters_.busy += cycle + latency_ - std::max(cycle, busy_until_ + 1) + 1 + (n - 1);
     busy_until_ = cycle + n - 1 + latency_;
     // Only the last L of them stay in the ring.
-    for (int64_t i = std::max<int64_t>(0, n - latency_); i < n; ++i) {
-      const int slot = int((slot_ + i) % latency_);
+    const int64_t first = std::max<int64_t>(0, n - latency_);
+    int slot = int((slot_ + first) % latency_);
+    for (int64_t i = first; i < n; ++i) {
       inflight_address_[slot] = address + uint32_t(i);
       inflight_cycle_[slot] = cycle + i;
+      slot = slot + 1 == latency_ ? 0 : slot + 1;
     }
-    slot_ = int((slot_ + n) % latency_);
+    slot_ = slot;
   }
 
   // Function: depth test and conditional write. Returns the depth test result.
@@ -84,27 +96,8 @@ class ZBuffer {
   }
 
   // test_and_write() of n fragments at consecutive addresses, in order; fragment i's depth and
-  // colour are values.depth_at(i) and values.color_at(i). Returns how many passed.
-  template <class Values>
-  int64_t test_and_write_run(uint32_t address, int64_t n, const Values& values) {
-    uint32_t* const depth = depth_.data() + address;
-    uint32_t* const color = color_.data() + address;
-    const unsigned mask = pass_mask_;  // locals: the stores below cannot change them
-    const bool depth_write = depth_write_;
-    int64_t passes = 0;
-    for (int64_t i = 0; i < n; ++i) {
-      const uint32_t z = values.depth_at(i);
-      const bool pass = depth_test(mask, z, depth[i]);
-      if (pass) {
-        if (depth_write) depth[i] = z;
-        color[i] = packed(values.color_at(i));
-      }
-      passes += pass;
-    }
-    counters_.depth_pass += passes;
-    counters_.depth_fail += n - passes;
-    return passes;
-  }
+  // colour are the plane registers' outputs i x steps on from `planes`. Returns how many passed.
+  int64_t test_and_write_run(uint32_t address, int64_t n, const ZAdder::Run& planes);
 
   bool depth_test(uint32_t z, uint32_t stored) const { return depth_test(pass_mask_, z, stored); }
 
@@ -113,8 +106,6 @@ class ZBuffer {
 
  private:
   int width_, height_;
-  // The comparator gives one of three relations; the depth function's mask says which of them pass.
-  static constexpr unsigned kLess = 1, kEqual = 2, kGreater = 4;
   static bool depth_test(unsigned pass_mask, uint32_t z, uint32_t stored) {
     const unsigned relation = z < stored ? kLess : (z == stored ? kEqual : kGreater);
     return (pass_mask & relation) != 0;

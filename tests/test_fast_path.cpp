@@ -4,6 +4,8 @@
 // path to give the same frame: every counter, every triangle record, every buffer word.
 #include <gtest/gtest.h>
 
+#include <random>
+#include <string>
 #include <tuple>
 
 #include "test_util.h"
@@ -38,6 +40,31 @@ void expect_same_counters(const UnitCounters& a, const UnitCounters& b, const ch
   EXPECT_EQ(a.stall, b.stall) << unit << " stall";
 }
 
+void expect_same_frame(const Frame& traced, const Frame& fast) {
+  const FrameStats &a = traced.stats, &b = fast.stats;
+  EXPECT_EQ(a.triangles_drawn, b.triangles_drawn);
+  EXPECT_EQ(a.candidates, b.candidates);
+  EXPECT_EQ(a.fragments, b.fragments);
+  EXPECT_EQ(a.depth_pass, b.depth_pass);
+  EXPECT_EQ(a.depth_fail, b.depth_fail);
+  EXPECT_EQ(a.cycles, b.cycles);
+  expect_same_counters(a.setup, b.setup, "setup");
+  expect_same_counters(a.walker, b.walker, "walker");
+  expect_same_counters(a.z_adder, b.z_adder, "z_adder");
+  expect_same_counters(a.zbuffer, b.zbuffer, "zbuffer");
+  ASSERT_EQ(traced.records.size(), fast.records.size());
+  for (size_t i = 0; i < traced.records.size(); ++i) {
+    const TriangleRecord &r = traced.records[i], &f = fast.records[i];
+    EXPECT_EQ(r.walker_load, f.walker_load) << "triangle " << i;
+    EXPECT_EQ(r.walker_end, f.walker_end) << "triangle " << i;
+    EXPECT_EQ(r.fragments, f.fragments) << "triangle " << i;
+    EXPECT_EQ(r.depth_pass, f.depth_pass) << "triangle " << i;
+    EXPECT_EQ(r.last_write, f.last_write) << "triangle " << i;
+  }
+  EXPECT_TRUE(traced.depth == fast.depth) << "depth buffers differ";
+  EXPECT_TRUE(traced.color == fast.color) << "colour buffers differ";
+}
+
 using Param = std::tuple<Traversal, DepthFunc, int /*memory_latency*/>;
 
 class FastPath : public ::testing::TestWithParam<Param> {};
@@ -45,7 +72,8 @@ class FastPath : public ::testing::TestWithParam<Param> {};
 TEST_P(FastPath, UntracedFrameEqualsTracedFrame) {
   const auto [traversal, depth_func, latency] = GetParam();
   for (uint64_t seed = 1; seed <= 6; ++seed) {
-    Profile profile = make_profile(96, 64, seed % 2 ? 4 : 8, traversal);
+    // z_bits 32 and 16 as well: the widest and narrowest depth registers.
+    Profile profile = make_profile(96, 64, seed % 2 ? 4 : 8, traversal, seed == 5 ? 32 : seed == 6 ? 16 : 24);
     profile.depth_func = depth_func;
     profile.memory_latency = latency;
     profile.shading = seed % 3 ? Shading::Gouraud : Shading::Flat;
@@ -73,32 +101,55 @@ TEST_P(FastPath, UntracedFrameEqualsTracedFrame) {
       }
     }
     const Frame traced = render(profile, triangles, true);
-    const Frame fast = render(profile, triangles, false);
-    SCOPED_TRACE(describe(profile) + " seed " + std::to_string(seed));
     ASSERT_GT(traced.stats.fragments, 0);
-    const FrameStats &a = traced.stats, &b = fast.stats;
-    EXPECT_EQ(a.triangles_drawn, b.triangles_drawn);
-    EXPECT_EQ(a.candidates, b.candidates);
-    EXPECT_EQ(a.fragments, b.fragments);
-    EXPECT_EQ(a.depth_pass, b.depth_pass);
-    EXPECT_EQ(a.depth_fail, b.depth_fail);
-    EXPECT_EQ(a.cycles, b.cycles);
-    expect_same_counters(a.setup, b.setup, "setup");
-    expect_same_counters(a.walker, b.walker, "walker");
-    expect_same_counters(a.z_adder, b.z_adder, "z_adder");
-    expect_same_counters(a.zbuffer, b.zbuffer, "zbuffer");
-    ASSERT_EQ(traced.records.size(), fast.records.size());
-    for (size_t i = 0; i < traced.records.size(); ++i) {
-      const TriangleRecord &r = traced.records[i], &f = fast.records[i];
-      EXPECT_EQ(r.walker_load, f.walker_load) << "triangle " << i;
-      EXPECT_EQ(r.walker_end, f.walker_end) << "triangle " << i;
-      EXPECT_EQ(r.fragments, f.fragments) << "triangle " << i;
-      EXPECT_EQ(r.depth_pass, f.depth_pass) << "triangle " << i;
-      EXPECT_EQ(r.last_write, f.last_write) << "triangle " << i;
+    for (const std::string& kernel : run_kernel_versions()) {
+      select_run_kernel(kernel);
+      SCOPED_TRACE(describe(profile) + " seed " + std::to_string(seed) + ", run kernel " + kernel);
+      expect_same_frame(traced, render(profile, triangles, false));
     }
-    EXPECT_TRUE(traced.depth == fast.depth) << "depth buffers differ";
-    EXPECT_TRUE(traced.color == fast.color) << "colour buffers differ";
+    select_run_kernel(run_kernel_versions().front());
   }
+}
+
+// The run kernels compute a plane register's output without a 64-bit arithmetic shift: equal to
+// PlaneFormat::output() for every register value, wrapped or not, in or out of the output range.
+TEST(FastPath, UnsignedOutputEqualsOutput) {
+  std::mt19937_64 rng(11);
+  for (const auto& [reg_bits, guard_bits, out_max] :
+       {std::tuple{58, 24, (int64_t(1) << 32) - 1}, std::tuple{41, 16, (int64_t(1) << 24) - 1},
+        std::tuple{26, 9, (int64_t(1) << 16) - 1}, std::tuple{30, 21, int64_t(255)}}) {
+    const PlaneFormat format(reg_bits, guard_bits, out_max);
+    for (int i = 0; i < 200000; ++i) {
+      // Random words, and values near 0 and near the output's top, where rounding and clamping act.
+      const uint64_t word = rng();
+      const uint64_t near = uint64_t((int64_t(word % 4096) - 2048) + ((i & 1) ? out_max << guard_bits : 0));
+      for (const uint64_t value : {word, near})
+        ASSERT_EQ(int64_t(format.output_unsigned(value)), format.output(value)) << "value " << value;
+    }
+  }
+}
+
+// The setup's divider: a 64-bit division when both operands fit, 128-bit otherwise; checked
+// against the definition (n = q d + r, 0 <= r < d) on both sides of 2^64.
+TEST(FastPath, FloorDivisionAndBitCountsAgreeWithTheirDefinitions) {
+  std::mt19937_64 rng(12);
+  for (int i = 0; i < 100000; ++i) {
+    const int n_shift = int(rng() % 100), d_shift = int(rng() % 70);
+    i128 n = i128((unsigned __int128)rng() << 64 | rng()) >> (27 + n_shift % 100);
+    const i128 d = (i128((unsigned __int128)rng() << 64 | rng()) & ((i128(1) << (d_shift + 1)) - 1)) + 1;
+    if (i % 7 == 0) n = -n;
+    const FloorDiv q = floor_div(n, d);
+    ASSERT_TRUE(q.quotient * d + q.remainder == n && q.remainder >= 0 && q.remainder < d)
+        << to_string_i128(n) << " / " << to_string_i128(d);
+    const i128 v = n < 0 ? -n : n;
+    const int bits = unsigned_bits(v);
+    ASSERT_TRUE(v < (i128(1) << bits) && (bits == 1 || v >= (i128(1) << (bits - 1)))) << to_string_i128(v);
+  }
+  EXPECT_EQ(unsigned_bits(0), 1);
+  EXPECT_EQ(unsigned_bits(1), 1);
+  EXPECT_EQ(unsigned_bits(2), 2);
+  EXPECT_EQ(unsigned_bits(i128(1) << 64), 65);
+  EXPECT_EQ(unsigned_bits((i128(1) << 64) - 1), 64);
 }
 
 INSTANTIATE_TEST_SUITE_P(AllPaths, FastPath,
