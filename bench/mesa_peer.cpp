@@ -1,12 +1,14 @@
 // Mesa as a speed and coverage peer of the model (docs/performance.md). Renders the same snapped
-// triangles as `rastersim bench` / `rastersim render` through OSMesa (llvmpipe or softpipe), with
-// the depth test on (GL_LESS, depth writes, Gouraud colour), and reports:
-//  - Mesa's fragments: covered pixels that entered the depth test, counted by an occlusion query
-//    in an untimed pass with the depth test off (every covered pixel then passes);
-//  - the time of glDrawArrays + glFinish over the whole list (vertices already in a buffer object,
-//    buffers cleared before the clock starts), best of --repeat;
-//  - coverage against the model: the model's fragment count, and the pixels whose count of covering
-//    triangles differs (stencil GL_INCR_WRAP in Mesa, modulo 256 on both sides).
+// triangles as `rastersim bench` (same options) through OSMesa (llvmpipe or softpipe) with the depth
+// test on (GL_LESS, depth writes, Gouraud colour), and the model untraced in the same process, the
+// repetitions of the two interleaved so that a shared machine's load falls on both alike. Reports:
+//  - fragments: covered pixels that entered the depth test; Mesa's counted by an occlusion query in
+//    an untimed pass with the depth test off (every covered pixel then passes);
+//  - time: Mesa's glDrawArrays + glFinish over the whole list (vertices already in a buffer object,
+//    buffers cleared before the clock starts); the model's render of the list; best of --repeat;
+//  - coverage against the model: the pixels whose count of covering triangles differs (stencil
+//    GL_INCR_WRAP in Mesa, modulo 256 on both sides);
+//  - that the model's timed (untraced) render equals a traced one in every counter and buffer word.
 // Vertices go to Mesa exactly as snapped: X / 2^S pixels, y down fed unflipped (Mesa keeps left
 // edges and, in its y-up window space, edges with the triangle above them: the top-left rule of
 // y-down screens). Mesa snaps to 8 subpixel bits, so S <= 8 reaches it unchanged.
@@ -38,10 +40,7 @@ namespace rastersim {
 namespace {
 
 struct PeerOptions {
-  std::string input, scene;
-  int64_t random = 0;          // > 0: that many random triangles as `rastersim bench`
-  std::string size = "1..32";
-  uint64_t seed = 1;
+  BenchInput what;
   std::string driver = "llvmpipe";
   int repeat = 3;
   int show_differences = 0;  // print the first this many differing pixels
@@ -79,29 +78,16 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 int run(const PeerOptions& o) {
   const Profile profile = resolve_profile(o.profile);
   if (profile.subpixel_bits > 8) throw InputError("Mesa snaps to 8 subpixel bits: --subpixel-bits must be at most 8");
-  std::vector<ScreenTriangle> screen;
   std::string source;
-  if (o.random > 0) {
-    double min_size = 0, max_size = 0;
-    parse_size_range(o.size, min_size, max_size);
-    screen = random_triangles(o.random, min_size, max_size, o.seed, profile);
-    source = std::to_string(o.random) + " random triangles of " + o.size + " pixels, seed " + std::to_string(o.seed);
-  } else {
-    screen = load_input(o.input, o.scene, profile);
-    source = o.input.empty() ? "scene " + (o.scene.empty() ? std::string("default") : o.scene) : o.input;
-  }
-  std::vector<SnappedTriangle> snapped;
-  snapped.reserve(screen.size());
-  for (const ScreenTriangle& t : screen) snapped.push_back(snap(t, profile));
+  const std::vector<SnappedTriangle> snapped = load_bench_triangles(o.what, profile, source);
 
-  // The model's coverage (untimed; its speed is `rastersim bench`'s).
+  // The model's per-pixel coverage (an untimed traced render).
   CoverageCounter model_coverage;
   model_coverage.width = profile.width;
   model_coverage.count.assign(size_t(profile.width) * size_t(profile.height), 0);
   Pipeline pipeline(profile);
   pipeline.set_fragment_sink(&model_coverage);
   for (const SnappedTriangle& t : snapped) pipeline.submit(t);
-  const int64_t model_fragments = pipeline.stats().fragments;
 
   // The driver is chosen when the first context is made.
   setenv("GALLIUM_DRIVER", o.driver.c_str(), 1);
@@ -180,7 +166,12 @@ int run(const PeerOptions& o) {
   glDepthMask(GL_TRUE);
   glClearDepth(1.0);
   double best = 0, best_cpu = 0;
+  ModelRun model_best;
   for (int r = 0; r < o.repeat; ++r) {
+    const ModelRun model = time_model(snapped, profile);
+    if (r == 0 || model.seconds < model_best.seconds) model_best.seconds = model.seconds;
+    if (r == 0 || model.cpu_seconds < model_best.cpu_seconds) model_best.cpu_seconds = model.cpu_seconds;
+    model_best.stats = model.stats;
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glFinish();
     const auto start = std::chrono::steady_clock::now();
@@ -197,17 +188,26 @@ int run(const PeerOptions& o) {
   glDeleteBuffers(1, &buffer);
   OSMesaDestroyContext(context);
 
-  std::printf("mesa_peer: %s, %zu triangles, %dx%d, subpixel_bits %d\n", source.c_str(), snapped.size(), profile.width,
-              profile.height, profile.subpixel_bits);
-  std::printf("renderer          %s, LP_NUM_THREADS=%s\n", renderer.c_str(), std::getenv("LP_NUM_THREADS"));
-  std::printf("wall time         %.6f s (glDrawArrays + glFinish, best of %d)\n", best, o.repeat);
-  std::printf("cpu time          %.6f s (this process)\n", best_cpu);
-  std::printf("triangles         %.4g per second, %.4g per cpu second\n", double(snapped.size()) / best,
-              double(snapped.size()) / best_cpu);
-  std::printf("fragments         %lld, %.4g per second, %.4g per cpu second\n", (long long)mesa_fragments,
+  const std::string difference = untraced_differs_from_traced(snapped, profile);
+  const double model_fragments = double(model_best.stats.fragments), triangles = double(snapped.size());
+  std::printf("mesa_peer: %s, %zu triangles, %dx%d, subpixel_bits %d, best of %d\n", source.c_str(), snapped.size(),
+              profile.width, profile.height, profile.subpixel_bits, o.repeat);
+  std::printf("peer              %s, LP_NUM_THREADS=%s\n", renderer.c_str(), std::getenv("LP_NUM_THREADS"));
+  std::printf("peer time         %.6f s wall, %.6f s cpu (glDrawArrays + glFinish)\n", best, best_cpu);
+  std::printf("peer fragments    %lld, %.4g per second, %.4g per cpu second\n", (long long)mesa_fragments,
               double(mesa_fragments) / best, double(mesa_fragments) / best_cpu);
-  std::printf("model fragments   %lld\n", (long long)model_fragments);
+  std::printf("peer triangles    %.4g per cpu second\n", triangles / best_cpu);
+  std::printf("model time        %.6f s wall, %.6f s cpu (untraced render, %s traversal)\n", model_best.seconds,
+              model_best.cpu_seconds, to_string(profile.traversal));
+  std::printf("model fragments   %lld, %.4g per second, %.4g per cpu second\n", (long long)model_best.stats.fragments,
+              model_fragments / model_best.seconds, model_fragments / model_best.cpu_seconds);
+  std::printf("model triangles   %.4g per cpu second\n", triangles / model_best.cpu_seconds);
+  std::printf("model / peer      %.2f (fragments per cpu second)\n",
+              (model_fragments / model_best.cpu_seconds) / (double(mesa_fragments) / best_cpu));
   std::printf("differing pixels  %lld (count of covering triangles, modulo 256)\n", (long long)differing_pixels);
+  std::printf("model verified    %s\n", difference.empty() ? "untraced render equals a traced one (counters, records, buffers)"
+                                                           : ("NO: " + difference).c_str());
+  if (!difference.empty()) return 1;
   return 0;
 }
 
@@ -220,12 +220,7 @@ int main(int argc, char** argv) {
                "depth test on; fragments per second and coverage against the model",
                "rastersim_mesa_peer"};
   PeerOptions o;
-  app.add_option("input", o.input, "a .tri, .obj or .json scene file (as rastersim render)")->type_name("INPUT");
-  app.add_option("--scene", o.scene, "built-in scene (as rastersim render --scene)")->type_name("NAME");
-  app.add_option("--random", o.random, "render this many random triangles (as rastersim bench --triangles)")
-      ->check(CLI::Range(int64_t(1), int64_t(10000000)));
-  app.add_option("--size", o.size, "random triangle size range in pixels, MIN..MAX")->capture_default_str();
-  app.add_option("--seed", o.seed, "random seed")->capture_default_str();
+  add_bench_input_options(app, o.what);
   app.add_option("--driver", o.driver, "Gallium driver")->check(CLI::IsMember({"llvmpipe", "softpipe"}))
       ->capture_default_str();
   app.add_option("--repeat", o.repeat, "timed repetitions; the best is reported")->check(CLI::Range(1, 100))

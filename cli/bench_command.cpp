@@ -2,6 +2,7 @@
 
 #include <time.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -38,30 +39,31 @@ void parse_size_range(const std::string& text, double& min_size, double& max_siz
     throw InputError("--size '" + text + "': expected MIN..MAX in pixels with 0 < MIN <= MAX <= 1e6");
 }
 
+void add_bench_input_options(CLI::App& cmd, BenchInput& o) {
+  cmd.add_option("input", o.input, "a .tri, .obj or .json file instead of random triangles")->type_name("INPUT");
+  cmd.add_option("--scene", o.scene, "a built-in scene instead of random triangles (see `rastersim scenes`)")
+      ->type_name("NAME");
+  cmd.add_option("--triangles", o.triangles, "number of random triangles")
+      ->check(CLI::Range(int64_t(1), int64_t(10000000)))
+      ->capture_default_str();
+  cmd.add_option("--size", o.size, "random triangle size range in pixels, MIN..MAX")->capture_default_str();
+  cmd.add_option("--seed", o.seed, "random seed")->capture_default_str();
+}
+
 CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "bench", "measure model throughput (no tracing) on random triangles, or on an INPUT or --scene as render takes");
-  cmd->add_option("input", o.input, "a .tri, .obj or .json file instead of random triangles")->type_name("INPUT");
-  cmd->add_option("--scene", o.scene, "a built-in scene instead of random triangles (see `rastersim scenes`)")
-      ->type_name("NAME");
-  cmd->add_option("--triangles", o.triangles, "number of triangles")->check(CLI::Range(int64_t(1), int64_t(10000000)))
-      ->capture_default_str();
-  cmd->add_option("--size", o.size, "triangle size range in pixels, MIN..MAX")->capture_default_str();
-  cmd->add_option("--seed", o.seed, "random seed")->capture_default_str();
+  add_bench_input_options(*cmd, o.what);
   cmd->add_option("--repeat", o.repeat, "timed repetitions; the best is reported")->check(CLI::Range(1, 100))
       ->capture_default_str();
   add_profile_options(*cmd, o.profile);
   return cmd;
 }
 
-int run_bench(const BenchOptions& o) {
-  const Profile profile = resolve_profile(o.profile);
+std::vector<SnappedTriangle> load_bench_triangles(const BenchInput& o, const Profile& profile, std::string& source) {
   double min_size = 0, max_size = 0;
   parse_size_range(o.size, min_size, max_size);
-
-  // Loading, generation and snapping stay outside the timed region.
   std::vector<ScreenTriangle> screen;
-  std::string source;
   if (!o.input.empty() || !o.scene.empty()) {
     screen = load_input(o.input, o.scene, profile);
     source = o.input.empty() ? "scene " + o.scene : o.input;
@@ -75,39 +77,125 @@ int run_bench(const BenchOptions& o) {
   std::vector<SnappedTriangle> snapped;
   snapped.reserve(screen.size());
   for (const ScreenTriangle& t : screen) snapped.push_back(snap(t, profile));
-  std::vector<ScreenTriangle>().swap(screen);  // only the snapped list is rendered
+  return snapped;
+}
 
-  double best_seconds = 0, best_cpu_seconds = 0;
+ModelRun time_model(const std::vector<SnappedTriangle>& triangles, const Profile& profile) {
+  Pipeline pipeline(profile);  // allocated and cleared outside the timed region
+  ModelRun run;
+  const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = process_cpu_seconds();
+  for (const SnappedTriangle& t : triangles) pipeline.submit(t);
+  run.stats = pipeline.stats();
+  run.cpu_seconds = process_cpu_seconds() - cpu_start;
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+namespace {
+
+struct CountingSink : FragmentSink {
+  int64_t fragments = 0;
+  void on_fragment(const Fragment&) override { ++fragments; }
+};
+
+struct RenderedFrame {
   FrameStats stats;
+  std::vector<TriangleRecord> records;
+  std::vector<uint32_t> depth, color;
+};
+
+RenderedFrame render_frame(const std::vector<SnappedTriangle>& triangles, const Profile& profile, FragmentSink* sink) {
+  Pipeline pipeline(profile);
+  RenderedFrame frame;
+  pipeline.set_fragment_sink(sink);
+  pipeline.set_triangle_log(&frame.records);
+  for (const SnappedTriangle& t : triangles) pipeline.submit(t);
+  frame.stats = pipeline.stats();
+  frame.depth = pipeline.zbuffer().depth();
+  frame.color = pipeline.zbuffer().color();
+  return frame;
+}
+
+bool same_records(const TriangleRecord& a, const TriangleRecord& b) {
+  return a.status == b.status && a.setup_accept == b.setup_accept && a.setup_done == b.setup_done &&
+         a.walker_load == b.walker_load && a.walker_end == b.walker_end && a.fragments == b.fragments &&
+         a.depth_pass == b.depth_pass && a.last_write == b.last_write;
+}
+
+bool same_stats(const FrameStats& a, const FrameStats& b) {
+  auto same_unit = [](const UnitCounters& x, const UnitCounters& y) { return x.busy == y.busy && x.stall == y.stall; };
+  return a.triangles == b.triangles && a.triangles_culled == b.triangles_culled &&
+         a.triangles_degenerate == b.triangles_degenerate && a.triangles_offscreen == b.triangles_offscreen &&
+         a.triangles_drawn == b.triangles_drawn && a.candidates == b.candidates && a.fragments == b.fragments &&
+         a.depth_pass == b.depth_pass && a.depth_fail == b.depth_fail && a.cycles == b.cycles &&
+         same_unit(a.setup, b.setup) && same_unit(a.walker, b.walker) && same_unit(a.z_adder, b.z_adder) &&
+         same_unit(a.zbuffer, b.zbuffer);
+}
+
+}  // namespace
+
+std::string untraced_differs_from_traced(const std::vector<SnappedTriangle>& triangles, const Profile& profile) {
+  CountingSink sink;
+  const RenderedFrame traced = render_frame(triangles, profile, &sink);
+  const RenderedFrame untraced = render_frame(triangles, profile, nullptr);
+  if (sink.fragments != traced.stats.fragments) return "the traced render's sink saw a different fragment count";
+  if (!same_stats(traced.stats, untraced.stats)) return "frame counters differ";
+  if (traced.records.size() != untraced.records.size()) return "triangle record counts differ";
+  for (size_t i = 0; i < traced.records.size(); ++i)
+    if (!same_records(traced.records[i], untraced.records[i])) return "triangle " + std::to_string(i) + "'s record differs";
+  if (traced.depth != untraced.depth) return "depth buffers differ";
+  if (traced.color != untraced.color) return "colour buffers differ";
+  return "";
+}
+
+int run_bench(const BenchOptions& o) {
+  const Profile profile = resolve_profile(o.profile);
+  std::string source;
+  const std::vector<SnappedTriangle> snapped = load_bench_triangles(o.what, profile, source);
+
+  ModelRun best;
   for (int r = 0; r < o.repeat; ++r) {
-    Pipeline pipeline(profile);
-    const auto start = std::chrono::steady_clock::now();
-    const double cpu_start = process_cpu_seconds();
-    for (const SnappedTriangle& t : snapped) pipeline.submit(t);
-    const FrameStats& run_stats = pipeline.stats();
-    const double cpu_seconds = process_cpu_seconds() - cpu_start;
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (r == 0 || seconds < best_seconds) best_seconds = seconds;
-    if (r == 0 || cpu_seconds < best_cpu_seconds) best_cpu_seconds = cpu_seconds;
-    if (r > 0 && (run_stats.fragments != stats.fragments || run_stats.cycles != stats.cycles)) {
+    const ModelRun run = time_model(snapped, profile);
+    if (r > 0 && (run.stats.fragments != best.stats.fragments || run.stats.cycles != best.stats.cycles)) {
       std::fprintf(stderr, "rastersim: repetition %d gave different fragments or cycles: the model is not deterministic\n", r);
       return 1;
     }
-    stats = run_stats;
+    if (r == 0 || run.seconds < best.seconds) best.seconds = run.seconds;
+    if (r == 0 || run.cpu_seconds < best.cpu_seconds) best.cpu_seconds = run.cpu_seconds;
+    best.stats = run.stats;
+  }
+  const std::string difference = untraced_differs_from_traced(snapped, profile);
+  if (!difference.empty()) {
+    std::fprintf(stderr, "rastersim: the untraced (timed) render differs from the traced one: %s\n", difference.c_str());
+    return 1;
   }
 
+  const FrameStats& stats = best.stats;
   const double n = double(snapped.size()), fragments = double(stats.fragments);
   std::printf("bench: %s, %zu triangles, %dx%d, %s traversal, %s shading, best of %d\n", source.c_str(),
               snapped.size(), profile.width, profile.height, to_string(profile.traversal), to_string(profile.shading),
               o.repeat);
-  std::printf("wall time   %.6f s (render only)\n", best_seconds);
-  std::printf("cpu time    %.6f s (render only, this process)\n", best_cpu_seconds);
-  std::printf("triangles   %.4g per second, %.4g per cpu second\n", n / best_seconds, n / best_cpu_seconds);
+  std::printf("wall time   %.6f s (render only)\n", best.seconds);
+  std::printf("cpu time    %.6f s (render only, this process)\n", best.cpu_seconds);
+  std::printf("triangles   %.4g per second, %.4g per cpu second\n", n / best.seconds, n / best.cpu_seconds);
   std::printf("fragments   %lld, %.4g per second, %.4g per cpu second\n", (long long)stats.fragments,
-              fragments / best_seconds, fragments / best_cpu_seconds);
+              fragments / best.seconds, fragments / best.cpu_seconds);
   std::printf("candidates  %lld\n", (long long)stats.candidates);
   std::printf("cycles      %lld (%.3f fragments per clock, %.4g simulated cycles per second)\n", (long long)stats.cycles,
-              stats.cycles > 0 ? double(stats.fragments) / double(stats.cycles) : 0.0, double(stats.cycles) / best_seconds);
+              stats.cycles > 0 ? double(stats.fragments) / double(stats.cycles) : 0.0, double(stats.cycles) / best.seconds);
+  // The hardware's view (cycles are the model's, which the RTL equals): where the clocks went.
+  const Widths widths = derive_widths(profile);
+  const double cycles = double(std::max<int64_t>(stats.cycles, 1));
+  const int64_t walker_idle = stats.cycles - stats.walker.busy - stats.walker.stall;
+  std::printf("throughput  %.3f fragments per clock (bound 1), %.1f cycles per triangle\n", fragments / cycles,
+              cycles / std::max(n, 1.0));
+  std::printf("walker      busy %.1f%%, stalled by z-buffer hazards %.1f%%, idle (waiting for setup) %.1f%% of cycles\n",
+              100.0 * double(stats.walker.busy) / cycles, 100.0 * double(stats.walker.stall) / cycles,
+              100.0 * double(walker_idle) / cycles);
+  std::printf("setup       latency %d cycles per drawn triangle, %d per rejected; busy %.1f%% of cycles\n",
+              widths.setup_cycles, widths.setup_front_cycles, 100.0 * double(stats.setup.busy) / cycles);
+  std::printf("verified    counters, triangle records and buffers equal a traced render's\n");
   return 0;
 }
 

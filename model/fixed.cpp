@@ -18,4 +18,9 @@ std::string to_string_i128(i128 v) {
   return digits;
 }
 
+void throw_width_overflow(i128 v, int bits, const char* what) {
+  throw WidthOverflow(std::string("value ") + to_string_i128(v) + " of " + what + " does not fit s" +
+                      std::to_string(bits));
+}
+
 }  // namespace rastersim

@@ -71,10 +71,9 @@ class Reg {
 };
 
 // Throws WidthOverflow naming the register when v does not fit a signed register of `bits`.
+[[noreturn]] void throw_width_overflow(i128 v, int bits, const char* what);  // kept out of line: a rare path
 inline void check_signed(i128 v, int bits, const char* what) {
-  if (!fits_signed(v, bits))
-    throw WidthOverflow(std::string("value ") + to_string_i128(v) + " of " + what +
-                        " does not fit s" + std::to_string(bits));
+  if (!fits_signed(v, bits)) throw_width_overflow(v, bits, what);
 }
 
 // Reduces v modulo 2^bits into the signed range: what a two's-complement register of `bits` holds.
