@@ -1,0 +1,111 @@
+#!/usr/bin/env bash
+# Formal proofs of RTL units with stock yosys `sat` (docs/robustness.md). Each proof copies one
+# unit from rtl/ into a temporary folder with its property files from tests/formal/ included at
+# the end of the module, sets small parameters (the RTL is width-generic) and runs `sat`:
+#   z_adder_recurrence  plane_register: the Z adder's recurrence equals the absolute form
+#                       (temporal induction: any number of steps)
+#   walker_edges        scanline_walker: stepped edge values equal the absolute form and coverage
+#                       is their sign test (bounded: 6 cycles)
+#   walker_bounds       scanline_walker: fragments never leave the bounding box or the screen
+#                       (bounded: 14 cycles)
+#   zbuffer_hazard      zbuffer: read-after-write hazard logic, result timing, every read sees
+#                       all earlier writes (bounded: 10 cycles, latencies 1..4)
+# With --mutants, each proof instead runs on a copy of its unit with one deliberate bug (a
+# sed substitution that must apply) and must FAIL with a counterexample.
+# Usage: scripts/formal.sh [--mutants] [PROOF ...]   exit 0: every proof (or every mutant's
+# failure) as expected; 1 otherwise.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+mutants=0
+proofs=()
+for arg in "$@"; do
+  case "$arg" in
+    --mutants) mutants=1 ;;
+    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "formal.sh: unknown option $arg" >&2; exit 2 ;;
+    *) proofs+=("$arg") ;;
+  esac
+done
+all=(z_adder_recurrence walker_edges walker_bounds zbuffer_hazard)
+[ ${#proofs[@]} -eq 0 ] && proofs=("${all[@]}")
+
+# Per proof: unit, property files, parameters, sat mode, and the mutant's substitution.
+declare -A unit includes params mode mutation
+unit[z_adder_recurrence]=plane_register
+includes[z_adder_recurrence]="plane_register_recurrence.svh"
+params[z_adder_recurrence]="REG_BITS 6 GUARD_BITS 2 OUT_BITS 3 OFFSET_BITS 2"
+mode[z_adder_recurrence]="-tempinduct"
+mutation[z_adder_recurrence]='s/value <= value + step_x_q;/value <= value + step_y_q;/'
+
+unit[walker_edges]=scanline_walker
+includes[walker_edges]="scanline_walker_inputs.svh scanline_walker_edges.svh"
+params[walker_edges]="WIDTH 2 HEIGHT 2 SUBPIXEL_BITS 1"
+mode[walker_edges]="-seq 6"
+mutation[walker_edges]='s/edge_value\[i\] <= edge_row\[i\] + step_y\[i\];/edge_value[i] <= edge_row[i];/'
+
+unit[walker_bounds]=scanline_walker
+includes[walker_bounds]="scanline_walker_inputs.svh scanline_walker_bounds.svh"
+params[walker_bounds]="WIDTH 4 HEIGHT 3 SUBPIXEL_BITS 1"
+mode[walker_bounds]="-seq 14"
+mutation[walker_bounds]='s/    span_hi = last_offset;/    span_hi = last_offset + 1;/'
+
+unit[zbuffer_hazard]=zbuffer
+includes[zbuffer_hazard]="zbuffer_hazard.svh"
+params[zbuffer_hazard]="WIDTH 2 HEIGHT 2 Z_BITS 2 MAX_MEMORY_LATENCY 4"
+mode[zbuffer_hazard]="-seq 10"
+mutation[zbuffer_hazard]='s/if (age <= cfg_memory_latency \&\& ring_valid\[slot\])/if (age < cfg_memory_latency \&\& ring_valid[slot])/'
+
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+status=0
+for proof in "${proofs[@]}"; do
+  [ -n "${unit[$proof]:-}" ] || { echo "formal.sh: unknown proof '$proof' (${all[*]})" >&2; exit 2; }
+  top="${unit[$proof]}"
+  dir="$work/$proof"
+  mkdir -p "$dir"
+  source_file="$root/rtl/$top.sv"
+  if [ $mutants -eq 1 ]; then
+    sed "${mutation[$proof]}" "$source_file" > "$dir/mutant.sv"
+    if cmp -s "$source_file" "$dir/mutant.sv"; then
+      echo "formal.sh: the mutation of $proof no longer applies to rtl/$top.sv" >&2
+      status=1
+      continue
+    fi
+    source_file="$dir/mutant.sv"
+  fi
+  # The unit with `include lines for its properties before its last endmodule.
+  lines=""
+  for f in ${includes[$proof]}; do lines+="\`include \"$f\""$'\n'; done
+  last="$(grep -n '^endmodule' "$source_file" | tail -1 | cut -d: -f1)"
+  { head -n $((last - 1)) "$source_file"; printf '%s' "$lines"; tail -n +"$last" "$source_file"; } > "$dir/$top.sv"
+  chparam=""
+  set -- ${params[$proof]}
+  while [ $# -gt 0 ]; do chparam+=" -chparam $1 $2"; shift 2; done
+  # -defer: elaborate at the small parameters only (the defaults build 640 x 480 memories).
+  script="read_verilog -defer -sv -formal -mem2reg -I$root/rtl -I$root/tests/formal $dir/$top.sv;"
+  script+=" hierarchy -top $top$chparam; prep -top $top -flatten; async2sync; dffunmap;"
+  script+=" sat ${mode[$proof]} -prove-asserts -set-assumes -set-init-zero -show-public -verify $top"
+  start=$(date +%s)
+  if yosys -q -l "$dir/yosys.log" -p "$script" > /dev/null 2>&1; then proved=1; else proved=0; fi
+  seconds=$(( $(date +%s) - start ))
+  failed_proof=0
+  grep -q "proof did fail" "$dir/yosys.log" && failed_proof=1
+  if [ $mutants -eq 0 ]; then
+    if [ $proved -eq 1 ]; then
+      echo "formal: $proof proven ($top, ${mode[$proof]}, ${seconds} s)"
+    else
+      echo "formal: $proof FAILED ($top, ${mode[$proof]}, ${seconds} s); counterexample and log:"
+      grep -E "ERROR|Time|\\\\" "$dir/yosys.log" | tail -80
+      status=1
+    fi
+  else
+    if [ $failed_proof -eq 1 ]; then
+      echo "formal: $proof mutant caught ($top: ${mutation[$proof]}, ${seconds} s)"
+    else
+      echo "formal: $proof mutant NOT caught ($top: ${mutation[$proof]}, ${seconds} s)"
+      tail -20 "$dir/yosys.log"
+      status=1
+    fi
+  fi
+done
+exit $status

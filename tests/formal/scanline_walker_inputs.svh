@@ -1,0 +1,36 @@
+// Included at the end of rtl/scanline_walker.sv by scripts/formal.sh (formal runs only): what the
+// walker may assume of its inputs, and a record of the triangle it took at its last load.
+// The setup unit hands over a bounding box inside the screen (x0 <= x1 < WIDTH, y0 <= y1 < HEIGHT),
+// and the traversal does not change mid-walk; edge values, steps and span quotients are free.
+// The proof starts in the reset state (all registers zero: IDLE) and rst stays low.
+  reg f_loaded = 1'b0;
+  reg f_traversal;
+  reg [XB-1:0] f_x0, f_x1;
+  reg [YB-1:0] f_y0, f_y1;
+  reg signed [EB-1:0] f_start [0:2];
+  reg signed [EB-1:0] f_step_x [0:2];
+  reg signed [EB-1:0] f_step_y [0:2];
+  integer f_k;
+  always @(posedge clk) begin
+    if (load) begin
+      f_loaded <= 1'b1;
+      f_traversal <= cfg_traversal;
+      f_x0 <= in_x0;
+      f_x1 <= in_x1;
+      f_y0 <= in_y0;
+      f_y1 <= in_y1;
+      for (f_k = 0; f_k < 3; f_k = f_k + 1) begin
+        f_start[f_k] <= in_edge_start[f_k*EB +: EB];
+        f_step_x[f_k] <= $signed(in_edge_step_x[f_k*SXB +: SXB]);  // sign-extended by the assignment
+        f_step_y[f_k] <= $signed(in_edge_step_y[f_k*SYB +: SYB]);
+      end
+    end
+  end
+
+  always @* begin
+    assume(!rst);
+    if (state == IDLE && in_valid) begin
+      assume(in_x0 <= in_x1 && in_x1 <= WIDTH - 1 && in_y0 <= in_y1 && in_y1 <= HEIGHT - 1);
+    end
+    if (state != IDLE) assume(cfg_traversal == f_traversal);
+  end
