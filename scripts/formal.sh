@@ -29,31 +29,16 @@ done
 all=(z_adder_recurrence walker_edges walker_bounds zbuffer_hazard)
 [ ${#proofs[@]} -eq 0 ] && proofs=("${all[@]}")
 
-# Per proof: unit, property files, parameters, sat mode, and the mutant's substitution.
+# Per proof: unit | property files | parameters | sat mode | the mutant's sed substitution.
 declare -A unit includes params mode mutation
-unit[z_adder_recurrence]=plane_register
-includes[z_adder_recurrence]="plane_register_recurrence.svh"
-params[z_adder_recurrence]="REG_BITS 6 GUARD_BITS 2 OUT_BITS 3 OFFSET_BITS 2"
-mode[z_adder_recurrence]="-tempinduct"
-mutation[z_adder_recurrence]='s/value <= value + step_x_q;/value <= value + step_y_q;/'
-
-unit[walker_edges]=scanline_walker
-includes[walker_edges]="scanline_walker_inputs.svh scanline_walker_edges.svh"
-params[walker_edges]="WIDTH 2 HEIGHT 2 SUBPIXEL_BITS 1"
-mode[walker_edges]="-seq 6"
-mutation[walker_edges]='s/edge_value\[i\] <= edge_row\[i\] + step_y\[i\];/edge_value[i] <= edge_row[i];/'
-
-unit[walker_bounds]=scanline_walker
-includes[walker_bounds]="scanline_walker_inputs.svh scanline_walker_bounds.svh"
-params[walker_bounds]="WIDTH 4 HEIGHT 3 SUBPIXEL_BITS 1"
-mode[walker_bounds]="-seq 14"
-mutation[walker_bounds]='s/    span_hi = last_offset;/    span_hi = last_offset + 1;/'
-
-unit[zbuffer_hazard]=zbuffer
-includes[zbuffer_hazard]="zbuffer_hazard.svh"
-params[zbuffer_hazard]="WIDTH 2 HEIGHT 2 Z_BITS 2 MAX_MEMORY_LATENCY 4"
-mode[zbuffer_hazard]="-seq 10"
-mutation[zbuffer_hazard]='s/if (age <= cfg_memory_latency \&\& ring_valid\[slot\])/if (age < cfg_memory_latency \&\& ring_valid[slot])/'
+while IFS='|' read -r name u inc par m mut; do
+  unit[$name]=$u includes[$name]=$inc params[$name]=$par mode[$name]=$m mutation[$name]=$mut
+done <<'TABLE'
+z_adder_recurrence|plane_register|plane_register_recurrence.svh|REG_BITS 6 GUARD_BITS 2 OUT_BITS 3 OFFSET_BITS 2|-tempinduct|s/value <= value + step_x_q;/value <= value + step_y_q;/
+walker_edges|scanline_walker|scanline_walker_inputs.svh scanline_walker_edges.svh|WIDTH 2 HEIGHT 2 SUBPIXEL_BITS 1|-seq 6|s/edge_value\[i\] <= edge_row\[i\] + step_y\[i\];/edge_value[i] <= edge_row[i];/
+walker_bounds|scanline_walker|scanline_walker_inputs.svh scanline_walker_bounds.svh|WIDTH 4 HEIGHT 3 SUBPIXEL_BITS 1|-seq 14|s/    span_hi = last_offset;/    span_hi = last_offset + 1;/
+zbuffer_hazard|zbuffer|zbuffer_hazard.svh|WIDTH 2 HEIGHT 2 Z_BITS 2 MAX_MEMORY_LATENCY 4|-seq 10|s/if (age <= cfg_memory_latency \&\& ring_valid\[slot\])/if (age < cfg_memory_latency \&\& ring_valid[slot])/
+TABLE
 
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
