@@ -105,4 +105,13 @@ std::vector<int> covered_in_row(const SnappedTriangle& tri, const Profile& profi
   return out;
 }
 
+i128 absolute_plane(const PlaneSetup& plane, const SetupResult& s, int x, int y) {
+  return i128(plane.start) + i128(x - s.x0) * plane.step_x + i128(y - s.y0) * plane.step_y;
+}
+
+int64_t rounded_plane_output(int64_t register_value, int guard_bits, int64_t max) {
+  const i128 rounded = (i128(register_value) + (i128(1) << (guard_bits - 1))) >> guard_bits;
+  return int64_t(rounded < 0 ? 0 : rounded > max ? max : rounded);
+}
+
 }  // namespace rastersim::reference

@@ -8,6 +8,7 @@
 
 #include "model/profile.h"
 #include "model/triangle.h"
+#include "model/triangle_setup.h"
 
 namespace rastersim::reference {
 
@@ -46,5 +47,13 @@ PixelRect bounding_box(const SnappedTriangle& tri, const Profile& profile);
 
 // The covered pixels of row j (left to right), testing every pixel of the row.
 std::vector<int> covered_in_row(const SnappedTriangle& tri, const Profile& profile, int j);
+
+// A setup plane's absolute form at pixel (x, y), exact (docs/arithmetic.md, section 3):
+// start + (x - x0) step_x + (y - y0) step_y.
+i128 absolute_plane(const PlaneSetup& plane, const SetupResult& s, int x, int y);
+
+// The rounded, clamped output of a plane register (docs/arithmetic.md):
+// clamp((V + 2^(F-1)) >> F, 0, max).
+int64_t rounded_plane_output(int64_t register_value, int guard_bits, int64_t max);
 
 }  // namespace rastersim::reference

@@ -13,6 +13,7 @@
 #include "model/scanline_walker.h"
 #include "model/triangle_setup.h"
 #include "model/z_adder.h"
+#include "reference.h"
 #include "test_util.h"
 
 namespace rastersim {
@@ -25,16 +26,6 @@ int64_t reduce_to_register(i128 v, int bits) {
   using u128 = unsigned __int128;
   const u128 low = u128(v) & ((u128(1) << bits) - 1);
   return low >= (u128(1) << (bits - 1)) ? int64_t(i128(low) - (i128(1) << bits)) : int64_t(low);
-}
-
-i128 absolute_form(const PlaneSetup& plane, const SetupResult& s, int x, int y) {
-  return i128(plane.start) + i128(x - s.x0) * plane.step_x + i128(y - s.y0) * plane.step_y;
-}
-
-// The rounded output of docs/arithmetic.md: clamp((V + 2^(F-1)) >> F, 0, max).
-int64_t rounded_output(int64_t register_value, int guard_bits, int64_t max) {
-  const i128 rounded = (i128(register_value) + (i128(1) << (guard_bits - 1))) >> guard_bits;
-  return int64_t(rounded < 0 ? 0 : rounded > max ? max : rounded);
 }
 
 struct RegisterSink {
@@ -56,18 +47,18 @@ struct RegisterSink {
       first_error = "pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): " + what + " is " +
                     std::to_string(model) + ", expected " + std::to_string(expected);
     };
-    const int64_t depth = reduce_to_register(absolute_form(setup->depth, *setup, x, y), widths.z_reg_bits);
+    const int64_t depth = reduce_to_register(reference::absolute_plane(setup->depth, *setup, x, y), widths.z_reg_bits);
     if (adders.depth_register().value() != depth) return fail("depth register", adders.depth_register().value(), depth);
-    const int64_t depth_out = rounded_output(depth, widths.guard_bits, (int64_t(1) << z_bits) - 1);
+    const int64_t depth_out = reference::rounded_plane_output(depth, widths.guard_bits, (int64_t(1) << z_bits) - 1);
     if (adders.depth() != depth_out) return fail("depth output", adders.depth(), depth_out);
     if (!gouraud) return;
     const Rgb color = adders.color();
     const uint8_t outputs[3] = {color.r, color.g, color.b};
     for (int c = 0; c < 3; ++c) {
-      const int64_t value = reduce_to_register(absolute_form(setup->color[c], *setup, x, y), widths.color_reg_bits);
+      const int64_t value = reduce_to_register(reference::absolute_plane(setup->color[c], *setup, x, y), widths.color_reg_bits);
       if (adders.color_register(c).value() != value)
         return fail("colour register " + std::to_string(c), adders.color_register(c).value(), value);
-      const int64_t out = rounded_output(value, widths.guard_bits, 255);
+      const int64_t out = reference::rounded_plane_output(value, widths.guard_bits, 255);
       if (outputs[c] != out) return fail("colour output " + std::to_string(c), outputs[c], out);
     }
   }

@@ -93,16 +93,6 @@ std::string where(int x, int y) { return "pixel (" + std::to_string(x) + ", " + 
 // v modulo 2^bits in the two's-complement range: what a wrapping register of `bits` holds.
 int64_t reduce(i128 v, int bits) { return wrap_signed(v, bits); }
 
-i128 absolute_plane(const PlaneSetup& plane, const SetupResult& s, int x, int y) {
-  return i128(plane.start) + i128(x - s.x0) * plane.step_x + i128(y - s.y0) * plane.step_y;
-}
-
-// The rounded, clamped plane output of docs/arithmetic.md: clamp((V + 2^(F-1)) >> F, 0, max).
-int64_t rounded(int64_t value, int guard_bits, int64_t max) {
-  const i128 r = (i128(value) + (i128(1) << (guard_bits - 1))) >> guard_bits;
-  return int64_t(r < 0 ? 0 : r > max ? max : r);
-}
-
 struct Checker {
   const Profile& p;
   const SnappedTriangle& tri;
@@ -119,13 +109,13 @@ struct Checker {
     }
     FUZZ_REQUIRE(inside == reference::covers(tri, p.subpixel_bits, x, y),
                  "edge sign test disagrees with the reference at " + where(x, y));
-    if (inside) depth(x, y, reduce(absolute_plane(s.depth, s, x, y), w.z_reg_bits));
+    if (inside) depth(x, y, reduce(reference::absolute_plane(s.depth, s, x, y), w.z_reg_bits));
   }
 
   void depth(int x, int y, int64_t depth_register) const {
     if (!depth_claim) return;
     const uint32_t z[3] = {tri.v[0].z, tri.v[1].z, tri.v[2].z};
-    const int64_t out = rounded(depth_register, w.guard_bits, p.depth_max());
+    const int64_t out = reference::rounded_plane_output(depth_register, w.guard_bits, p.depth_max());
     FUZZ_REQUIRE(reference::within_one_lsb(out, reference::plane_at_centre(tri, z, p.subpixel_bits, x, y)),
                  "depth " + std::to_string(out) + " not within 1 LSB of the exact plane at " + where(x, y));
   }
@@ -140,12 +130,12 @@ struct WalkSink {
     const SetupResult& s = check->s;
     const Widths& w = check->w;
     pixels.push_back({x, y});
-    const int64_t depth = reduce(absolute_plane(s.depth, s, x, y), w.z_reg_bits);
+    const int64_t depth = reduce(reference::absolute_plane(s.depth, s, x, y), w.z_reg_bits);
     FUZZ_REQUIRE(adders.depth_register().value() == depth, "depth register differs from its absolute form at " + where(x, y));
     check->depth(x, y, depth);
     if (gouraud)
       for (int c = 0; c < 3; ++c)
-        FUZZ_REQUIRE(adders.color_register(c).value() == reduce(absolute_plane(s.color[c], s, x, y), w.color_reg_bits),
+        FUZZ_REQUIRE(adders.color_register(c).value() == reduce(reference::absolute_plane(s.color[c], s, x, y), w.color_reg_bits),
                      "colour register differs from its absolute form at " + where(x, y));
     return cycle;
   }
