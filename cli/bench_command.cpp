@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "backend.h"
 #include "builtin_scenes.h"
 #include "inputs.h"
 #include "model/input_error.h"
@@ -54,6 +55,11 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "bench", "measure model throughput (no tracing) on random triangles, or on an INPUT or --scene as render takes");
   add_bench_input_options(*cmd, o.what);
+  cmd->add_option("--backend", o.backend,
+                  "model: untraced model speed; rtl, cosim: simulation speed of the verilated RTL alone or in "
+                  "lockstep with the model")
+      ->check(CLI::IsMember(backend_names()))
+      ->capture_default_str();
   cmd->add_option("--repeat", o.repeat, "timed repetitions; the best is reported")->check(CLI::Range(1, 100))
       ->capture_default_str();
   add_profile_options(*cmd, o.profile);
@@ -149,10 +155,49 @@ std::string untraced_differs_from_traced(const std::vector<SnappedTriangle>& tri
   return "";
 }
 
+namespace {
+
+// Simulation speed: whole frames through the RTL backend (model construction, memory clear,
+// frame, final memories) or through co-simulation (the same plus the traced model and the
+// comparison), best of `repeat`.
+int run_simulation_bench(const BenchOptions& o, Backend backend, const Profile& profile,
+                         const std::vector<SnappedTriangle>& snapped, const std::string& source) {
+  check_backend_profile(backend, profile);
+  double best = 0, best_cpu = 0;
+  RenderResult result;
+  for (int r = 0; r < o.repeat; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = process_cpu_seconds();
+    result = render_triangles(backend, profile, snapped, nullptr, nullptr);
+    const double cpu_seconds = process_cpu_seconds() - cpu_start;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (result.check_failed) {
+      std::fprintf(stderr, "rastersim: %s\n", result.report.c_str());
+      return 1;
+    }
+    if (r == 0 || seconds < best) best = seconds;
+    if (r == 0 || cpu_seconds < best_cpu) best_cpu = cpu_seconds;
+  }
+  const double cycles = double(result.stats.cycles);
+  std::printf("bench: %s, %zu triangles, %dx%d, %s traversal, backend %s, best of %d\n", source.c_str(), snapped.size(),
+              profile.width, profile.height, to_string(profile.traversal), o.backend.c_str(), o.repeat);
+  std::printf("wall time   %.6f s (whole frame)\n", best);
+  std::printf("cpu time    %.6f s (whole frame, this process)\n", best_cpu);
+  std::printf("cycles      %lld, %.4g per second, %.4g per cpu second\n", (long long)result.stats.cycles, cycles / best,
+              cycles / best_cpu);
+  std::printf("fragments   %lld\n", (long long)result.stats.fragments);
+  if (backend == Backend::Cosim) std::printf("verified    model and RTL agree on every event and word\n");
+  return 0;
+}
+
+}  // namespace
+
 int run_bench(const BenchOptions& o) {
   const Profile profile = resolve_profile(o.profile);
+  const Backend backend = select_backend(o.backend);
   std::string source;
   const std::vector<SnappedTriangle> snapped = load_bench_triangles(o.what, profile, source);
+  if (backend != Backend::Model) return run_simulation_bench(o, backend, profile, snapped, source);
 
   ModelRun best;
   for (int r = 0; r < o.repeat; ++r) {

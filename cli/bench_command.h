@@ -25,6 +25,7 @@ struct BenchInput {
 
 struct BenchOptions {
   BenchInput what;
+  std::string backend = "model";  // rtl, cosim: simulation speed (cycles per second) instead
   int repeat = 3;
   ProfileOptions profile;
 };
