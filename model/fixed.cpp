@@ -18,6 +18,11 @@ std::string to_string_i128(i128 v) {
   return digits;
 }
 
+void throw_register_overflow(int64_t value, int bits, bool is_signed) {
+  throw WidthOverflow("value " + std::to_string(value) + " does not fit the register's " + (is_signed ? "s" : "u") +
+                      std::to_string(bits));
+}
+
 void throw_width_overflow(i128 v, int bits, const char* what) {
   throw WidthOverflow(std::string("value ") + to_string_i128(v) + " of " + what + " does not fit s" +
                       std::to_string(bits));

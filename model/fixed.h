@@ -38,6 +38,8 @@ constexpr bool fits_signed(i128 v, int bits) {
 
 std::string to_string_i128(i128 v);
 
+[[noreturn]] void throw_register_overflow(int64_t value, int bits, bool is_signed);  // out of line: a rare path
+
 // A register whose width and signedness are part of its type. `Bits` is the register's width in
 // the largest profile (widths.h asserts that it covers derive_widths there); a value enters only
 // through a check, so storing a value the register cannot hold throws instead of wrapping. The
@@ -62,9 +64,7 @@ class Reg {
 
  private:
   static constexpr int64_t checked(int64_t value) {
-    if (value < min || value > max)
-      throw WidthOverflow("value " + std::to_string(value) + " does not fit the register's " +
-                          (Signed ? "s" : "u") + std::to_string(Bits));
+    if (value < min || value > max) throw_register_overflow(value, Bits, Signed);
     return value;
   }
   int64_t value_ = 0;

@@ -42,7 +42,13 @@ struct Pipeline::Glue {
     if (Trace || !p.zbuffer_.settled()) return false;
     const uint32_t address = uint32_t(y) * uint32_t(p.profile_.width) + uint32_t(x);
     p.zbuffer_.accept_run(address, cycle, n);
-    const int64_t passes = p.zbuffer_.test_and_write_run(address, n, adders.run());
+    int64_t passes;
+    if (n < ZBuffer::kShortRun) {
+      const ZAdder values = adders;  // a local copy the compiler keeps in machine registers
+      passes = p.zbuffer_.test_and_write_short_run(address, n, values);
+    } else {
+      passes = p.zbuffer_.test_and_write_run(address, n, adders.run());
+    }
     adders.step_x(n);
     record.fragments += n;
     record.depth_pass += passes;

@@ -36,36 +36,11 @@ inline __attribute__((always_inline)) int64_t run_loop(uint32_t* depth, uint32_t
   return passes;
 }
 
-// The same, one fragment at a time with branches: faster for short runs (colours computed only
-// for fragments that pass, no vector set-up).
-template <bool Gouraud, bool DepthWrite>
-inline __attribute__((always_inline)) int64_t short_run_loop(uint32_t* depth, uint32_t* color, int64_t n,
-                                                              unsigned mask, const ZAdder::Run& p) {
-  const PlaneFormat depth_format = p.depth_format, color_format = p.color_format;
-  const uint32_t flat = (uint32_t(p.flat.r) << 16) | (uint32_t(p.flat.g) << 8) | p.flat.b;
-  int64_t passes = 0;
-  for (int64_t i = 0; i < n; ++i) {
-    const uint32_t z = depth_format.output_unsigned(p.value[0] + uint64_t(i) * p.step_x[0]);
-    const uint32_t stored = depth[i];
-    const unsigned relation = z < stored ? ZBuffer::kLess : (z == stored ? ZBuffer::kEqual : ZBuffer::kGreater);
-    if ((mask & relation) == 0) continue;
-    if (DepthWrite) depth[i] = z;
-    auto channel = [&](int k) { return color_format.output_unsigned(p.value[k] + uint64_t(i) * p.step_x[k]); };
-    color[i] = Gouraud ? (channel(1) << 16) | (channel(2) << 8) | channel(3) : flat;
-    ++passes;
-  }
-  return passes;
-}
-
 using RunKernel = int64_t (*)(uint32_t*, uint32_t*, int64_t, unsigned, bool, const ZAdder::Run&);
 
 template <bool Gouraud>
 inline __attribute__((always_inline)) int64_t run_shaded(uint32_t* depth, uint32_t* color, int64_t n, unsigned mask,
                                                           bool depth_write, const ZAdder::Run& planes) {
-  constexpr int64_t kShortRun = 24;  // measured: below this the branching loop is faster
-  if (n < kShortRun)
-    return depth_write ? short_run_loop<Gouraud, true>(depth, color, n, mask, planes)
-                       : short_run_loop<Gouraud, false>(depth, color, n, mask, planes);
   return depth_write ? run_loop<Gouraud, true>(depth, color, n, mask, planes)
                      : run_loop<Gouraud, false>(depth, color, n, mask, planes);
 }

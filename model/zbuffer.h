@@ -97,7 +97,30 @@ class ZBuffer {
 
   // test_and_write() of n fragments at consecutive addresses, in order; fragment i's depth and
   // colour are the plane registers' outputs i x steps on from `planes`. Returns how many passed.
+  // Vectorized: for runs of at least kShortRun fragments.
+  static constexpr int64_t kShortRun = 24;  // measured: below this the loop below is faster
   int64_t test_and_write_run(uint32_t address, int64_t n, const ZAdder::Run& planes);
+
+  // The same for short runs, one fragment at a time (colours only for those that pass);
+  // fragment i's values are values.depth_at(i) and values.color_at(i).
+  template <class Values>
+  int64_t test_and_write_short_run(uint32_t address, int64_t n, const Values& values) {
+    uint32_t* const depth = depth_.data() + address;
+    uint32_t* const color = color_.data() + address;
+    const unsigned mask = pass_mask_;  // locals: the stores below cannot change them
+    const bool depth_write = depth_write_;
+    int64_t passes = 0;
+    for (int64_t i = 0; i < n; ++i) {
+      const uint32_t z = values.depth_at(i);
+      if (!depth_test(mask, z, depth[i])) continue;
+      if (depth_write) depth[i] = z;
+      color[i] = packed(values.color_at(i));
+      ++passes;
+    }
+    counters_.depth_pass += passes;
+    counters_.depth_fail += n - passes;
+    return passes;
+  }
 
   bool depth_test(uint32_t z, uint32_t stored) const { return depth_test(pass_mask_, z, stored); }
 
