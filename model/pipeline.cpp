@@ -43,6 +43,7 @@ struct Pipeline::Glue {
     const uint32_t address = uint32_t(y) * uint32_t(p.profile_.width) + uint32_t(x);
     p.zbuffer_.accept_run(address, cycle, n);
     int64_t passes;
+    p.zbuffer_.prefetch_rows_below(address, n, 2);
     if (n < ZBuffer::kShortRun) {
       const ZAdder values = adders;  // a local copy the compiler keeps in machine registers
       passes = p.zbuffer_.test_and_write_short_run(address, n, values);

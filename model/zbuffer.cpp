@@ -126,13 +126,6 @@ void select_run_kernel(const std::string& name) {
 }
 
 int64_t ZBuffer::test_and_write_run(uint32_t address, int64_t n, const ZAdder::Run& planes) {
-  // The walker's next row most likely covers the words below these: have them fetched meanwhile
-  // (the buffers outgrow the caches; this is the model's main memory cost).
-  if (address + uint32_t(width_) + uint32_t(n) <= depth_.size())
-    for (int64_t i = 0; i < n + 15; i += 16) {
-      __builtin_prefetch(depth_.data() + address + width_ + i, 1);
-      __builtin_prefetch(color_.data() + address + width_ + i, 1);
-    }
   const int64_t passes = selected_kernel()(depth_.data() + address, color_.data() + address, n, pass_mask_, depth_write_, planes);
   counters_.depth_pass += passes;
   counters_.depth_fail += n - passes;
