@@ -68,7 +68,8 @@ std::optional<Shading> parse_shading(const std::string& s) { return parse_enum<S
 const std::vector<std::string>& profile_keys() {
   static const std::vector<std::string> keys = {
       "width", "height", "subpixel_bits", "z_bits", "z_guard_bits", "depth_func", "depth_write",
-      "depth_clear", "cull", "front_face", "traversal", "shading", "memory_latency"};
+      "depth_clear", "cull", "front_face", "traversal", "shading", "memory_latency",
+      "memory_stall_percent", "memory_stall_seed"};
   return keys;
 }
 
@@ -85,6 +86,8 @@ std::vector<std::string> validate(const Profile& p) {
   range("z_bits", p.z_bits, 16, 32);
   range("z_guard_bits", p.z_guard_bits, 0, 24);
   range("memory_latency", p.memory_latency, 1, 64);
+  range("memory_stall_percent", p.memory_stall_percent, 0, 90);
+  range("memory_stall_seed", p.memory_stall_seed, 0, INT32_MAX);
   if (p.z_bits >= 16 && p.z_bits <= 32 && p.depth_clear >= 0 && p.depth_clear > int64_t(p.depth_max()))
     errors.push_back("depth_clear is " + std::to_string(p.depth_clear) + "; it must be in 0.." +
                      std::to_string(p.depth_max()) + " for z_bits " + std::to_string(p.z_bits));
@@ -111,6 +114,8 @@ std::string set_profile_key(Profile& p, const std::string& key, const std::strin
   if (key == "z_bits") return integer(p.z_bits);
   if (key == "z_guard_bits") return value == "auto" ? (p.z_guard_bits = 0, "") : integer(p.z_guard_bits);
   if (key == "memory_latency") return integer(p.memory_latency);
+  if (key == "memory_stall_percent") return integer(p.memory_stall_percent);
+  if (key == "memory_stall_seed") return integer(p.memory_stall_seed);
   if (key == "depth_clear") {
     if (value == "max") return p.depth_clear = -1, "";
     if (!parse_int(value, n) || n < 0) return key + " takes a non-negative integer or 'max', not '" + value + "'";
@@ -170,6 +175,8 @@ std::string profile_to_json(const Profile& p, int indent) {
   j["traversal"] = to_string(p.traversal);
   j["shading"] = to_string(p.shading);
   j["memory_latency"] = p.memory_latency;
+  j["memory_stall_percent"] = p.memory_stall_percent;
+  j["memory_stall_seed"] = p.memory_stall_seed;
   return j.dump(indent);
 }
 

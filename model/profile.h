@@ -30,6 +30,10 @@ struct Profile {
   Traversal traversal = Traversal::Span;
   Shading shading = Shading::Gouraud;
   int memory_latency = 2;     // cycles from a z-buffer read request to its data, 1..64
+  // Back-pressure of the z-buffer memory: it refuses reads in about this percentage of the cycles,
+  // 0..90, in a pattern fixed by the seed (zbuffer_memory.h). 0: never (the on-chip memory).
+  int memory_stall_percent = 0;
+  int memory_stall_seed = 1;  // 0..2^31-1
 
   uint32_t depth_max() const { return uint32_t((uint64_t(1) << z_bits) - 1); }
   uint32_t depth_clear_value() const { return depth_clear < 0 ? depth_max() : uint32_t(depth_clear); }

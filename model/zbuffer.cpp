@@ -92,15 +92,13 @@ RunKernel& selected_kernel() {
 
 ZBuffer::ZBuffer(const Profile& p)
     : width_(p.width), height_(p.height), pass_mask_(pass_mask(p.depth_func)), depth_write_(p.depth_write),
-      clear_depth_(p.depth_clear_value()), latency_(p.memory_latency),
-      depth_(size_t(p.width) * p.height), color_(size_t(p.width) * p.height),
+      latency_(p.memory_latency), memory_(p),
       inflight_address_(size_t(p.memory_latency)), inflight_cycle_(size_t(p.memory_latency)) {
   clear();
 }
 
 void ZBuffer::clear() {
-  std::fill(depth_.begin(), depth_.end(), clear_depth_);
-  std::fill(color_.begin(), color_.end(), 0u);
+  memory_.clear();
   std::fill(inflight_address_.begin(), inflight_address_.end(), std::numeric_limits<uint32_t>::max());
   std::fill(inflight_cycle_.begin(), inflight_cycle_.end(), std::numeric_limits<int64_t>::min() / 2);
   slot_ = 0;
@@ -126,7 +124,7 @@ void select_run_kernel(const std::string& name) {
 }
 
 int64_t ZBuffer::test_and_write_run(uint32_t address, int64_t n, const ZAdder::Run& planes) {
-  const int64_t passes = selected_kernel()(depth_.data() + address, color_.data() + address, n, pass_mask_, depth_write_, planes);
+  const int64_t passes = selected_kernel()(memory_.depth_words() + address, memory_.color_words() + address, n, pass_mask_, depth_write_, planes);
   counters_.depth_pass += passes;
   counters_.depth_fail += n - passes;
   return passes;

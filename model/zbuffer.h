@@ -1,7 +1,9 @@
-// Z-buffer unit: read, compare, conditional write of depth and colour, behind a memory port with a
-// read latency of L cycles (profile.memory_latency). A fragment accepted in cycle c reads in c,
-// gets its data and writes in c + L; a fragment to the same address may be accepted no earlier
-// than c + L + 1 (read-after-write hazard: the unit stalls, docs/cycle-model.md).
+// Z-buffer unit: read, compare, conditional write of depth and colour, through a memory port with
+// a read latency of L cycles (profile.memory_latency) to the z-buffer memory (zbuffer_memory.h).
+// A fragment accepted in cycle c reads in c, gets its data and writes in c + L; a fragment to the
+// same address may be accepted no earlier than c + L + 1 (read-after-write hazard), and none is
+// accepted in a cycle in which the memory refuses reads (its stall pattern): the unit stalls
+// (docs/cycle-model.md).
 #pragma once
 
 #include <algorithm>
@@ -12,12 +14,13 @@
 #include "profile.h"
 #include "triangle.h"
 #include "z_adder.h"
+#include "zbuffer_memory.h"
 
 namespace rastersim {
 
 struct ZBufferCounters {
   int64_t busy = 0;   // cycles with a fragment accepted or in flight
-  int64_t stall = 0;  // hazard stall cycles
+  int64_t stall = 0;  // cycles a fragment waited: hazards and memory back-pressure
   int64_t depth_pass = 0;
   int64_t depth_fail = 0;
 };
@@ -37,15 +40,17 @@ class ZBuffer {
   void clear();
   int width() const { return width_; }
   int height() const { return height_; }
-  const std::vector<uint32_t>& depth() const { return depth_; }
-  const std::vector<uint32_t>& color() const { return color_; }  // 0x00RRGGBB
+  const std::vector<uint32_t>& depth() const { return memory_.depth(); }
+  const std::vector<uint32_t>& color() const { return memory_.color(); }  // 0x00RRGGBB
 
   // Starts a new triangle: its own fragments never collide, so after L of them no check is needed.
   void begin_triangle() { fresh_ = 0; }
-  // True once no fragment can stall until the next triangle: accept_run() may be used.
-  bool settled() const { return fresh_ >= latency_; }
+  // True once no fragment can stall until the next triangle: accept_run() may be used. Never
+  // with a stall pattern: the memory may refuse any read.
+  bool settled() const { return fresh_ >= latency_ && !memory_.has_stalls(); }
 
-  // Timing: the cycle at which a fragment presented in `cycle` for `address` is accepted.
+  // Timing: the cycle at which a fragment presented in `cycle` for `address` is accepted: the first
+  // one without a hazard (once free, an address stays free) in which the memory takes the read.
   int64_t accept(uint32_t address, int64_t cycle) {
     int64_t accepted = cycle;
     if (fresh_ < latency_) {
@@ -54,6 +59,8 @@ class ZBuffer {
           accepted = inflight_cycle_[k] + latency_ + 1;
       ++fresh_;
     }
+    if (memory_.has_stalls())
+      while (memory_.stalls(accepted)) ++accepted;
     counters_.stall += accepted - cycle;
     inflight_address_[slot_] = address;
     inflight_cycle_[slot_] = accepted;
@@ -84,10 +91,9 @@ class ZBuffer {
 
   // Function: depth test and conditional write. Returns the depth test result.
   bool test_and_write(uint32_t address, uint32_t z, Rgb c) {
-    const bool pass = depth_test(pass_mask_, z, depth_[address]);
+    const bool pass = depth_test(pass_mask_, z, memory_.read_depth(address));
     if (pass) {
-      if (depth_write_) depth_[address] = z;
-      color_[address] = packed(c);
+      memory_.write(address, depth_write_, z, true, packed(c));
       ++counters_.depth_pass;
     } else {
       ++counters_.depth_fail;
@@ -105,8 +111,8 @@ class ZBuffer {
   // fragment i's values are values.depth_at(i) and values.color_at(i).
   template <class Values>
   int64_t test_and_write_short_run(uint32_t address, int64_t n, const Values& values) {
-    uint32_t* const depth = depth_.data() + address;
-    uint32_t* const color = color_.data() + address;
+    uint32_t* const depth = memory_.depth_words() + address;
+    uint32_t* const color = memory_.color_words() + address;
     const unsigned mask = pass_mask_;  // locals: the stores below cannot change them
     const bool depth_write = depth_write_;
     int64_t passes = 0;
@@ -126,10 +132,10 @@ class ZBuffer {
   // soon, and the buffers outgrow the caches (the model's main memory cost). No effect on results.
   void prefetch_rows_below(uint32_t address, int64_t n, int rows) const {
     const size_t at = size_t(address) + size_t(rows) * size_t(width_);
-    if (at + size_t(n) > depth_.size()) return;
+    if (at + size_t(n) > memory_.depth().size()) return;
     for (int64_t i = 0; i < n + 15; i += 16) {
-      __builtin_prefetch(depth_.data() + at + i, 1);
-      __builtin_prefetch(color_.data() + at + i, 1);
+      __builtin_prefetch(memory_.depth().data() + at + i, 1);
+      __builtin_prefetch(memory_.color().data() + at + i, 1);
     }
   }
 
@@ -161,9 +167,8 @@ class ZBuffer {
 
   unsigned pass_mask_;
   bool depth_write_;
-  uint32_t clear_depth_;
   int latency_;
-  std::vector<uint32_t> depth_, color_;
+  ZBufferMemory memory_;
   // The last L accepted fragments (a ring): the only ones that can still be in flight.
   std::vector<uint32_t> inflight_address_;
   std::vector<int64_t> inflight_cycle_;

@@ -58,6 +58,10 @@ std::string configuration_error(const Profile& p) {
   if (p.memory_latency > c->max_memory_latency)
     return "memory_latency " + std::to_string(p.memory_latency) + " exceeds the built RTL's maximum " +
            std::to_string(c->max_memory_latency) + " (configuration " + c->name + ")";
+  if (p.memory_stall_percent > 0)
+    return "memory_stall_percent " + std::to_string(p.memory_stall_percent) +
+           ": rastersim_top's on-chip memory has no back-pressure; the SystemC backend (--backend systemc) "
+           "puts a memory with a stall pattern behind the core";
   return "";
 }
 

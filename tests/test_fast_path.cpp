@@ -1,7 +1,8 @@
 // Without a fragment sink the pipeline takes whole runs of fragments at once when no hazard can
 // stall them (model/pipeline.cpp, ZBuffer::accept_run). The traced path handles every fragment one
 // at a time and is the one co-simulation checks against the RTL; this test requires the untraced
-// path to give the same frame: every counter, every triangle record, every buffer word.
+// path to give the same frame: every counter, every triangle record, every buffer word, also under
+// a memory stall pattern (which may refuse any read, so no run is taken at once: ZBuffer::settled()).
 #include <gtest/gtest.h>
 
 #include <random>
@@ -65,17 +66,19 @@ void expect_same_frame(const Frame& traced, const Frame& fast) {
   EXPECT_TRUE(traced.color == fast.color) << "colour buffers differ";
 }
 
-using Param = std::tuple<Traversal, DepthFunc, int /*memory_latency*/>;
+using Param = std::tuple<Traversal, DepthFunc, int /*memory_latency*/, int /*memory_stall_percent*/>;
 
 class FastPath : public ::testing::TestWithParam<Param> {};
 
 TEST_P(FastPath, UntracedFrameEqualsTracedFrame) {
-  const auto [traversal, depth_func, latency] = GetParam();
+  const auto [traversal, depth_func, latency, stall_percent] = GetParam();
   for (uint64_t seed = 1; seed <= 6; ++seed) {
     // z_bits 32 and 16 as well: the widest and narrowest depth registers.
     Profile profile = make_profile(96, 64, seed % 2 ? 4 : 8, traversal, seed == 5 ? 32 : seed == 6 ? 16 : 24);
     profile.depth_func = depth_func;
     profile.memory_latency = latency;
+    profile.memory_stall_percent = stall_percent;
+    profile.memory_stall_seed = int(seed);
     profile.shading = seed % 3 ? Shading::Gouraud : Shading::Flat;
     profile.depth_write = seed != 4;
     TriangleGen gen(profile, seed * 7919 + uint64_t(latency));
@@ -108,6 +111,14 @@ TEST_P(FastPath, UntracedFrameEqualsTracedFrame) {
       expect_same_frame(traced, render(profile, triangles, false));
     }
     select_run_kernel(run_kernel_versions().front());
+    if (stall_percent > 0) {  // the pattern must bite: the same frame without it is shorter
+      Profile unstalled = profile;
+      unstalled.memory_stall_percent = 0;
+      const Frame plain = render(unstalled, triangles, false);
+      EXPECT_GT(traced.stats.cycles, plain.stats.cycles);
+      EXPECT_GT(traced.stats.zbuffer.stall, plain.stats.zbuffer.stall);
+      EXPECT_TRUE(plain.depth == traced.depth) << "a stall pattern changed the depth buffer";
+    }
   }
 }
 
@@ -156,7 +167,11 @@ INSTANTIATE_TEST_SUITE_P(AllPaths, FastPath,
                          ::testing::Combine(::testing::Values(Traversal::BBox, Traversal::Span),
                                             ::testing::Values(DepthFunc::Less, DepthFunc::Equal, DepthFunc::GEqual,
                                                               DepthFunc::Always, DepthFunc::Never),
-                                            ::testing::Values(1, 2, 5, 64)));
+                                            ::testing::Values(1, 2, 5, 64), ::testing::Values(0)));
+INSTANTIATE_TEST_SUITE_P(StallPatterns, FastPath,
+                         ::testing::Combine(::testing::Values(Traversal::BBox, Traversal::Span),
+                                            ::testing::Values(DepthFunc::Less, DepthFunc::Always),
+                                            ::testing::Values(1, 5), ::testing::Values(30, 75)));
 
 }  // namespace
 }  // namespace rastersim::test

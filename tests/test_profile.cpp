@@ -43,6 +43,7 @@ TEST(ProfileValidate, EachKeyJustOutsideItsRangeIsRejectedByName) {
       {"z_bits", [](Profile& p, int64_t v) { p.z_bits = int(v); }, 16, 32},
       {"z_guard_bits", [](Profile& p, int64_t v) { p.z_guard_bits = int(v); }, 0, 24},
       {"memory_latency", [](Profile& p, int64_t v) { p.memory_latency = int(v); }, 1, 64},
+      {"memory_stall_percent", [](Profile& p, int64_t v) { p.memory_stall_percent = int(v); }, 0, 90},
   };
   for (const RangeKey& k : keys) {
     for (int64_t ok : {k.lo, k.hi}) {
@@ -59,6 +60,13 @@ TEST(ProfileValidate, EachKeyJustOutsideItsRangeIsRejectedByName) {
       EXPECT_TRUE(mentions(errors[0], std::to_string(bad))) << errors[0];
     }
   }
+  // memory_stall_seed: any non-negative int.
+  Profile seeded;
+  seeded.memory_stall_seed = INT32_MAX;
+  EXPECT_TRUE(validate(seeded).empty());
+  seeded.memory_stall_seed = -1;
+  ASSERT_EQ(validate(seeded).size(), 1u);
+  EXPECT_TRUE(mentions(validate(seeded)[0], "memory_stall_seed")) << validate(seeded)[0];
   // depth_clear: -1 means 2^N - 1; otherwise 0..2^N - 1 for the profile's z_bits.
   for (int z_bits : {16, 24, 32}) {
     Profile p;
@@ -158,7 +166,8 @@ TEST(ProfileFile, LoadsEveryKey) {
                        "{\n  \"width\": 320,\n  \"height\": 200,\n  \"subpixel_bits\": 6,\n  \"z_bits\": 20,\n"
                        "  \"z_guard_bits\": \"auto\",\n  \"depth_func\": \"lequal\",\n  \"depth_write\": false,\n"
                        "  \"depth_clear\": 7,\n  \"cull\": \"back\",\n  \"front_face\": \"cw\",\n"
-                       "  \"traversal\": \"bbox\",\n  \"shading\": \"flat\",\n  \"memory_latency\": 9\n}\n",
+                       "  \"traversal\": \"bbox\",\n  \"shading\": \"flat\",\n  \"memory_latency\": 9,\n"
+                       "  \"memory_stall_percent\": 25,\n  \"memory_stall_seed\": 77\n}\n",
                        &p),
             "");
   EXPECT_EQ(p.width, 320);
@@ -174,6 +183,8 @@ TEST(ProfileFile, LoadsEveryKey) {
   EXPECT_EQ(p.traversal, Traversal::BBox);
   EXPECT_EQ(p.shading, Shading::Flat);
   EXPECT_EQ(p.memory_latency, 9);
+  EXPECT_EQ(p.memory_stall_percent, 25);
+  EXPECT_EQ(p.memory_stall_seed, 77);
   // The JSON a profile writes loads back to the same profile.
   Profile back;
   ASSERT_EQ(load_error("roundtrip.json", profile_to_json(p), &back), "");

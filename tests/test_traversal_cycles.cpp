@@ -255,6 +255,52 @@ TEST_P(CycleModel, HandOffChainOverAScene) {
   EXPECT_EQ(stats.cycles, last_busy + 1);
 }
 
+// The memory's stall pattern (zbuffer_memory.h): one triangle has no hazards, so each covered pixel
+// is accepted in the first cycle, at or after the one the rules above give it shifted by the waits
+// of the fragments before it, in which the memory is ready; every later event shifts by the waits.
+TEST_P(CycleModel, OneTriangleUnderAStallPatternShiftsByEachWait) {
+  Profile p = test::make_profile(80, 60, 4, GetParam(), 20);
+  const uint64_t seed = 7 + uint64_t(GetParam());
+  SCOPED_TRACE(::testing::Message() << describe(p) << " seed " << seed);
+  TriangleGen gen(p, seed);
+  int64_t total_wait = 0;
+  for (int n = 0; n < 200; ++n) {
+    p.memory_latency = int(gen.uniform(1, 20));
+    p.memory_stall_percent = int(gen.uniform(1, 90));
+    p.memory_stall_seed = int(gen.uniform(0, 1000));
+    const SnappedTriangle t = random_scene_triangle(gen, n);
+    if (reference::twice_area(t) == 0 || reference::bounding_box(t, p).empty()) continue;
+    Pipeline pipe(p);
+    FragmentLog log;
+    std::vector<TriangleRecord> records;
+    pipe.set_fragment_sink(&log);
+    pipe.set_triangle_log(&records);
+    pipe.submit(t);
+    const FrameStats& stats = pipe.stats();
+    SCOPED_TRACE(::testing::Message() << "n=" << n << " L=" << p.memory_latency << " stall "
+                                      << p.memory_stall_percent << "% seed " << p.memory_stall_seed);
+    const TriangleRecord& r = records.at(0);
+    const std::vector<int64_t> unstalled = expected_fragment_cycles(t, p, pipe.widths(), r.walker_load);
+    ASSERT_EQ(log.fragments.size(), unstalled.size());
+    int64_t wait = 0;
+    for (size_t i = 0; i < unstalled.size(); ++i) {
+      int64_t accepted = unstalled[i] + wait;
+      while (memory_stalls(uint64_t(p.memory_stall_seed), p.memory_stall_percent, accepted)) ++accepted;
+      ASSERT_EQ(log.fragments[i].cycle, accepted) << "fragment " << i;
+      wait = accepted - unstalled[i];
+    }
+    EXPECT_EQ(stats.walker.stall, wait);
+    EXPECT_EQ(stats.zbuffer.stall, wait);
+    EXPECT_EQ(r.walker_end - r.walker_load + 1, expected_walker_cycles(t, p, pipe.widths()) + wait);
+    EXPECT_EQ(stats.walker.busy, expected_walker_cycles(t, p, pipe.widths()));
+    const int64_t last_write = unstalled.empty() ? -1 : log.fragments.back().cycle + p.memory_latency;
+    EXPECT_EQ(r.last_write, last_write);
+    EXPECT_EQ(stats.cycles, std::max(r.walker_end, last_write) + 1);
+    total_wait += wait;
+  }
+  EXPECT_GT(total_wait, 1000);
+}
+
 INSTANTIATE_TEST_SUITE_P(Traversals, CycleModel, ::testing::Values(Traversal::BBox, Traversal::Span),
                          [](const auto& info) { return std::string(to_string(info.param)); });
 
