@@ -18,8 +18,8 @@ file[z_adder_carry]=plane_register.sv
 from[z_adder_carry]='value <= value + step_x_q;'
 to[z_adder_carry]='value <= value + step_x_q + 1'"'"'b1;'  # carry-in of the x-step adder flipped
 file[hazard_stall]=zbuffer.sv
-from[hazard_stall]='assign frag_ready = clear_done && !hazard;'
-to[hazard_stall]='assign frag_ready = clear_done;'  # read-after-write stall removed
+from[hazard_stall]='wire can_accept = mem_clear_done && !hazard;'
+to[hazard_stall]='wire can_accept = mem_clear_done;'  # read-after-write stall removed
 file[divider_rounding]=divider.sv
 from[divider_rounding]=': remainder_nonzero ? ~quotient_mag'
 to[divider_rounding]=': 1'"'"'b0 ? ~quotient_mag'     # negative quotients truncate instead of floor

@@ -5,8 +5,7 @@
 #include <string>
 
 #include "Vmutant.h"
-#include "Vmutant___024root.h"
-#include "Vmutant_rastersim_top.h"
+#include "Vmutant__Syms.h"
 #include "testbench/cosim_cases.h"
 #include "testbench/rtl_harness.h"
 
@@ -15,11 +14,12 @@ using namespace rastersim::rtl;
 
 int main(int argc, char** argv) {
   const std::string replay_dir = argc > 1 ? argv[1] : "/tmp";
+  using Core = detail::CoreOf<Vmutant>;
   Profile p;
-  p.width = int(Vmutant_rastersim_top::P_WIDTH);
-  p.height = int(Vmutant_rastersim_top::P_HEIGHT);
-  p.subpixel_bits = int(Vmutant_rastersim_top::P_SUBPIXEL_BITS);
-  p.z_bits = int(Vmutant_rastersim_top::P_Z_BITS);
+  p.width = int(Core::P_WIDTH);
+  p.height = int(Core::P_HEIGHT);
+  p.subpixel_bits = int(Core::P_SUBPIXEL_BITS);
+  p.z_bits = int(Core::P_Z_BITS);
   for (Traversal traversal : {Traversal::BBox, Traversal::Span}) {
     for (int latency : {2, 4}) {
       p.traversal = traversal;
@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
       for (uint64_t seed = 1; seed <= 3; ++seed) cases.push_back(random_case(p, seed, 40));
       for (const CosimCase& c : cases) {
         const RtlResult model = run_model(p, c.triangles);
-        const RtlResult rtl = detail::run_verilated<Vmutant, Vmutant_rastersim_top>(p, c.triangles, RtlOptions{});
+        const RtlResult rtl = detail::run_verilated<Vmutant>(p, c.triangles, RtlOptions{});
         const Divergence d = compare(model, rtl);
         if (d.found) {
           const std::string command = write_replay(replay_dir + "/mutant_replay", p, c.triangles);

@@ -229,6 +229,9 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
                       const PackageOptions& options) {
   const std::vector<std::string> problems = validate(profile);
   if (!problems.empty()) throw InputError("invalid profile: " + problems.front());
+  if (profile.memory_stall_percent > 0)
+    throw InputError("memory_stall_percent " + std::to_string(profile.memory_stall_percent) +
+                     ": a package tests rastersim_top, whose on-chip memory has no back-pressure");
   const rtl::RtlResult model = rtl::run_model(profile, tris);
   const Layouts layouts = make_layouts(profile);
   const Widths widths = derive_widths(profile);

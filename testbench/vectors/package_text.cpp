@@ -87,7 +87,7 @@ std::string testbench_text(const PackageFacts& k) {
     << "// Mismatches are printed as \"<file> vector <line from 0> field <name>: expected .., actual ..\", the\n"
     << "// first one first; the last line is \"N passed, M failed\" (N + M = the number of expected words).\n"
     << "//\n"
-    << "// A port without the setup -> walker record wires (dut.rec_*, read hierarchically) is run with\n"
+    << "// A port without the setup -> walker record wires (dut.core.rec_*, read hierarchically) is run with\n"
     << "// RS_NO_SETUP_RECORD defined: the setup.hex vectors are then skipped (\"N passed, M failed, K skipped\").\n"
     << "module " << kTestbenchTop << ";\n"
     << "  // The profile (manifest.json \"profile\") and the port widths derived from it (\"widths\").\n"
@@ -341,27 +341,27 @@ std::string testbench_text(const PackageFacts& k) {
     const int eb = w.edge_bits, sxb = w.edge_step_x_bits, syb = w.edge_step_y_bits, rb = w.span_rem_bits;
     const int crb = w.color_reg_bits;
     std::map<std::string, std::pair<std::string, int>> record = {
-        {"tri", {"in_setup", -1}},          {"x0", {"dut.rec_x0", -1}},
-        {"x1", {"dut.rec_x1", -1}},         {"y0", {"dut.rec_y0", -1}},
-        {"y1", {"dut.rec_y1", -1}},         {"depth_start", {"dut.rec_depth_start", -1}},
-        {"depth_step_x", {"dut.rec_depth_step_x", -1}}, {"depth_step_y", {"dut.rec_depth_step_y", -1}},
-        {"flat_rgb", {"dut.rec_flat_rgb", -1}}};
+        {"tri", {"in_setup", -1}},          {"x0", {"dut.core.rec_x0", -1}},
+        {"x1", {"dut.core.rec_x1", -1}},         {"y0", {"dut.core.rec_y0", -1}},
+        {"y1", {"dut.core.rec_y1", -1}},         {"depth_start", {"dut.core.rec_depth_start", -1}},
+        {"depth_step_x", {"dut.core.rec_depth_step_x", -1}}, {"depth_step_y", {"dut.core.rec_depth_step_y", -1}},
+        {"flat_rgb", {"dut.core.rec_flat_rgb", -1}}};
     for (int e = 0; e < 3; ++e) {
       const std::string n = "edge" + std::to_string(e) + "_";
-      record[n + "start"] = {"dut.rec_edge_start", e * eb};
-      record[n + "step_x"] = {"dut.rec_edge_step_x", e * sxb};
-      record[n + "step_y"] = {"dut.rec_edge_step_y", e * syb};
-      record[n + "span_quot"] = {"dut.rec_span_quot", e * eb};
-      record[n + "span_rem"] = {"dut.rec_span_rem", e * rb};
-      record[n + "span_step_quot"] = {"dut.rec_span_step_quot", e * syb};
-      record[n + "span_step_rem"] = {"dut.rec_span_step_rem", e * rb};
+      record[n + "start"] = {"dut.core.rec_edge_start", e * eb};
+      record[n + "step_x"] = {"dut.core.rec_edge_step_x", e * sxb};
+      record[n + "step_y"] = {"dut.core.rec_edge_step_y", e * syb};
+      record[n + "span_quot"] = {"dut.core.rec_span_quot", e * eb};
+      record[n + "span_rem"] = {"dut.core.rec_span_rem", e * rb};
+      record[n + "span_step_quot"] = {"dut.core.rec_span_step_quot", e * syb};
+      record[n + "span_step_rem"] = {"dut.core.rec_span_step_rem", e * rb};
     }
     const char* const channels[] = {"red", "green", "blue"};
     for (int c = 0; c < 3; ++c) {
       const std::string n = channels[c];
-      record[n + "_start"] = {"dut.rec_color_start", c * crb};
-      record[n + "_step_x"] = {"dut.rec_color_step_x", c * crb};
-      record[n + "_step_y"] = {"dut.rec_color_step_y", c * crb};
+      record[n + "_start"] = {"dut.core.rec_color_start", c * crb};
+      record[n + "_step_x"] = {"dut.core.rec_color_step_x", c * crb};
+      record[n + "_step_y"] = {"dut.core.rec_color_step_y", c * crb};
     }
     for (const Field& f : l.setup.fields()) {
       const auto it = record.find(f.name);

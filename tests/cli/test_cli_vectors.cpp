@@ -117,7 +117,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadVectors{"MissingInput", {"missing.tri"}, "missing.tri: cannot open"},
         BadVectors{"UnknownScene", {"--scene", "teapot"}, "unknown scene 'teapot'"},
         BadVectors{"BadProfile", {"--suite", "depth", "--z-bits", "8"}, "z_bits is 8"},
-        BadVectors{"BadDepthFunc", {"--suite", "depth", "--depth-func", "sometimes"}, "depth_func is 'sometimes'"}),
+        BadVectors{"BadDepthFunc", {"--suite", "depth", "--depth-func", "sometimes"}, "depth_func is 'sometimes'"},
+        BadVectors{"StallPattern", {"--suite", "depth", "--memory-stall-percent", "10"}, "no back-pressure"}),
     [](const ::testing::TestParamInfo<BadVectors>& info) { return info.param.name; });
 
 #endif

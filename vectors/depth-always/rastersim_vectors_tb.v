@@ -10,7 +10,7 @@
 // Mismatches are printed as "<file> vector <line from 0> field <name>: expected .., actual ..", the
 // first one first; the last line is "N passed, M failed" (N + M = the number of expected words).
 //
-// A port without the setup -> walker record wires (dut.rec_*, read hierarchically) is run with
+// A port without the setup -> walker record wires (dut.core.rec_*, read hierarchically) is run with
 // RS_NO_SETUP_RECORD defined: the setup.hex vectors are then skipped ("N passed, M failed, K skipped").
 module rastersim_vectors_tb;
   // The profile (manifest.json "profile") and the port widths derived from it ("widths").
@@ -271,44 +271,44 @@ module rastersim_vectors_tb;
           if (seen_setup_count < DRAWN_SLOTS) begin
             observed_setup = {SETUP_BITS{1'b0}};
             observed_setup[695:664] = in_setup;
-            observed_setup[663:660] = dut.rec_x0;
-            observed_setup[659:656] = dut.rec_x1;
-            observed_setup[655:652] = dut.rec_y0;
-            observed_setup[651:648] = dut.rec_y1;
-            observed_setup[647:624] = {{3{dut.rec_edge_start[20]}}, dut.rec_edge_start[20:0]};
-            observed_setup[623:608] = {{1{dut.rec_edge_step_x[14]}}, dut.rec_edge_step_x[14:0]};
-            observed_setup[607:592] = {{1{dut.rec_edge_step_y[14]}}, dut.rec_edge_step_y[14:0]};
-            observed_setup[591:568] = {{3{dut.rec_span_quot[20]}}, dut.rec_span_quot[20:0]};
-            observed_setup[567:552] = dut.rec_span_rem[13:0];
-            observed_setup[551:536] = {{1{dut.rec_span_step_quot[14]}}, dut.rec_span_step_quot[14:0]};
-            observed_setup[535:520] = dut.rec_span_step_rem[13:0];
-            observed_setup[519:496] = {{3{dut.rec_edge_start[41]}}, dut.rec_edge_start[41:21]};
-            observed_setup[495:480] = {{1{dut.rec_edge_step_x[29]}}, dut.rec_edge_step_x[29:15]};
-            observed_setup[479:464] = {{1{dut.rec_edge_step_y[29]}}, dut.rec_edge_step_y[29:15]};
-            observed_setup[463:440] = {{3{dut.rec_span_quot[41]}}, dut.rec_span_quot[41:21]};
-            observed_setup[439:424] = dut.rec_span_rem[27:14];
-            observed_setup[423:408] = {{1{dut.rec_span_step_quot[29]}}, dut.rec_span_step_quot[29:15]};
-            observed_setup[407:392] = dut.rec_span_step_rem[27:14];
-            observed_setup[391:368] = {{3{dut.rec_edge_start[62]}}, dut.rec_edge_start[62:42]};
-            observed_setup[367:352] = {{1{dut.rec_edge_step_x[44]}}, dut.rec_edge_step_x[44:30]};
-            observed_setup[351:336] = {{1{dut.rec_edge_step_y[44]}}, dut.rec_edge_step_y[44:30]};
-            observed_setup[335:312] = {{3{dut.rec_span_quot[62]}}, dut.rec_span_quot[62:42]};
-            observed_setup[311:296] = dut.rec_span_rem[41:28];
-            observed_setup[295:280] = {{1{dut.rec_span_step_quot[44]}}, dut.rec_span_step_quot[44:30]};
-            observed_setup[279:264] = dut.rec_span_step_rem[41:28];
-            observed_setup[263:232] = {{1{dut.rec_depth_start[30]}}, dut.rec_depth_start};
-            observed_setup[231:200] = {{1{dut.rec_depth_step_x[30]}}, dut.rec_depth_step_x};
-            observed_setup[199:168] = {{1{dut.rec_depth_step_y[30]}}, dut.rec_depth_step_y};
-            observed_setup[167:152] = {{1{dut.rec_color_start[14]}}, dut.rec_color_start[14:0]};
-            observed_setup[151:136] = {{1{dut.rec_color_step_x[14]}}, dut.rec_color_step_x[14:0]};
-            observed_setup[135:120] = {{1{dut.rec_color_step_y[14]}}, dut.rec_color_step_y[14:0]};
-            observed_setup[119:104] = {{1{dut.rec_color_start[29]}}, dut.rec_color_start[29:15]};
-            observed_setup[103:88] = {{1{dut.rec_color_step_x[29]}}, dut.rec_color_step_x[29:15]};
-            observed_setup[87:72] = {{1{dut.rec_color_step_y[29]}}, dut.rec_color_step_y[29:15]};
-            observed_setup[71:56] = {{1{dut.rec_color_start[44]}}, dut.rec_color_start[44:30]};
-            observed_setup[55:40] = {{1{dut.rec_color_step_x[44]}}, dut.rec_color_step_x[44:30]};
-            observed_setup[39:24] = {{1{dut.rec_color_step_y[44]}}, dut.rec_color_step_y[44:30]};
-            observed_setup[23:0] = dut.rec_flat_rgb;
+            observed_setup[663:660] = dut.core.rec_x0;
+            observed_setup[659:656] = dut.core.rec_x1;
+            observed_setup[655:652] = dut.core.rec_y0;
+            observed_setup[651:648] = dut.core.rec_y1;
+            observed_setup[647:624] = {{3{dut.core.rec_edge_start[20]}}, dut.core.rec_edge_start[20:0]};
+            observed_setup[623:608] = {{1{dut.core.rec_edge_step_x[14]}}, dut.core.rec_edge_step_x[14:0]};
+            observed_setup[607:592] = {{1{dut.core.rec_edge_step_y[14]}}, dut.core.rec_edge_step_y[14:0]};
+            observed_setup[591:568] = {{3{dut.core.rec_span_quot[20]}}, dut.core.rec_span_quot[20:0]};
+            observed_setup[567:552] = dut.core.rec_span_rem[13:0];
+            observed_setup[551:536] = {{1{dut.core.rec_span_step_quot[14]}}, dut.core.rec_span_step_quot[14:0]};
+            observed_setup[535:520] = dut.core.rec_span_step_rem[13:0];
+            observed_setup[519:496] = {{3{dut.core.rec_edge_start[41]}}, dut.core.rec_edge_start[41:21]};
+            observed_setup[495:480] = {{1{dut.core.rec_edge_step_x[29]}}, dut.core.rec_edge_step_x[29:15]};
+            observed_setup[479:464] = {{1{dut.core.rec_edge_step_y[29]}}, dut.core.rec_edge_step_y[29:15]};
+            observed_setup[463:440] = {{3{dut.core.rec_span_quot[41]}}, dut.core.rec_span_quot[41:21]};
+            observed_setup[439:424] = dut.core.rec_span_rem[27:14];
+            observed_setup[423:408] = {{1{dut.core.rec_span_step_quot[29]}}, dut.core.rec_span_step_quot[29:15]};
+            observed_setup[407:392] = dut.core.rec_span_step_rem[27:14];
+            observed_setup[391:368] = {{3{dut.core.rec_edge_start[62]}}, dut.core.rec_edge_start[62:42]};
+            observed_setup[367:352] = {{1{dut.core.rec_edge_step_x[44]}}, dut.core.rec_edge_step_x[44:30]};
+            observed_setup[351:336] = {{1{dut.core.rec_edge_step_y[44]}}, dut.core.rec_edge_step_y[44:30]};
+            observed_setup[335:312] = {{3{dut.core.rec_span_quot[62]}}, dut.core.rec_span_quot[62:42]};
+            observed_setup[311:296] = dut.core.rec_span_rem[41:28];
+            observed_setup[295:280] = {{1{dut.core.rec_span_step_quot[44]}}, dut.core.rec_span_step_quot[44:30]};
+            observed_setup[279:264] = dut.core.rec_span_step_rem[41:28];
+            observed_setup[263:232] = {{1{dut.core.rec_depth_start[30]}}, dut.core.rec_depth_start};
+            observed_setup[231:200] = {{1{dut.core.rec_depth_step_x[30]}}, dut.core.rec_depth_step_x};
+            observed_setup[199:168] = {{1{dut.core.rec_depth_step_y[30]}}, dut.core.rec_depth_step_y};
+            observed_setup[167:152] = {{1{dut.core.rec_color_start[14]}}, dut.core.rec_color_start[14:0]};
+            observed_setup[151:136] = {{1{dut.core.rec_color_step_x[14]}}, dut.core.rec_color_step_x[14:0]};
+            observed_setup[135:120] = {{1{dut.core.rec_color_step_y[14]}}, dut.core.rec_color_step_y[14:0]};
+            observed_setup[119:104] = {{1{dut.core.rec_color_start[29]}}, dut.core.rec_color_start[29:15]};
+            observed_setup[103:88] = {{1{dut.core.rec_color_step_x[29]}}, dut.core.rec_color_step_x[29:15]};
+            observed_setup[87:72] = {{1{dut.core.rec_color_step_y[29]}}, dut.core.rec_color_step_y[29:15]};
+            observed_setup[71:56] = {{1{dut.core.rec_color_start[44]}}, dut.core.rec_color_start[44:30]};
+            observed_setup[55:40] = {{1{dut.core.rec_color_step_x[44]}}, dut.core.rec_color_step_x[44:30]};
+            observed_setup[39:24] = {{1{dut.core.rec_color_step_y[44]}}, dut.core.rec_color_step_y[44:30]};
+            observed_setup[23:0] = dut.core.rec_flat_rgb;
             seen_setups[seen_setup_count] = observed_setup;
           end
 `endif

@@ -10,7 +10,7 @@
 // Mismatches are printed as "<file> vector <line from 0> field <name>: expected .., actual ..", the
 // first one first; the last line is "N passed, M failed" (N + M = the number of expected words).
 //
-// A port without the setup -> walker record wires (dut.rec_*, read hierarchically) is run with
+// A port without the setup -> walker record wires (dut.core.rec_*, read hierarchically) is run with
 // RS_NO_SETUP_RECORD defined: the setup.hex vectors are then skipped ("N passed, M failed, K skipped").
 module rastersim_vectors_tb;
   // The profile (manifest.json "profile") and the port widths derived from it ("widths").
@@ -271,35 +271,35 @@ module rastersim_vectors_tb;
           if (seen_setup_count < DRAWN_SLOTS) begin
             observed_setup = {SETUP_BITS{1'b0}};
             observed_setup[551:520] = in_setup;
-            observed_setup[519:516] = dut.rec_x0;
-            observed_setup[515:512] = dut.rec_x1;
-            observed_setup[511:508] = dut.rec_y0;
-            observed_setup[507:504] = dut.rec_y1;
-            observed_setup[503:480] = {{3{dut.rec_edge_start[20]}}, dut.rec_edge_start[20:0]};
-            observed_setup[479:464] = {{1{dut.rec_edge_step_x[14]}}, dut.rec_edge_step_x[14:0]};
-            observed_setup[463:448] = {{1{dut.rec_edge_step_y[14]}}, dut.rec_edge_step_y[14:0]};
-            observed_setup[447:424] = {{3{dut.rec_span_quot[20]}}, dut.rec_span_quot[20:0]};
-            observed_setup[423:408] = dut.rec_span_rem[13:0];
-            observed_setup[407:392] = {{1{dut.rec_span_step_quot[14]}}, dut.rec_span_step_quot[14:0]};
-            observed_setup[391:376] = dut.rec_span_step_rem[13:0];
-            observed_setup[375:352] = {{3{dut.rec_edge_start[41]}}, dut.rec_edge_start[41:21]};
-            observed_setup[351:336] = {{1{dut.rec_edge_step_x[29]}}, dut.rec_edge_step_x[29:15]};
-            observed_setup[335:320] = {{1{dut.rec_edge_step_y[29]}}, dut.rec_edge_step_y[29:15]};
-            observed_setup[319:296] = {{3{dut.rec_span_quot[41]}}, dut.rec_span_quot[41:21]};
-            observed_setup[295:280] = dut.rec_span_rem[27:14];
-            observed_setup[279:264] = {{1{dut.rec_span_step_quot[29]}}, dut.rec_span_step_quot[29:15]};
-            observed_setup[263:248] = dut.rec_span_step_rem[27:14];
-            observed_setup[247:224] = {{3{dut.rec_edge_start[62]}}, dut.rec_edge_start[62:42]};
-            observed_setup[223:208] = {{1{dut.rec_edge_step_x[44]}}, dut.rec_edge_step_x[44:30]};
-            observed_setup[207:192] = {{1{dut.rec_edge_step_y[44]}}, dut.rec_edge_step_y[44:30]};
-            observed_setup[191:168] = {{3{dut.rec_span_quot[62]}}, dut.rec_span_quot[62:42]};
-            observed_setup[167:152] = dut.rec_span_rem[41:28];
-            observed_setup[151:136] = {{1{dut.rec_span_step_quot[44]}}, dut.rec_span_step_quot[44:30]};
-            observed_setup[135:120] = dut.rec_span_step_rem[41:28];
-            observed_setup[119:88] = {{1{dut.rec_depth_start[30]}}, dut.rec_depth_start};
-            observed_setup[87:56] = {{1{dut.rec_depth_step_x[30]}}, dut.rec_depth_step_x};
-            observed_setup[55:24] = {{1{dut.rec_depth_step_y[30]}}, dut.rec_depth_step_y};
-            observed_setup[23:0] = dut.rec_flat_rgb;
+            observed_setup[519:516] = dut.core.rec_x0;
+            observed_setup[515:512] = dut.core.rec_x1;
+            observed_setup[511:508] = dut.core.rec_y0;
+            observed_setup[507:504] = dut.core.rec_y1;
+            observed_setup[503:480] = {{3{dut.core.rec_edge_start[20]}}, dut.core.rec_edge_start[20:0]};
+            observed_setup[479:464] = {{1{dut.core.rec_edge_step_x[14]}}, dut.core.rec_edge_step_x[14:0]};
+            observed_setup[463:448] = {{1{dut.core.rec_edge_step_y[14]}}, dut.core.rec_edge_step_y[14:0]};
+            observed_setup[447:424] = {{3{dut.core.rec_span_quot[20]}}, dut.core.rec_span_quot[20:0]};
+            observed_setup[423:408] = dut.core.rec_span_rem[13:0];
+            observed_setup[407:392] = {{1{dut.core.rec_span_step_quot[14]}}, dut.core.rec_span_step_quot[14:0]};
+            observed_setup[391:376] = dut.core.rec_span_step_rem[13:0];
+            observed_setup[375:352] = {{3{dut.core.rec_edge_start[41]}}, dut.core.rec_edge_start[41:21]};
+            observed_setup[351:336] = {{1{dut.core.rec_edge_step_x[29]}}, dut.core.rec_edge_step_x[29:15]};
+            observed_setup[335:320] = {{1{dut.core.rec_edge_step_y[29]}}, dut.core.rec_edge_step_y[29:15]};
+            observed_setup[319:296] = {{3{dut.core.rec_span_quot[41]}}, dut.core.rec_span_quot[41:21]};
+            observed_setup[295:280] = dut.core.rec_span_rem[27:14];
+            observed_setup[279:264] = {{1{dut.core.rec_span_step_quot[29]}}, dut.core.rec_span_step_quot[29:15]};
+            observed_setup[263:248] = dut.core.rec_span_step_rem[27:14];
+            observed_setup[247:224] = {{3{dut.core.rec_edge_start[62]}}, dut.core.rec_edge_start[62:42]};
+            observed_setup[223:208] = {{1{dut.core.rec_edge_step_x[44]}}, dut.core.rec_edge_step_x[44:30]};
+            observed_setup[207:192] = {{1{dut.core.rec_edge_step_y[44]}}, dut.core.rec_edge_step_y[44:30]};
+            observed_setup[191:168] = {{3{dut.core.rec_span_quot[62]}}, dut.core.rec_span_quot[62:42]};
+            observed_setup[167:152] = dut.core.rec_span_rem[41:28];
+            observed_setup[151:136] = {{1{dut.core.rec_span_step_quot[44]}}, dut.core.rec_span_step_quot[44:30]};
+            observed_setup[135:120] = dut.core.rec_span_step_rem[41:28];
+            observed_setup[119:88] = {{1{dut.core.rec_depth_start[30]}}, dut.core.rec_depth_start};
+            observed_setup[87:56] = {{1{dut.core.rec_depth_step_x[30]}}, dut.core.rec_depth_step_x};
+            observed_setup[55:24] = {{1{dut.core.rec_depth_step_y[30]}}, dut.core.rec_depth_step_y};
+            observed_setup[23:0] = dut.core.rec_flat_rgb;
             seen_setups[seen_setup_count] = observed_setup;
           end
 `endif

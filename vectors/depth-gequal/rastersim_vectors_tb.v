@@ -10,7 +10,7 @@
 // Mismatches are printed as "<file> vector <line from 0> field <name>: expected .., actual ..", the
 // first one first; the last line is "N passed, M failed" (N + M = the number of expected words).
 //
-// A port without the setup -> walker record wires (dut.rec_*, read hierarchically) is run with
+// A port without the setup -> walker record wires (dut.core.rec_*, read hierarchically) is run with
 // RS_NO_SETUP_RECORD defined: the setup.hex vectors are then skipped ("N passed, M failed, K skipped").
 module rastersim_vectors_tb;
   // The profile (manifest.json "profile") and the port widths derived from it ("widths").
@@ -271,44 +271,44 @@ module rastersim_vectors_tb;
           if (seen_setup_count < DRAWN_SLOTS) begin
             observed_setup = {SETUP_BITS{1'b0}};
             observed_setup[719:688] = in_setup;
-            observed_setup[687:684] = dut.rec_x0;
-            observed_setup[683:680] = dut.rec_x1;
-            observed_setup[679:676] = dut.rec_y0;
-            observed_setup[675:672] = dut.rec_y1;
-            observed_setup[671:648] = {{3{dut.rec_edge_start[20]}}, dut.rec_edge_start[20:0]};
-            observed_setup[647:632] = {{1{dut.rec_edge_step_x[14]}}, dut.rec_edge_step_x[14:0]};
-            observed_setup[631:616] = {{1{dut.rec_edge_step_y[14]}}, dut.rec_edge_step_y[14:0]};
-            observed_setup[615:592] = {{3{dut.rec_span_quot[20]}}, dut.rec_span_quot[20:0]};
-            observed_setup[591:576] = dut.rec_span_rem[13:0];
-            observed_setup[575:560] = {{1{dut.rec_span_step_quot[14]}}, dut.rec_span_step_quot[14:0]};
-            observed_setup[559:544] = dut.rec_span_step_rem[13:0];
-            observed_setup[543:520] = {{3{dut.rec_edge_start[41]}}, dut.rec_edge_start[41:21]};
-            observed_setup[519:504] = {{1{dut.rec_edge_step_x[29]}}, dut.rec_edge_step_x[29:15]};
-            observed_setup[503:488] = {{1{dut.rec_edge_step_y[29]}}, dut.rec_edge_step_y[29:15]};
-            observed_setup[487:464] = {{3{dut.rec_span_quot[41]}}, dut.rec_span_quot[41:21]};
-            observed_setup[463:448] = dut.rec_span_rem[27:14];
-            observed_setup[447:432] = {{1{dut.rec_span_step_quot[29]}}, dut.rec_span_step_quot[29:15]};
-            observed_setup[431:416] = dut.rec_span_step_rem[27:14];
-            observed_setup[415:392] = {{3{dut.rec_edge_start[62]}}, dut.rec_edge_start[62:42]};
-            observed_setup[391:376] = {{1{dut.rec_edge_step_x[44]}}, dut.rec_edge_step_x[44:30]};
-            observed_setup[375:360] = {{1{dut.rec_edge_step_y[44]}}, dut.rec_edge_step_y[44:30]};
-            observed_setup[359:336] = {{3{dut.rec_span_quot[62]}}, dut.rec_span_quot[62:42]};
-            observed_setup[335:320] = dut.rec_span_rem[41:28];
-            observed_setup[319:304] = {{1{dut.rec_span_step_quot[44]}}, dut.rec_span_step_quot[44:30]};
-            observed_setup[303:288] = dut.rec_span_step_rem[41:28];
-            observed_setup[287:248] = {{1{dut.rec_depth_start[38]}}, dut.rec_depth_start};
-            observed_setup[247:208] = {{1{dut.rec_depth_step_x[38]}}, dut.rec_depth_step_x};
-            observed_setup[207:168] = {{1{dut.rec_depth_step_y[38]}}, dut.rec_depth_step_y};
-            observed_setup[167:152] = {{1{dut.rec_color_start[14]}}, dut.rec_color_start[14:0]};
-            observed_setup[151:136] = {{1{dut.rec_color_step_x[14]}}, dut.rec_color_step_x[14:0]};
-            observed_setup[135:120] = {{1{dut.rec_color_step_y[14]}}, dut.rec_color_step_y[14:0]};
-            observed_setup[119:104] = {{1{dut.rec_color_start[29]}}, dut.rec_color_start[29:15]};
-            observed_setup[103:88] = {{1{dut.rec_color_step_x[29]}}, dut.rec_color_step_x[29:15]};
-            observed_setup[87:72] = {{1{dut.rec_color_step_y[29]}}, dut.rec_color_step_y[29:15]};
-            observed_setup[71:56] = {{1{dut.rec_color_start[44]}}, dut.rec_color_start[44:30]};
-            observed_setup[55:40] = {{1{dut.rec_color_step_x[44]}}, dut.rec_color_step_x[44:30]};
-            observed_setup[39:24] = {{1{dut.rec_color_step_y[44]}}, dut.rec_color_step_y[44:30]};
-            observed_setup[23:0] = dut.rec_flat_rgb;
+            observed_setup[687:684] = dut.core.rec_x0;
+            observed_setup[683:680] = dut.core.rec_x1;
+            observed_setup[679:676] = dut.core.rec_y0;
+            observed_setup[675:672] = dut.core.rec_y1;
+            observed_setup[671:648] = {{3{dut.core.rec_edge_start[20]}}, dut.core.rec_edge_start[20:0]};
+            observed_setup[647:632] = {{1{dut.core.rec_edge_step_x[14]}}, dut.core.rec_edge_step_x[14:0]};
+            observed_setup[631:616] = {{1{dut.core.rec_edge_step_y[14]}}, dut.core.rec_edge_step_y[14:0]};
+            observed_setup[615:592] = {{3{dut.core.rec_span_quot[20]}}, dut.core.rec_span_quot[20:0]};
+            observed_setup[591:576] = dut.core.rec_span_rem[13:0];
+            observed_setup[575:560] = {{1{dut.core.rec_span_step_quot[14]}}, dut.core.rec_span_step_quot[14:0]};
+            observed_setup[559:544] = dut.core.rec_span_step_rem[13:0];
+            observed_setup[543:520] = {{3{dut.core.rec_edge_start[41]}}, dut.core.rec_edge_start[41:21]};
+            observed_setup[519:504] = {{1{dut.core.rec_edge_step_x[29]}}, dut.core.rec_edge_step_x[29:15]};
+            observed_setup[503:488] = {{1{dut.core.rec_edge_step_y[29]}}, dut.core.rec_edge_step_y[29:15]};
+            observed_setup[487:464] = {{3{dut.core.rec_span_quot[41]}}, dut.core.rec_span_quot[41:21]};
+            observed_setup[463:448] = dut.core.rec_span_rem[27:14];
+            observed_setup[447:432] = {{1{dut.core.rec_span_step_quot[29]}}, dut.core.rec_span_step_quot[29:15]};
+            observed_setup[431:416] = dut.core.rec_span_step_rem[27:14];
+            observed_setup[415:392] = {{3{dut.core.rec_edge_start[62]}}, dut.core.rec_edge_start[62:42]};
+            observed_setup[391:376] = {{1{dut.core.rec_edge_step_x[44]}}, dut.core.rec_edge_step_x[44:30]};
+            observed_setup[375:360] = {{1{dut.core.rec_edge_step_y[44]}}, dut.core.rec_edge_step_y[44:30]};
+            observed_setup[359:336] = {{3{dut.core.rec_span_quot[62]}}, dut.core.rec_span_quot[62:42]};
+            observed_setup[335:320] = dut.core.rec_span_rem[41:28];
+            observed_setup[319:304] = {{1{dut.core.rec_span_step_quot[44]}}, dut.core.rec_span_step_quot[44:30]};
+            observed_setup[303:288] = dut.core.rec_span_step_rem[41:28];
+            observed_setup[287:248] = {{1{dut.core.rec_depth_start[38]}}, dut.core.rec_depth_start};
+            observed_setup[247:208] = {{1{dut.core.rec_depth_step_x[38]}}, dut.core.rec_depth_step_x};
+            observed_setup[207:168] = {{1{dut.core.rec_depth_step_y[38]}}, dut.core.rec_depth_step_y};
+            observed_setup[167:152] = {{1{dut.core.rec_color_start[14]}}, dut.core.rec_color_start[14:0]};
+            observed_setup[151:136] = {{1{dut.core.rec_color_step_x[14]}}, dut.core.rec_color_step_x[14:0]};
+            observed_setup[135:120] = {{1{dut.core.rec_color_step_y[14]}}, dut.core.rec_color_step_y[14:0]};
+            observed_setup[119:104] = {{1{dut.core.rec_color_start[29]}}, dut.core.rec_color_start[29:15]};
+            observed_setup[103:88] = {{1{dut.core.rec_color_step_x[29]}}, dut.core.rec_color_step_x[29:15]};
+            observed_setup[87:72] = {{1{dut.core.rec_color_step_y[29]}}, dut.core.rec_color_step_y[29:15]};
+            observed_setup[71:56] = {{1{dut.core.rec_color_start[44]}}, dut.core.rec_color_start[44:30]};
+            observed_setup[55:40] = {{1{dut.core.rec_color_step_x[44]}}, dut.core.rec_color_step_x[44:30]};
+            observed_setup[39:24] = {{1{dut.core.rec_color_step_y[44]}}, dut.core.rec_color_step_y[44:30]};
+            observed_setup[23:0] = dut.core.rec_flat_rgb;
             seen_setups[seen_setup_count] = observed_setup;
           end
 `endif

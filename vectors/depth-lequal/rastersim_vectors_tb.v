@@ -10,7 +10,7 @@
 // Mismatches are printed as "<file> vector <line from 0> field <name>: expected .., actual ..", the
 // first one first; the last line is "N passed, M failed" (N + M = the number of expected words).
 //
-// A port without the setup -> walker record wires (dut.rec_*, read hierarchically) is run with
+// A port without the setup -> walker record wires (dut.core.rec_*, read hierarchically) is run with
 // RS_NO_SETUP_RECORD defined: the setup.hex vectors are then skipped ("N passed, M failed, K skipped").
 module rastersim_vectors_tb;
   // The profile (manifest.json "profile") and the port widths derived from it ("widths").
@@ -271,44 +271,44 @@ module rastersim_vectors_tb;
           if (seen_setup_count < DRAWN_SLOTS) begin
             observed_setup = {SETUP_BITS{1'b0}};
             observed_setup[671:640] = in_setup;
-            observed_setup[639:636] = dut.rec_x0;
-            observed_setup[635:632] = dut.rec_x1;
-            observed_setup[631:628] = dut.rec_y0;
-            observed_setup[627:624] = dut.rec_y1;
-            observed_setup[623:600] = {{3{dut.rec_edge_start[20]}}, dut.rec_edge_start[20:0]};
-            observed_setup[599:584] = {{1{dut.rec_edge_step_x[14]}}, dut.rec_edge_step_x[14:0]};
-            observed_setup[583:568] = {{1{dut.rec_edge_step_y[14]}}, dut.rec_edge_step_y[14:0]};
-            observed_setup[567:544] = {{3{dut.rec_span_quot[20]}}, dut.rec_span_quot[20:0]};
-            observed_setup[543:528] = dut.rec_span_rem[13:0];
-            observed_setup[527:512] = {{1{dut.rec_span_step_quot[14]}}, dut.rec_span_step_quot[14:0]};
-            observed_setup[511:496] = dut.rec_span_step_rem[13:0];
-            observed_setup[495:472] = {{3{dut.rec_edge_start[41]}}, dut.rec_edge_start[41:21]};
-            observed_setup[471:456] = {{1{dut.rec_edge_step_x[29]}}, dut.rec_edge_step_x[29:15]};
-            observed_setup[455:440] = {{1{dut.rec_edge_step_y[29]}}, dut.rec_edge_step_y[29:15]};
-            observed_setup[439:416] = {{3{dut.rec_span_quot[41]}}, dut.rec_span_quot[41:21]};
-            observed_setup[415:400] = dut.rec_span_rem[27:14];
-            observed_setup[399:384] = {{1{dut.rec_span_step_quot[29]}}, dut.rec_span_step_quot[29:15]};
-            observed_setup[383:368] = dut.rec_span_step_rem[27:14];
-            observed_setup[367:344] = {{3{dut.rec_edge_start[62]}}, dut.rec_edge_start[62:42]};
-            observed_setup[343:328] = {{1{dut.rec_edge_step_x[44]}}, dut.rec_edge_step_x[44:30]};
-            observed_setup[327:312] = {{1{dut.rec_edge_step_y[44]}}, dut.rec_edge_step_y[44:30]};
-            observed_setup[311:288] = {{3{dut.rec_span_quot[62]}}, dut.rec_span_quot[62:42]};
-            observed_setup[287:272] = dut.rec_span_rem[41:28];
-            observed_setup[271:256] = {{1{dut.rec_span_step_quot[44]}}, dut.rec_span_step_quot[44:30]};
-            observed_setup[255:240] = dut.rec_span_step_rem[41:28];
-            observed_setup[239:216] = {{1{dut.rec_depth_start[22]}}, dut.rec_depth_start};
-            observed_setup[215:192] = {{1{dut.rec_depth_step_x[22]}}, dut.rec_depth_step_x};
-            observed_setup[191:168] = {{1{dut.rec_depth_step_y[22]}}, dut.rec_depth_step_y};
-            observed_setup[167:152] = {{1{dut.rec_color_start[14]}}, dut.rec_color_start[14:0]};
-            observed_setup[151:136] = {{1{dut.rec_color_step_x[14]}}, dut.rec_color_step_x[14:0]};
-            observed_setup[135:120] = {{1{dut.rec_color_step_y[14]}}, dut.rec_color_step_y[14:0]};
-            observed_setup[119:104] = {{1{dut.rec_color_start[29]}}, dut.rec_color_start[29:15]};
-            observed_setup[103:88] = {{1{dut.rec_color_step_x[29]}}, dut.rec_color_step_x[29:15]};
-            observed_setup[87:72] = {{1{dut.rec_color_step_y[29]}}, dut.rec_color_step_y[29:15]};
-            observed_setup[71:56] = {{1{dut.rec_color_start[44]}}, dut.rec_color_start[44:30]};
-            observed_setup[55:40] = {{1{dut.rec_color_step_x[44]}}, dut.rec_color_step_x[44:30]};
-            observed_setup[39:24] = {{1{dut.rec_color_step_y[44]}}, dut.rec_color_step_y[44:30]};
-            observed_setup[23:0] = dut.rec_flat_rgb;
+            observed_setup[639:636] = dut.core.rec_x0;
+            observed_setup[635:632] = dut.core.rec_x1;
+            observed_setup[631:628] = dut.core.rec_y0;
+            observed_setup[627:624] = dut.core.rec_y1;
+            observed_setup[623:600] = {{3{dut.core.rec_edge_start[20]}}, dut.core.rec_edge_start[20:0]};
+            observed_setup[599:584] = {{1{dut.core.rec_edge_step_x[14]}}, dut.core.rec_edge_step_x[14:0]};
+            observed_setup[583:568] = {{1{dut.core.rec_edge_step_y[14]}}, dut.core.rec_edge_step_y[14:0]};
+            observed_setup[567:544] = {{3{dut.core.rec_span_quot[20]}}, dut.core.rec_span_quot[20:0]};
+            observed_setup[543:528] = dut.core.rec_span_rem[13:0];
+            observed_setup[527:512] = {{1{dut.core.rec_span_step_quot[14]}}, dut.core.rec_span_step_quot[14:0]};
+            observed_setup[511:496] = dut.core.rec_span_step_rem[13:0];
+            observed_setup[495:472] = {{3{dut.core.rec_edge_start[41]}}, dut.core.rec_edge_start[41:21]};
+            observed_setup[471:456] = {{1{dut.core.rec_edge_step_x[29]}}, dut.core.rec_edge_step_x[29:15]};
+            observed_setup[455:440] = {{1{dut.core.rec_edge_step_y[29]}}, dut.core.rec_edge_step_y[29:15]};
+            observed_setup[439:416] = {{3{dut.core.rec_span_quot[41]}}, dut.core.rec_span_quot[41:21]};
+            observed_setup[415:400] = dut.core.rec_span_rem[27:14];
+            observed_setup[399:384] = {{1{dut.core.rec_span_step_quot[29]}}, dut.core.rec_span_step_quot[29:15]};
+            observed_setup[383:368] = dut.core.rec_span_step_rem[27:14];
+            observed_setup[367:344] = {{3{dut.core.rec_edge_start[62]}}, dut.core.rec_edge_start[62:42]};
+            observed_setup[343:328] = {{1{dut.core.rec_edge_step_x[44]}}, dut.core.rec_edge_step_x[44:30]};
+            observed_setup[327:312] = {{1{dut.core.rec_edge_step_y[44]}}, dut.core.rec_edge_step_y[44:30]};
+            observed_setup[311:288] = {{3{dut.core.rec_span_quot[62]}}, dut.core.rec_span_quot[62:42]};
+            observed_setup[287:272] = dut.core.rec_span_rem[41:28];
+            observed_setup[271:256] = {{1{dut.core.rec_span_step_quot[44]}}, dut.core.rec_span_step_quot[44:30]};
+            observed_setup[255:240] = dut.core.rec_span_step_rem[41:28];
+            observed_setup[239:216] = {{1{dut.core.rec_depth_start[22]}}, dut.core.rec_depth_start};
+            observed_setup[215:192] = {{1{dut.core.rec_depth_step_x[22]}}, dut.core.rec_depth_step_x};
+            observed_setup[191:168] = {{1{dut.core.rec_depth_step_y[22]}}, dut.core.rec_depth_step_y};
+            observed_setup[167:152] = {{1{dut.core.rec_color_start[14]}}, dut.core.rec_color_start[14:0]};
+            observed_setup[151:136] = {{1{dut.core.rec_color_step_x[14]}}, dut.core.rec_color_step_x[14:0]};
+            observed_setup[135:120] = {{1{dut.core.rec_color_step_y[14]}}, dut.core.rec_color_step_y[14:0]};
+            observed_setup[119:104] = {{1{dut.core.rec_color_start[29]}}, dut.core.rec_color_start[29:15]};
+            observed_setup[103:88] = {{1{dut.core.rec_color_step_x[29]}}, dut.core.rec_color_step_x[29:15]};
+            observed_setup[87:72] = {{1{dut.core.rec_color_step_y[29]}}, dut.core.rec_color_step_y[29:15]};
+            observed_setup[71:56] = {{1{dut.core.rec_color_start[44]}}, dut.core.rec_color_start[44:30]};
+            observed_setup[55:40] = {{1{dut.core.rec_color_step_x[44]}}, dut.core.rec_color_step_x[44:30]};
+            observed_setup[39:24] = {{1{dut.core.rec_color_step_y[44]}}, dut.core.rec_color_step_y[44:30]};
+            observed_setup[23:0] = dut.core.rec_flat_rgb;
             seen_setups[seen_setup_count] = observed_setup;
           end
 `endif

@@ -10,7 +10,7 @@
 // Mismatches are printed as "<file> vector <line from 0> field <name>: expected .., actual ..", the
 // first one first; the last line is "N passed, M failed" (N + M = the number of expected words).
 //
-// A port without the setup -> walker record wires (dut.rec_*, read hierarchically) is run with
+// A port without the setup -> walker record wires (dut.core.rec_*, read hierarchically) is run with
 // RS_NO_SETUP_RECORD defined: the setup.hex vectors are then skipped ("N passed, M failed, K skipped").
 module rastersim_vectors_tb;
   // The profile (manifest.json "profile") and the port widths derived from it ("widths").
@@ -271,35 +271,35 @@ module rastersim_vectors_tb;
           if (seen_setup_count < DRAWN_SLOTS) begin
             observed_setup = {SETUP_BITS{1'b0}};
             observed_setup[771:740] = in_setup;
-            observed_setup[739:732] = dut.rec_x0;
-            observed_setup[731:724] = dut.rec_x1;
-            observed_setup[723:716] = dut.rec_y0;
-            observed_setup[715:708] = dut.rec_y1;
-            observed_setup[707:676] = dut.rec_edge_start[31:0];
-            observed_setup[675:652] = dut.rec_edge_step_x[23:0];
-            observed_setup[651:624] = {{3{dut.rec_edge_step_y[24]}}, dut.rec_edge_step_y[24:0]};
-            observed_setup[623:592] = dut.rec_span_quot[31:0];
-            observed_setup[591:568] = dut.rec_span_rem[22:0];
-            observed_setup[567:540] = {{3{dut.rec_span_step_quot[24]}}, dut.rec_span_step_quot[24:0]};
-            observed_setup[539:516] = dut.rec_span_step_rem[22:0];
-            observed_setup[515:484] = dut.rec_edge_start[63:32];
-            observed_setup[483:460] = dut.rec_edge_step_x[47:24];
-            observed_setup[459:432] = {{3{dut.rec_edge_step_y[49]}}, dut.rec_edge_step_y[49:25]};
-            observed_setup[431:400] = dut.rec_span_quot[63:32];
-            observed_setup[399:376] = dut.rec_span_rem[45:23];
-            observed_setup[375:348] = {{3{dut.rec_span_step_quot[49]}}, dut.rec_span_step_quot[49:25]};
-            observed_setup[347:324] = dut.rec_span_step_rem[45:23];
-            observed_setup[323:292] = dut.rec_edge_start[95:64];
-            observed_setup[291:268] = dut.rec_edge_step_x[71:48];
-            observed_setup[267:240] = {{3{dut.rec_edge_step_y[74]}}, dut.rec_edge_step_y[74:50]};
-            observed_setup[239:208] = dut.rec_span_quot[95:64];
-            observed_setup[207:184] = dut.rec_span_rem[68:46];
-            observed_setup[183:156] = {{3{dut.rec_span_step_quot[74]}}, dut.rec_span_step_quot[74:50]};
-            observed_setup[155:132] = dut.rec_span_step_rem[68:46];
-            observed_setup[131:96] = {{3{dut.rec_depth_start[32]}}, dut.rec_depth_start};
-            observed_setup[95:60] = {{3{dut.rec_depth_step_x[32]}}, dut.rec_depth_step_x};
-            observed_setup[59:24] = {{3{dut.rec_depth_step_y[32]}}, dut.rec_depth_step_y};
-            observed_setup[23:0] = dut.rec_flat_rgb;
+            observed_setup[739:732] = dut.core.rec_x0;
+            observed_setup[731:724] = dut.core.rec_x1;
+            observed_setup[723:716] = dut.core.rec_y0;
+            observed_setup[715:708] = dut.core.rec_y1;
+            observed_setup[707:676] = dut.core.rec_edge_start[31:0];
+            observed_setup[675:652] = dut.core.rec_edge_step_x[23:0];
+            observed_setup[651:624] = {{3{dut.core.rec_edge_step_y[24]}}, dut.core.rec_edge_step_y[24:0]};
+            observed_setup[623:592] = dut.core.rec_span_quot[31:0];
+            observed_setup[591:568] = dut.core.rec_span_rem[22:0];
+            observed_setup[567:540] = {{3{dut.core.rec_span_step_quot[24]}}, dut.core.rec_span_step_quot[24:0]};
+            observed_setup[539:516] = dut.core.rec_span_step_rem[22:0];
+            observed_setup[515:484] = dut.core.rec_edge_start[63:32];
+            observed_setup[483:460] = dut.core.rec_edge_step_x[47:24];
+            observed_setup[459:432] = {{3{dut.core.rec_edge_step_y[49]}}, dut.core.rec_edge_step_y[49:25]};
+            observed_setup[431:400] = dut.core.rec_span_quot[63:32];
+            observed_setup[399:376] = dut.core.rec_span_rem[45:23];
+            observed_setup[375:348] = {{3{dut.core.rec_span_step_quot[49]}}, dut.core.rec_span_step_quot[49:25]};
+            observed_setup[347:324] = dut.core.rec_span_step_rem[45:23];
+            observed_setup[323:292] = dut.core.rec_edge_start[95:64];
+            observed_setup[291:268] = dut.core.rec_edge_step_x[71:48];
+            observed_setup[267:240] = {{3{dut.core.rec_edge_step_y[74]}}, dut.core.rec_edge_step_y[74:50]};
+            observed_setup[239:208] = dut.core.rec_span_quot[95:64];
+            observed_setup[207:184] = dut.core.rec_span_rem[68:46];
+            observed_setup[183:156] = {{3{dut.core.rec_span_step_quot[74]}}, dut.core.rec_span_step_quot[74:50]};
+            observed_setup[155:132] = dut.core.rec_span_step_rem[68:46];
+            observed_setup[131:96] = {{3{dut.core.rec_depth_start[32]}}, dut.core.rec_depth_start};
+            observed_setup[95:60] = {{3{dut.core.rec_depth_step_x[32]}}, dut.core.rec_depth_step_x};
+            observed_setup[59:24] = {{3{dut.core.rec_depth_step_y[32]}}, dut.core.rec_depth_step_y};
+            observed_setup[23:0] = dut.core.rec_flat_rgb;
             seen_setups[seen_setup_count] = observed_setup;
           end
 `endif

@@ -10,7 +10,7 @@
 // Mismatches are printed as "<file> vector <line from 0> field <name>: expected .., actual ..", the
 // first one first; the last line is "N passed, M failed" (N + M = the number of expected words).
 //
-// A port without the setup -> walker record wires (dut.rec_*, read hierarchically) is run with
+// A port without the setup -> walker record wires (dut.core.rec_*, read hierarchically) is run with
 // RS_NO_SETUP_RECORD defined: the setup.hex vectors are then skipped ("N passed, M failed, K skipped").
 module rastersim_vectors_tb;
   // The profile (manifest.json "profile") and the port widths derived from it ("widths").
@@ -271,44 +271,44 @@ module rastersim_vectors_tb;
           if (seen_setup_count < DRAWN_SLOTS) begin
             observed_setup = {SETUP_BITS{1'b0}};
             observed_setup[783:752] = in_setup;
-            observed_setup[751:744] = dut.rec_x0;
-            observed_setup[743:736] = dut.rec_x1;
-            observed_setup[735:728] = dut.rec_y0;
-            observed_setup[727:720] = dut.rec_y1;
-            observed_setup[719:696] = dut.rec_edge_start[23:0];
-            observed_setup[695:680] = dut.rec_edge_step_x[15:0];
-            observed_setup[679:660] = {{3{dut.rec_edge_step_y[16]}}, dut.rec_edge_step_y[16:0]};
-            observed_setup[659:636] = dut.rec_span_quot[23:0];
-            observed_setup[635:620] = dut.rec_span_rem[14:0];
-            observed_setup[619:600] = {{3{dut.rec_span_step_quot[16]}}, dut.rec_span_step_quot[16:0]};
-            observed_setup[599:584] = dut.rec_span_step_rem[14:0];
-            observed_setup[583:560] = dut.rec_edge_start[47:24];
-            observed_setup[559:544] = dut.rec_edge_step_x[31:16];
-            observed_setup[543:524] = {{3{dut.rec_edge_step_y[33]}}, dut.rec_edge_step_y[33:17]};
-            observed_setup[523:500] = dut.rec_span_quot[47:24];
-            observed_setup[499:484] = dut.rec_span_rem[29:15];
-            observed_setup[483:464] = {{3{dut.rec_span_step_quot[33]}}, dut.rec_span_step_quot[33:17]};
-            observed_setup[463:448] = dut.rec_span_step_rem[29:15];
-            observed_setup[447:424] = dut.rec_edge_start[71:48];
-            observed_setup[423:408] = dut.rec_edge_step_x[47:32];
-            observed_setup[407:388] = {{3{dut.rec_edge_step_y[50]}}, dut.rec_edge_step_y[50:34]};
-            observed_setup[387:364] = dut.rec_span_quot[71:48];
-            observed_setup[363:348] = dut.rec_span_rem[44:30];
-            observed_setup[347:328] = {{3{dut.rec_span_step_quot[50]}}, dut.rec_span_step_quot[50:34]};
-            observed_setup[327:312] = dut.rec_span_step_rem[44:30];
-            observed_setup[311:276] = {{3{dut.rec_depth_start[32]}}, dut.rec_depth_start};
-            observed_setup[275:240] = {{3{dut.rec_depth_step_x[32]}}, dut.rec_depth_step_x};
-            observed_setup[239:204] = {{3{dut.rec_depth_step_y[32]}}, dut.rec_depth_step_y};
-            observed_setup[203:184] = {{3{dut.rec_color_start[16]}}, dut.rec_color_start[16:0]};
-            observed_setup[183:164] = {{3{dut.rec_color_step_x[16]}}, dut.rec_color_step_x[16:0]};
-            observed_setup[163:144] = {{3{dut.rec_color_step_y[16]}}, dut.rec_color_step_y[16:0]};
-            observed_setup[143:124] = {{3{dut.rec_color_start[33]}}, dut.rec_color_start[33:17]};
-            observed_setup[123:104] = {{3{dut.rec_color_step_x[33]}}, dut.rec_color_step_x[33:17]};
-            observed_setup[103:84] = {{3{dut.rec_color_step_y[33]}}, dut.rec_color_step_y[33:17]};
-            observed_setup[83:64] = {{3{dut.rec_color_start[50]}}, dut.rec_color_start[50:34]};
-            observed_setup[63:44] = {{3{dut.rec_color_step_x[50]}}, dut.rec_color_step_x[50:34]};
-            observed_setup[43:24] = {{3{dut.rec_color_step_y[50]}}, dut.rec_color_step_y[50:34]};
-            observed_setup[23:0] = dut.rec_flat_rgb;
+            observed_setup[751:744] = dut.core.rec_x0;
+            observed_setup[743:736] = dut.core.rec_x1;
+            observed_setup[735:728] = dut.core.rec_y0;
+            observed_setup[727:720] = dut.core.rec_y1;
+            observed_setup[719:696] = dut.core.rec_edge_start[23:0];
+            observed_setup[695:680] = dut.core.rec_edge_step_x[15:0];
+            observed_setup[679:660] = {{3{dut.core.rec_edge_step_y[16]}}, dut.core.rec_edge_step_y[16:0]};
+            observed_setup[659:636] = dut.core.rec_span_quot[23:0];
+            observed_setup[635:620] = dut.core.rec_span_rem[14:0];
+            observed_setup[619:600] = {{3{dut.core.rec_span_step_quot[16]}}, dut.core.rec_span_step_quot[16:0]};
+            observed_setup[599:584] = dut.core.rec_span_step_rem[14:0];
+            observed_setup[583:560] = dut.core.rec_edge_start[47:24];
+            observed_setup[559:544] = dut.core.rec_edge_step_x[31:16];
+            observed_setup[543:524] = {{3{dut.core.rec_edge_step_y[33]}}, dut.core.rec_edge_step_y[33:17]};
+            observed_setup[523:500] = dut.core.rec_span_quot[47:24];
+            observed_setup[499:484] = dut.core.rec_span_rem[29:15];
+            observed_setup[483:464] = {{3{dut.core.rec_span_step_quot[33]}}, dut.core.rec_span_step_quot[33:17]};
+            observed_setup[463:448] = dut.core.rec_span_step_rem[29:15];
+            observed_setup[447:424] = dut.core.rec_edge_start[71:48];
+            observed_setup[423:408] = dut.core.rec_edge_step_x[47:32];
+            observed_setup[407:388] = {{3{dut.core.rec_edge_step_y[50]}}, dut.core.rec_edge_step_y[50:34]};
+            observed_setup[387:364] = dut.core.rec_span_quot[71:48];
+            observed_setup[363:348] = dut.core.rec_span_rem[44:30];
+            observed_setup[347:328] = {{3{dut.core.rec_span_step_quot[50]}}, dut.core.rec_span_step_quot[50:34]};
+            observed_setup[327:312] = dut.core.rec_span_step_rem[44:30];
+            observed_setup[311:276] = {{3{dut.core.rec_depth_start[32]}}, dut.core.rec_depth_start};
+            observed_setup[275:240] = {{3{dut.core.rec_depth_step_x[32]}}, dut.core.rec_depth_step_x};
+            observed_setup[239:204] = {{3{dut.core.rec_depth_step_y[32]}}, dut.core.rec_depth_step_y};
+            observed_setup[203:184] = {{3{dut.core.rec_color_start[16]}}, dut.core.rec_color_start[16:0]};
+            observed_setup[183:164] = {{3{dut.core.rec_color_step_x[16]}}, dut.core.rec_color_step_x[16:0]};
+            observed_setup[163:144] = {{3{dut.core.rec_color_step_y[16]}}, dut.core.rec_color_step_y[16:0]};
+            observed_setup[143:124] = {{3{dut.core.rec_color_start[33]}}, dut.core.rec_color_start[33:17]};
+            observed_setup[123:104] = {{3{dut.core.rec_color_step_x[33]}}, dut.core.rec_color_step_x[33:17]};
+            observed_setup[103:84] = {{3{dut.core.rec_color_step_y[33]}}, dut.core.rec_color_step_y[33:17]};
+            observed_setup[83:64] = {{3{dut.core.rec_color_start[50]}}, dut.core.rec_color_start[50:34]};
+            observed_setup[63:44] = {{3{dut.core.rec_color_step_x[50]}}, dut.core.rec_color_step_x[50:34]};
+            observed_setup[43:24] = {{3{dut.core.rec_color_step_y[50]}}, dut.core.rec_color_step_y[50:34]};
+            observed_setup[23:0] = dut.core.rec_flat_rgb;
             seen_setups[seen_setup_count] = observed_setup;
           end
 `endif

@@ -10,7 +10,7 @@
 // Mismatches are printed as "<file> vector <line from 0> field <name>: expected .., actual ..", the
 // first one first; the last line is "N passed, M failed" (N + M = the number of expected words).
 //
-// A port without the setup -> walker record wires (dut.rec_*, read hierarchically) is run with
+// A port without the setup -> walker record wires (dut.core.rec_*, read hierarchically) is run with
 // RS_NO_SETUP_RECORD defined: the setup.hex vectors are then skipped ("N passed, M failed, K skipped").
 module rastersim_vectors_tb;
   // The profile (manifest.json "profile") and the port widths derived from it ("widths").
@@ -271,44 +271,44 @@ module rastersim_vectors_tb;
           if (seen_setup_count < DRAWN_SLOTS) begin
             observed_setup = {SETUP_BITS{1'b0}};
             observed_setup[819:788] = in_setup;
-            observed_setup[787:780] = dut.rec_x0;
-            observed_setup[779:772] = dut.rec_x1;
-            observed_setup[771:764] = dut.rec_y0;
-            observed_setup[763:756] = dut.rec_y1;
-            observed_setup[755:728] = {{3{dut.rec_edge_start[24]}}, dut.rec_edge_start[24:0]};
-            observed_setup[727:708] = {{3{dut.rec_edge_step_x[16]}}, dut.rec_edge_step_x[16:0]};
-            observed_setup[707:688] = {{3{dut.rec_edge_step_y[16]}}, dut.rec_edge_step_y[16:0]};
-            observed_setup[687:660] = {{3{dut.rec_span_quot[24]}}, dut.rec_span_quot[24:0]};
-            observed_setup[659:644] = dut.rec_span_rem[15:0];
-            observed_setup[643:624] = {{3{dut.rec_span_step_quot[16]}}, dut.rec_span_step_quot[16:0]};
-            observed_setup[623:608] = dut.rec_span_step_rem[15:0];
-            observed_setup[607:580] = {{3{dut.rec_edge_start[49]}}, dut.rec_edge_start[49:25]};
-            observed_setup[579:560] = {{3{dut.rec_edge_step_x[33]}}, dut.rec_edge_step_x[33:17]};
-            observed_setup[559:540] = {{3{dut.rec_edge_step_y[33]}}, dut.rec_edge_step_y[33:17]};
-            observed_setup[539:512] = {{3{dut.rec_span_quot[49]}}, dut.rec_span_quot[49:25]};
-            observed_setup[511:496] = dut.rec_span_rem[31:16];
-            observed_setup[495:476] = {{3{dut.rec_span_step_quot[33]}}, dut.rec_span_step_quot[33:17]};
-            observed_setup[475:460] = dut.rec_span_step_rem[31:16];
-            observed_setup[459:432] = {{3{dut.rec_edge_start[74]}}, dut.rec_edge_start[74:50]};
-            observed_setup[431:412] = {{3{dut.rec_edge_step_x[50]}}, dut.rec_edge_step_x[50:34]};
-            observed_setup[411:392] = {{3{dut.rec_edge_step_y[50]}}, dut.rec_edge_step_y[50:34]};
-            observed_setup[391:364] = {{3{dut.rec_span_quot[74]}}, dut.rec_span_quot[74:50]};
-            observed_setup[363:348] = dut.rec_span_rem[47:32];
-            observed_setup[347:328] = {{3{dut.rec_span_step_quot[50]}}, dut.rec_span_step_quot[50:34]};
-            observed_setup[327:312] = dut.rec_span_step_rem[47:32];
-            observed_setup[311:276] = {{3{dut.rec_depth_start[32]}}, dut.rec_depth_start};
-            observed_setup[275:240] = {{3{dut.rec_depth_step_x[32]}}, dut.rec_depth_step_x};
-            observed_setup[239:204] = {{3{dut.rec_depth_step_y[32]}}, dut.rec_depth_step_y};
-            observed_setup[203:184] = {{3{dut.rec_color_start[16]}}, dut.rec_color_start[16:0]};
-            observed_setup[183:164] = {{3{dut.rec_color_step_x[16]}}, dut.rec_color_step_x[16:0]};
-            observed_setup[163:144] = {{3{dut.rec_color_step_y[16]}}, dut.rec_color_step_y[16:0]};
-            observed_setup[143:124] = {{3{dut.rec_color_start[33]}}, dut.rec_color_start[33:17]};
-            observed_setup[123:104] = {{3{dut.rec_color_step_x[33]}}, dut.rec_color_step_x[33:17]};
-            observed_setup[103:84] = {{3{dut.rec_color_step_y[33]}}, dut.rec_color_step_y[33:17]};
-            observed_setup[83:64] = {{3{dut.rec_color_start[50]}}, dut.rec_color_start[50:34]};
-            observed_setup[63:44] = {{3{dut.rec_color_step_x[50]}}, dut.rec_color_step_x[50:34]};
-            observed_setup[43:24] = {{3{dut.rec_color_step_y[50]}}, dut.rec_color_step_y[50:34]};
-            observed_setup[23:0] = dut.rec_flat_rgb;
+            observed_setup[787:780] = dut.core.rec_x0;
+            observed_setup[779:772] = dut.core.rec_x1;
+            observed_setup[771:764] = dut.core.rec_y0;
+            observed_setup[763:756] = dut.core.rec_y1;
+            observed_setup[755:728] = {{3{dut.core.rec_edge_start[24]}}, dut.core.rec_edge_start[24:0]};
+            observed_setup[727:708] = {{3{dut.core.rec_edge_step_x[16]}}, dut.core.rec_edge_step_x[16:0]};
+            observed_setup[707:688] = {{3{dut.core.rec_edge_step_y[16]}}, dut.core.rec_edge_step_y[16:0]};
+            observed_setup[687:660] = {{3{dut.core.rec_span_quot[24]}}, dut.core.rec_span_quot[24:0]};
+            observed_setup[659:644] = dut.core.rec_span_rem[15:0];
+            observed_setup[643:624] = {{3{dut.core.rec_span_step_quot[16]}}, dut.core.rec_span_step_quot[16:0]};
+            observed_setup[623:608] = dut.core.rec_span_step_rem[15:0];
+            observed_setup[607:580] = {{3{dut.core.rec_edge_start[49]}}, dut.core.rec_edge_start[49:25]};
+            observed_setup[579:560] = {{3{dut.core.rec_edge_step_x[33]}}, dut.core.rec_edge_step_x[33:17]};
+            observed_setup[559:540] = {{3{dut.core.rec_edge_step_y[33]}}, dut.core.rec_edge_step_y[33:17]};
+            observed_setup[539:512] = {{3{dut.core.rec_span_quot[49]}}, dut.core.rec_span_quot[49:25]};
+            observed_setup[511:496] = dut.core.rec_span_rem[31:16];
+            observed_setup[495:476] = {{3{dut.core.rec_span_step_quot[33]}}, dut.core.rec_span_step_quot[33:17]};
+            observed_setup[475:460] = dut.core.rec_span_step_rem[31:16];
+            observed_setup[459:432] = {{3{dut.core.rec_edge_start[74]}}, dut.core.rec_edge_start[74:50]};
+            observed_setup[431:412] = {{3{dut.core.rec_edge_step_x[50]}}, dut.core.rec_edge_step_x[50:34]};
+            observed_setup[411:392] = {{3{dut.core.rec_edge_step_y[50]}}, dut.core.rec_edge_step_y[50:34]};
+            observed_setup[391:364] = {{3{dut.core.rec_span_quot[74]}}, dut.core.rec_span_quot[74:50]};
+            observed_setup[363:348] = dut.core.rec_span_rem[47:32];
+            observed_setup[347:328] = {{3{dut.core.rec_span_step_quot[50]}}, dut.core.rec_span_step_quot[50:34]};
+            observed_setup[327:312] = dut.core.rec_span_step_rem[47:32];
+            observed_setup[311:276] = {{3{dut.core.rec_depth_start[32]}}, dut.core.rec_depth_start};
+            observed_setup[275:240] = {{3{dut.core.rec_depth_step_x[32]}}, dut.core.rec_depth_step_x};
+            observed_setup[239:204] = {{3{dut.core.rec_depth_step_y[32]}}, dut.core.rec_depth_step_y};
+            observed_setup[203:184] = {{3{dut.core.rec_color_start[16]}}, dut.core.rec_color_start[16:0]};
+            observed_setup[183:164] = {{3{dut.core.rec_color_step_x[16]}}, dut.core.rec_color_step_x[16:0]};
+            observed_setup[163:144] = {{3{dut.core.rec_color_step_y[16]}}, dut.core.rec_color_step_y[16:0]};
+            observed_setup[143:124] = {{3{dut.core.rec_color_start[33]}}, dut.core.rec_color_start[33:17]};
+            observed_setup[123:104] = {{3{dut.core.rec_color_step_x[33]}}, dut.core.rec_color_step_x[33:17]};
+            observed_setup[103:84] = {{3{dut.core.rec_color_step_y[33]}}, dut.core.rec_color_step_y[33:17]};
+            observed_setup[83:64] = {{3{dut.core.rec_color_start[50]}}, dut.core.rec_color_start[50:34]};
+            observed_setup[63:44] = {{3{dut.core.rec_color_step_x[50]}}, dut.core.rec_color_step_x[50:34]};
+            observed_setup[43:24] = {{3{dut.core.rec_color_step_y[50]}}, dut.core.rec_color_step_y[50:34]};
+            observed_setup[23:0] = dut.core.rec_flat_rgb;
             seen_setups[seen_setup_count] = observed_setup;
           end
 `endif

@@ -1,0 +1,217 @@
+// The pipeline without its memory (model/pipeline.cpp): triangle_setup -> scanline_walker
+// (+ z_adder) -> zbuffer, coupled by valid/ready handshakes so that each unit can stall
+// (docs/cycle-model.md), with the z-buffer's memory port on the mem_* ports (contract in
+// rtl/zbuffer.sv and docs/rtl.md). rastersim_top puts the on-chip memory (zbuffer_memory) behind
+// it; the SystemC system (testbench/systemc/) puts a memory model with a stall pattern there.
+// Widths come from the profile parameters; the runtime profile keys (depth test, cull, traversal,
+// shading, memory latency) are cfg_* inputs, sampled during reset.
+// Cycle 0 of a frame is the first cycle with frame_ready (= mem_clear_done) high.
+// The trace_* outputs expose the unit handshakes and decisions for the co-simulation scoreboard.
+module rastersim_core #(
+  parameter integer WIDTH = 640,
+  parameter integer HEIGHT = 480,
+  parameter integer SUBPIXEL_BITS = 4,
+  parameter integer Z_BITS = 24,
+  parameter integer Z_GUARD_BITS = 0,      // 0: derived (proven minimum)
+  parameter integer MAX_MEMORY_LATENCY = 64
+) (
+  input  wire clk,
+  input  wire rst,
+  input  wire [2:0] cfg_depth_func,        // 0 never .. 7 always, as profile.h DepthFunc
+  input  wire       cfg_depth_write,
+  input  wire [1:0] cfg_cull,              // 0 none, 1 back, 2 front
+  input  wire       cfg_front_face,        // 0 ccw, 1 cw
+  input  wire       cfg_traversal,         // 0 bbox, 1 span
+  input  wire       cfg_shading,           // 0 flat, 1 gouraud
+  input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,  // 1 .. MAX_MEMORY_LATENCY
+  output wire frame_ready,
+  // Triangle command: snapped vertices, x and y s(COORD_BITS-S).S, z uN, rgb {r, g, b}.
+  input  wire cmd_valid,
+  output wire cmd_ready,
+  input  wire [rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] cmd_x0, cmd_y0, cmd_x1, cmd_y1, cmd_x2, cmd_y2,
+  input  wire [Z_BITS-1:0] cmd_z0, cmd_z1, cmd_z2,
+  input  wire [23:0] cmd_rgb0, cmd_rgb1, cmd_rgb2,
+  // Trace: setup decision (FRONT cycle) and activity.
+  output wire trace_setup_decided,
+  output wire [1:0] trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen
+  output wire trace_setup_busy,
+  output wire trace_setup_stall,           // output valid, walker busy
+  output wire trace_walker_load,           // setup -> walker handshake
+  output wire trace_walker_busy,
+  output wire trace_walker_candidate,
+  output wire trace_walker_last,
+  // Trace: walker -> z-buffer fragment handshake and the depth test result L cycles later.
+  output wire trace_frag_valid,
+  output wire trace_frag_ready,
+  output wire [rs_ubits32(WIDTH - 1)-1:0]  trace_frag_x,
+  output wire [rs_ubits32(HEIGHT - 1)-1:0] trace_frag_y,
+  output wire [Z_BITS-1:0] trace_frag_z,
+  output wire [23:0]       trace_frag_rgb,
+  output wire trace_result_valid,
+  output wire trace_result_pass,
+  output wire trace_zbuffer_busy,
+  // Memory port of the z-buffer (word address y * WIDTH + x).
+  input  wire mem_clear_done,
+  output wire mem_rd_valid,
+  input  wire mem_rd_ready,
+  output wire [rs_ubits32(WIDTH * HEIGHT - 1)-1:0] mem_rd_addr,
+  input  wire [Z_BITS-1:0] mem_rd_depth,
+  output wire mem_wr_depth_en,
+  output wire mem_wr_color_en,
+  output wire [rs_ubits32(WIDTH * HEIGHT - 1)-1:0] mem_wr_addr,
+  output wire [Z_BITS-1:0] mem_wr_depth,
+  output wire [23:0]       mem_wr_rgb
+);
+`include "rastersim_widths.vh"
+
+  // Derived widths, the same formulas as model/widths.h; the C++ build static_asserts these
+  // (public, so Verilator emits them as static constexpr) against rastersim::derive_widths.
+  // Some are published for that check only, hence unused here.
+  /* verilator lint_off UNUSEDPARAM */
+  localparam integer GUARD_BITS /*verilator public*/ = rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS);
+  localparam integer COORD_BITS /*verilator public*/ = rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS);
+  localparam integer DELTA_BITS /*verilator public*/ = rs_delta_bits(WIDTH, HEIGHT, SUBPIXEL_BITS);
+  localparam integer AREA_BITS /*verilator public*/ = rs_area_bits(WIDTH, HEIGHT, SUBPIXEL_BITS);
+  localparam integer EDGE_BITS /*verilator public*/ = rs_edge_bits(WIDTH, HEIGHT, SUBPIXEL_BITS);
+  localparam integer EDGE_STEP_X_BITS /*verilator public*/ = rs_edge_step_x_bits(HEIGHT, SUBPIXEL_BITS);
+  localparam integer EDGE_STEP_Y_BITS /*verilator public*/ = rs_edge_step_y_bits(WIDTH, SUBPIXEL_BITS);
+  localparam integer SPAN_REM_BITS /*verilator public*/ = rs_span_rem_bits(HEIGHT, SUBPIXEL_BITS);
+  localparam integer DIVIDER_BITS /*verilator public*/ =
+      rs_divider_bits(WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer Z_REG_BITS /*verilator public*/ = Z_BITS + GUARD_BITS + 1;
+  localparam integer COLOR_REG_BITS /*verilator public*/ = 8 + GUARD_BITS + 1;
+  localparam integer X_BITS /*verilator public*/ = rs_ubits32(WIDTH - 1);
+  localparam integer Y_BITS /*verilator public*/ = rs_ubits32(HEIGHT - 1);
+  localparam integer ADDR_BITS /*verilator public*/ = rs_ubits32(WIDTH * HEIGHT - 1);
+  localparam integer SETUP_FRONT_CYCLES /*verilator public*/ = 2;
+  localparam integer SETUP_CYCLES /*verilator public*/ = SETUP_FRONT_CYCLES + DIVIDER_BITS + 1;
+  localparam integer WALKER_LOAD_CYCLES /*verilator public*/ = 1;
+  localparam integer SPAN_ROW_CYCLES /*verilator public*/ = 1;
+  // The profile parameters themselves, for the harness.
+  localparam integer P_WIDTH /*verilator public*/ = WIDTH;
+  localparam integer P_HEIGHT /*verilator public*/ = HEIGHT;
+  localparam integer P_SUBPIXEL_BITS /*verilator public*/ = SUBPIXEL_BITS;
+  localparam integer P_Z_BITS /*verilator public*/ = Z_BITS;
+  localparam integer P_Z_GUARD_BITS /*verilator public*/ = Z_GUARD_BITS;
+  localparam integer P_MAX_MEMORY_LATENCY /*verilator public*/ = MAX_MEMORY_LATENCY;
+  /* verilator lint_on UNUSEDPARAM */
+
+  localparam integer EB = EDGE_BITS;
+  localparam integer SXB = EDGE_STEP_X_BITS;
+  localparam integer SYB = EDGE_STEP_Y_BITS;
+  localparam integer RB = SPAN_REM_BITS;
+  localparam integer ZRB = Z_REG_BITS;
+  localparam integer CRB = COLOR_REG_BITS;
+
+  // The runtime profile keys are sampled while rst is high and held for the frame (static
+  // configuration registers: the units see registers, not the ports).
+  reg [2:0] depth_func_q;
+  reg depth_write_q, front_face_q, traversal_q, shading_q;
+  reg [1:0] cull_q;
+  reg [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] memory_latency_q;
+  always @(posedge clk) begin
+    if (rst) begin
+      depth_func_q <= cfg_depth_func;
+      depth_write_q <= cfg_depth_write;
+      cull_q <= cfg_cull;
+      front_face_q <= cfg_front_face;
+      traversal_q <= cfg_traversal;
+      shading_q <= cfg_shading;
+      memory_latency_q <= cfg_memory_latency;
+    end
+  end
+
+  // Setup -> walker record. Readable from C++ (public_flat_rd) so that the co-simulation compares
+  // the setup unit's outputs field by field when the walker takes them.
+  wire setup_valid, walker_ready;
+  wire [X_BITS-1:0] rec_x0 /*verilator public_flat_rd*/;
+  wire [X_BITS-1:0] rec_x1 /*verilator public_flat_rd*/;
+  wire [Y_BITS-1:0] rec_y0 /*verilator public_flat_rd*/;
+  wire [Y_BITS-1:0] rec_y1 /*verilator public_flat_rd*/;
+  wire [3*EB-1:0]  rec_edge_start /*verilator public_flat_rd*/;
+  wire [3*SXB-1:0] rec_edge_step_x /*verilator public_flat_rd*/;
+  wire [3*SYB-1:0] rec_edge_step_y /*verilator public_flat_rd*/;
+  wire [3*EB-1:0]  rec_span_quot /*verilator public_flat_rd*/;
+  wire [3*RB-1:0]  rec_span_rem /*verilator public_flat_rd*/;
+  wire [3*SYB-1:0] rec_span_step_quot /*verilator public_flat_rd*/;
+  wire [3*RB-1:0]  rec_span_step_rem /*verilator public_flat_rd*/;
+  wire [ZRB-1:0]   rec_depth_start /*verilator public_flat_rd*/;
+  wire [ZRB-1:0]   rec_depth_step_x /*verilator public_flat_rd*/;
+  wire [ZRB-1:0]   rec_depth_step_y /*verilator public_flat_rd*/;
+  wire [3*CRB-1:0] rec_color_start /*verilator public_flat_rd*/;
+  wire [3*CRB-1:0] rec_color_step_x /*verilator public_flat_rd*/;
+  wire [3*CRB-1:0] rec_color_step_y /*verilator public_flat_rd*/;
+  wire [23:0]      rec_flat_rgb /*verilator public_flat_rd*/;
+  wire setup_ready;
+  wire decided_front_facing_unused;
+  wire [AREA_BITS-1:0] decided_area2_unused;
+
+  assign cmd_ready = setup_ready && frame_ready;
+
+  triangle_setup #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
+                   .Z_GUARD_BITS(Z_GUARD_BITS)) setup (
+    .clk(clk), .rst(rst), .cfg_cull(cull_q), .cfg_front_face(front_face_q),
+    .in_valid(cmd_valid && frame_ready), .in_ready(setup_ready),
+    .in_x({cmd_x2, cmd_x1, cmd_x0}), .in_y({cmd_y2, cmd_y1, cmd_y0}), .in_z({cmd_z2, cmd_z1, cmd_z0}),
+    .in_rgb({cmd_rgb2, cmd_rgb1, cmd_rgb0}),
+    .decided(trace_setup_decided), .decided_status(trace_setup_status),
+    .decided_front_facing(decided_front_facing_unused), .decided_area2(decided_area2_unused),
+    .busy(trace_setup_busy),
+    .out_valid(setup_valid), .out_ready(walker_ready),
+    .out_x0(rec_x0), .out_x1(rec_x1), .out_y0(rec_y0), .out_y1(rec_y1),
+    .out_edge_start(rec_edge_start), .out_edge_step_x(rec_edge_step_x), .out_edge_step_y(rec_edge_step_y),
+    .out_span_quot(rec_span_quot), .out_span_rem(rec_span_rem), .out_span_step_quot(rec_span_step_quot),
+    .out_span_step_rem(rec_span_step_rem),
+    .out_depth_start(rec_depth_start), .out_depth_step_x(rec_depth_step_x), .out_depth_step_y(rec_depth_step_y),
+    .out_color_start(rec_color_start), .out_color_step_x(rec_color_step_x), .out_color_step_y(rec_color_step_y),
+    .out_flat_rgb(rec_flat_rgb));
+
+  assign trace_setup_stall = setup_valid && !walker_ready;
+  assign trace_walker_load = setup_valid && walker_ready;
+
+  // Walker + Z adder -> z-buffer fragment.
+  wire adder_load, adder_step_x, adder_next_row, adder_row_enter;
+  wire [X_BITS-1:0] adder_row_offset;
+  wire frag_valid, frag_ready;
+  wire [X_BITS-1:0] frag_x;
+  wire [Y_BITS-1:0] frag_y;
+  wire [Z_BITS-1:0] frag_z;
+  wire [23:0] frag_rgb;
+
+  scanline_walker #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS)) walker (
+    .clk(clk), .rst(rst), .cfg_traversal(traversal_q),
+    .in_valid(setup_valid), .in_ready(walker_ready),
+    .in_x0(rec_x0), .in_x1(rec_x1), .in_y0(rec_y0), .in_y1(rec_y1),
+    .in_edge_start(rec_edge_start), .in_edge_step_x(rec_edge_step_x), .in_edge_step_y(rec_edge_step_y),
+    .in_span_quot(rec_span_quot), .in_span_rem(rec_span_rem), .in_span_step_quot(rec_span_step_quot),
+    .in_span_step_rem(rec_span_step_rem),
+    .adder_load(adder_load), .adder_step_x(adder_step_x), .adder_next_row(adder_next_row),
+    .adder_row_enter(adder_row_enter), .adder_row_offset(adder_row_offset),
+    .frag_valid(frag_valid), .frag_ready(frag_ready), .frag_x(frag_x), .frag_y(frag_y),
+    .busy(trace_walker_busy), .candidate(trace_walker_candidate), .last(trace_walker_last));
+
+  z_adder #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS)) adders (
+    .clk(clk), .cfg_shading(shading_q), .load(adder_load), .step_x(adder_step_x),
+    .next_row(adder_next_row), .row_enter(adder_row_enter), .row_offset(adder_row_offset),
+    .depth_start(rec_depth_start), .depth_step_x(rec_depth_step_x), .depth_step_y(rec_depth_step_y),
+    .color_start(rec_color_start), .color_step_x(rec_color_step_x), .color_step_y(rec_color_step_y),
+    .flat_rgb(rec_flat_rgb), .depth(frag_z), .rgb(frag_rgb));
+
+  zbuffer #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY)) zbuf (
+    .clk(clk), .rst(rst), .cfg_depth_func(depth_func_q), .cfg_depth_write(depth_write_q),
+    .cfg_memory_latency(memory_latency_q), .clear_done(frame_ready),
+    .frag_valid(frag_valid), .frag_ready(frag_ready), .frag_x(frag_x), .frag_y(frag_y),
+    .frag_z(frag_z), .frag_rgb(frag_rgb),
+    .result_valid(trace_result_valid), .result_pass(trace_result_pass), .busy(trace_zbuffer_busy),
+    .mem_clear_done(mem_clear_done), .mem_rd_valid(mem_rd_valid), .mem_rd_ready(mem_rd_ready),
+    .mem_rd_addr(mem_rd_addr), .mem_rd_depth(mem_rd_depth), .mem_wr_depth_en(mem_wr_depth_en),
+    .mem_wr_color_en(mem_wr_color_en), .mem_wr_addr(mem_wr_addr), .mem_wr_depth(mem_wr_depth),
+    .mem_wr_rgb(mem_wr_rgb));
+
+  assign trace_frag_valid = frag_valid;
+  assign trace_frag_ready = frag_ready;
+  assign trace_frag_x = frag_x;
+  assign trace_frag_y = frag_y;
+  assign trace_frag_z = frag_z;
+  assign trace_frag_rgb = frag_rgb;
+endmodule

@@ -1,0 +1,265 @@
+// A harness's view of the ports of rastersim_core (and of rastersim_top, which has the same
+// command and trace ports): the words it drives on the command port, and the trace ports sampled
+// once per cycle before the rising edge, turned into the model's records (fragments, triangle
+// records, frame counters). Shared by the plain verilated harness (rtl_harness.h) and the SystemC
+// system (testbench/systemc/), so both drive and observe the RTL the same way. Header-only; the
+// port accessors take a verilated C++ model (plain members) or a SystemC module (sc_in / sc_out).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "testbench/rtl_backend.h"
+
+namespace rastersim::rtl {
+
+inline uint32_t mask_bits(int64_t value, int bits) {
+  return uint32_t(uint64_t(value) & ((uint64_t(1) << bits) - 1));
+}
+
+inline uint32_t pack_rgb(const Rgb& c) { return (uint32_t(c.r) << 16) | (uint32_t(c.g) << 8) | c.b; }
+
+// Drives one triangle on the command port: coordinates in two's complement of COORD_BITS.
+template <class Ports>
+void drive_command(Ports& top, const SnappedTriangle& t, int coord_bits) {
+  top.cmd_x0 = mask_bits(t.v[0].x, coord_bits), top.cmd_y0 = mask_bits(t.v[0].y, coord_bits);
+  top.cmd_x1 = mask_bits(t.v[1].x, coord_bits), top.cmd_y1 = mask_bits(t.v[1].y, coord_bits);
+  top.cmd_x2 = mask_bits(t.v[2].x, coord_bits), top.cmd_y2 = mask_bits(t.v[2].y, coord_bits);
+  top.cmd_z0 = t.v[0].z, top.cmd_z1 = t.v[1].z, top.cmd_z2 = t.v[2].z;
+  top.cmd_rgb0 = pack_rgb(t.v[0].color), top.cmd_rgb1 = pack_rgb(t.v[1].color), top.cmd_rgb2 = pack_rgb(t.v[2].color);
+}
+
+// A bound on the cycles a correct RTL can take: per triangle the setup, plus every candidate of
+// its screen-clipped bounding box and its rows, each possibly stalled by the memory latency, and
+// by the memory's back-pressure (at most 90 % of the cycles, so ten times as long, twice over).
+inline int64_t default_cycle_bound(const Profile& p, const std::vector<SnappedTriangle>& tris, int setup_cycles) {
+  int64_t bound = 16;
+  for (const SnappedTriangle& t : tris) {
+    int64_t x_lo = t.v[0].x, x_hi = x_lo, y_lo = t.v[0].y, y_hi = y_lo;
+    for (const SnappedVertex& v : t.v) {
+      x_lo = std::min<int64_t>(x_lo, v.x), x_hi = std::max<int64_t>(x_hi, v.x);
+      y_lo = std::min<int64_t>(y_lo, v.y), y_hi = std::max<int64_t>(y_hi, v.y);
+    }
+    const int64_t columns = std::min<int64_t>(p.width, ((x_hi - x_lo) >> p.subpixel_bits) + 2);
+    const int64_t rows = std::min<int64_t>(p.height, ((y_hi - y_lo) >> p.subpixel_bits) + 2);
+    bound += setup_cycles + 4 + (columns + 1) * rows * (p.memory_latency + 2);
+  }
+  return p.memory_stall_percent > 0 ? 20 * bound : bound;
+}
+
+// One cycle of trace ports (names as in rtl/rastersim_core.sv without the trace_ prefix).
+struct TraceSample {
+  bool cmd_valid = false, cmd_ready = false;
+  bool setup_decided = false;
+  int setup_status = 0;
+  bool setup_busy = false, setup_stall = false;
+  bool walker_load = false, walker_busy = false, walker_candidate = false, walker_last = false;
+  bool frag_valid = false, frag_ready = false;
+  int frag_x = 0, frag_y = 0;
+  uint32_t frag_z = 0, frag_rgb = 0;
+  bool result_valid = false, result_pass = false, zbuffer_busy = false;
+
+  bool busy() const { return setup_busy || walker_busy || zbuffer_busy; }
+};
+
+// Reads the ports of a verilated top: a C++ model (plain members) or a SystemC module (sc_in /
+// sc_out, read through their conversion to the value type).
+template <class Ports>
+TraceSample sample_trace(const Ports& top) {
+  auto bit = [](const auto& port) { return bool(port); };
+  auto word = [](const auto& port) { return uint32_t(port); };
+  TraceSample s;
+  s.cmd_valid = bit(top.cmd_valid);
+  s.cmd_ready = bit(top.cmd_ready);
+  s.setup_decided = bit(top.trace_setup_decided);
+  s.setup_status = int(word(top.trace_setup_status));
+  s.setup_busy = bit(top.trace_setup_busy);
+  s.setup_stall = bit(top.trace_setup_stall);
+  s.walker_load = bit(top.trace_walker_load);
+  s.walker_busy = bit(top.trace_walker_busy);
+  s.walker_candidate = bit(top.trace_walker_candidate);
+  s.walker_last = bit(top.trace_walker_last);
+  s.frag_valid = bit(top.trace_frag_valid);
+  s.frag_ready = bit(top.trace_frag_ready);
+  s.frag_x = int(word(top.trace_frag_x));
+  s.frag_y = int(word(top.trace_frag_y));
+  s.frag_z = word(top.trace_frag_z);
+  s.frag_rgb = word(top.trace_frag_rgb);
+  s.result_valid = bit(top.trace_result_valid);
+  s.result_pass = bit(top.trace_result_pass);
+  s.zbuffer_busy = bit(top.trace_zbuffer_busy);
+  return s;
+}
+
+// Bits [lo, lo + width) of a verilated signal, sign-extended when `is_signed`.
+inline int64_t field_bits(uint64_t value, int lo, int width, bool is_signed) {
+  uint64_t v = (value >> lo) & (width >= 64 ? ~uint64_t(0) : (uint64_t(1) << width) - 1);
+  if (is_signed && width < 64 && (v >> (width - 1)) & 1) v |= ~uint64_t(0) << width;
+  return int64_t(v);
+}
+template <class Wide, class = decltype(std::declval<const Wide&>()[0])>
+int64_t field_bits(const Wide& value, int lo, int width, bool is_signed) {
+  uint64_t v = 0;
+  for (int i = 0; i < width; ++i) {
+    const int bit = lo + i;
+    v |= uint64_t((value[bit / 32] >> (bit % 32)) & 1u) << i;
+  }
+  return field_bits(v, 0, width, is_signed);
+}
+
+// The setup record on the setup -> walker wires of rastersim_core (rec_*, public_flat_rd); Core is
+// the verilated class of rastersim_core, which publishes the widths.
+template <class Core>
+SetupResult read_setup_record(const Core& t, bool gouraud) {
+  SetupResult r;
+  r.status = SetupStatus::Drawn;
+  r.x0 = int(t.rec_x0), r.x1 = int(t.rec_x1), r.y0 = int(t.rec_y0), r.y1 = int(t.rec_y1);
+  const int eb = Core::EDGE_BITS, sxb = Core::EDGE_STEP_X_BITS, syb = Core::EDGE_STEP_Y_BITS, rb = Core::SPAN_REM_BITS;
+  for (int k = 0; k < 3; ++k) {
+    EdgeSetup& e = r.edge[k];
+    e.start = field_bits(t.rec_edge_start, k * eb, eb, true);
+    e.step_x = field_bits(t.rec_edge_step_x, k * sxb, sxb, true);
+    e.step_y = field_bits(t.rec_edge_step_y, k * syb, syb, true);
+    e.span_quot = field_bits(t.rec_span_quot, k * eb, eb, true);
+    e.span_rem = field_bits(t.rec_span_rem, k * rb, rb, false);
+    e.span_step_quot = field_bits(t.rec_span_step_quot, k * syb, syb, true);
+    e.span_step_rem = field_bits(t.rec_span_step_rem, k * rb, rb, false);
+  }
+  const int zrb = Core::Z_REG_BITS, crb = Core::COLOR_REG_BITS;
+  r.depth.start = field_bits(t.rec_depth_start, 0, zrb, true);
+  r.depth.step_x = field_bits(t.rec_depth_step_x, 0, zrb, true);
+  r.depth.step_y = field_bits(t.rec_depth_step_y, 0, zrb, true);
+  if (gouraud) {
+    for (int c = 0; c < 3; ++c) {
+      r.color[c].start = field_bits(t.rec_color_start, c * crb, crb, true);
+      r.color[c].step_x = field_bits(t.rec_color_step_x, c * crb, crb, true);
+      r.color[c].step_y = field_bits(t.rec_color_step_y, c * crb, crb, true);
+    }
+  }
+  const uint32_t flat = t.rec_flat_rgb;
+  r.flat_color = Rgb{uint8_t(flat >> 16), uint8_t(flat >> 8), uint8_t(flat)};
+  return r;
+}
+
+// Builds an RtlResult from the samples of one frame, cycle 0 being the first cycle with
+// frame_ready high.
+class TraceObserver {
+ public:
+  TraceObserver(RtlResult& out, size_t triangles) : out_(out), total_(triangles) {
+    out_.triangles.reserve(triangles);
+    out_.setups.resize(triangles);
+  }
+
+  // The triangle the command port must present next (== triangles when all were taken).
+  size_t next_triangle() const { return next_; }
+
+  // Observes cycle `cycle`. `read_record()` returns the setup record on the rec_* wires (called in
+  // the cycle the walker takes it). Returns false when the RTL broke the protocol (out.note says how).
+  template <class ReadRecord>
+  bool observe(int64_t cycle, const TraceSample& s, ReadRecord&& read_record) {
+    FrameStats& stats = out_.stats;
+    const bool submitting = next_ < total_;
+    if (s.cmd_valid && s.cmd_ready) {
+      TriangleRecord r;
+      r.index = int64_t(next_);
+      r.setup_accept = cycle;
+      out_.triangles.push_back(r);
+      in_setup_ = int64_t(next_);
+      setup_output_seen_ = false;
+      ++next_;
+      ++stats.triangles;
+    }
+    if (s.setup_decided && in_setup_ >= 0) {
+      TriangleRecord& r = out_.triangles[size_t(in_setup_)];
+      r.status = SetupStatus(s.setup_status);
+      switch (r.status) {
+        case SetupStatus::Drawn: ++stats.triangles_drawn; break;
+        case SetupStatus::Degenerate: ++stats.triangles_degenerate, r.setup_done = cycle; break;
+        case SetupStatus::Culled: ++stats.triangles_culled, r.setup_done = cycle; break;
+        case SetupStatus::Offscreen: ++stats.triangles_offscreen, r.setup_done = cycle; break;
+      }
+    }
+    const bool setup_output_valid = s.setup_stall || s.walker_load;
+    if (setup_output_valid && !setup_output_seen_ && in_setup_ >= 0) {
+      out_.triangles[size_t(in_setup_)].setup_done = cycle;
+      setup_output_seen_ = true;
+    }
+    if (s.walker_load && in_setup_ >= 0) {
+      out_.triangles[size_t(in_setup_)].walker_load = cycle;
+      out_.setups[size_t(in_setup_)] = read_record();
+      in_walker_ = in_setup_;
+    }
+    if (s.frag_valid && s.frag_ready) {
+      Fragment f;
+      f.tri = in_walker_;
+      f.x = s.frag_x;
+      f.y = s.frag_y;
+      f.z = s.frag_z;
+      f.color = Rgb{uint8_t(s.frag_rgb >> 16), uint8_t(s.frag_rgb >> 8), uint8_t(s.frag_rgb)};
+      f.pass = false;
+      f.cycle = cycle;
+      in_flight_.push_back(out_.fragments.size());
+      out_.fragments.push_back(f);
+      if (in_walker_ >= 0) ++out_.triangles[size_t(in_walker_)].fragments;
+    }
+    if (s.result_valid) {
+      if (in_flight_.empty()) {
+        out_.finished = false;
+        out_.note = "the z-buffer produced a depth-test result in cycle " + std::to_string(cycle) +
+                    " with no fragment in flight";
+        return false;
+      }
+      Fragment& f = out_.fragments[in_flight_.front()];
+      in_flight_.pop_front();
+      f.pass = s.result_pass;
+      if (f.tri >= 0) {
+        TriangleRecord& r = out_.triangles[size_t(f.tri)];
+        r.depth_pass += f.pass;
+        r.last_write = cycle;
+      }
+      ++(f.pass ? stats.depth_pass : stats.depth_fail);
+    }
+    if (s.walker_last && in_walker_ >= 0) out_.triangles[size_t(in_walker_)].walker_end = cycle;
+    if (s.walker_candidate) ++stats.candidates;
+    const bool stall = s.frag_valid && !s.frag_ready;
+    stats.setup.busy += s.setup_busy && !s.setup_stall;
+    stats.setup.stall += s.setup_stall;
+    stats.walker.busy += s.walker_busy;
+    stats.walker.stall += stall;
+    stats.zbuffer.busy += s.zbuffer_busy;
+    stats.zbuffer.stall += stall;
+    if (s.busy()) last_busy_ = cycle;
+    // A fragment can wait on the memory's back-pressure longer than L cycles with no unit busy.
+    done_ = !submitting && !s.busy() && !s.frag_valid && in_flight_.empty();
+    return true;
+  }
+
+  // Every triangle taken, the pipeline idle, no fragment waiting and none in flight after the last
+  // observed cycle.
+  bool done() const { return done_; }
+
+  // The frame counters that follow from the observed ones.
+  void finish() {
+    FrameStats& stats = out_.stats;
+    stats.fragments = stats.depth_pass + stats.depth_fail;
+    stats.cycles = last_busy_ + 1;
+    stats.z_adder = stats.walker;
+  }
+
+ private:
+  RtlResult& out_;
+  size_t total_;
+  size_t next_ = 0;            // next triangle to submit
+  int64_t in_setup_ = -1;      // triangle the setup unit holds
+  int64_t in_walker_ = -1;     // triangle the walker walks
+  std::deque<size_t> in_flight_;  // fragments accepted by the z-buffer, awaiting their result
+  int64_t last_busy_ = -1;
+  bool setup_output_seen_ = false;
+  bool done_ = false;
+};
+
+}  // namespace rastersim::rtl
