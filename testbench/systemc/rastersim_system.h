@@ -1,0 +1,89 @@
+// The SystemC system model (docs/systemc.md): rastersim_core verilated with --sc at one profile's
+// geometry (Vrastersim_sc), fed by the command FIFO, with the z-buffer memory model (latency and
+// stall pattern) behind its memory port, a clock, a reset, and a monitor that turns the core's trace
+// ports into the model's records (testbench/core_ports.h, as the plain verilated harness does).
+// SystemC elaborates once per process: build one RastersimSystem and call run_frame() for every
+// frame; each frame resets the system and takes its own runtime settings (depth test, culling,
+// traversal, shading, memory latency, stall pattern).
+#pragma once
+
+#include <systemc>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "Vrastersim_sc.h"
+#include "model/profile.h"
+#include "model/triangle.h"
+#include "testbench/core_ports.h"
+#include "testbench/rtl_backend.h"
+#include "testbench/systemc/command_fifo.h"
+#include "testbench/systemc/zbuffer_memory_model.h"
+
+namespace rastersim::systemc {
+
+class RastersimSystem : public sc_core::sc_module {
+ public:
+  SC_HAS_PROCESS(RastersimSystem);
+  // fifo_depth: command FIFO entries.
+  RastersimSystem(sc_core::sc_module_name name, int fifo_depth = 16);
+
+  // The profile keys the verilated core was built for (width, height, subpixel_bits, z_bits,
+  // z_guard_bits) and its largest memory latency.
+  static Profile built_geometry();
+  static int max_memory_latency();
+  static std::string built_configuration();  // "WxH subpixel_bits .. z_bits .. memory_latency 1..L"
+  // Empty when run_frame can take `profile` (already valid: see validate()), else why not.
+  static std::string configuration_error(const Profile& profile);
+
+  // Runs one frame: reset, the triangles through the FIFO, until the pipeline is idle (or
+  // max_cycles, 0 = a bound from the triangles). Call between simulations, not from a process.
+  rtl::RtlResult run_frame(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
+                           int64_t max_cycles = 0);
+
+  int64_t simulated_cycles() const { return clock_cycles_; }  // every clock so far, resets included
+
+ private:
+  void host();     // thread: configuration, reset, triangles into the FIFO
+  void monitor();  // falling edge: one cycle of trace ports into the scoreboard
+  void count();    // rising edge: clock_cycles_
+
+  sc_core::sc_clock clk_;
+  sc_core::sc_signal<bool> rst_;
+  // Core configuration (sampled during reset).
+  sc_core::sc_signal<uint32_t> cfg_depth_func_, cfg_cull_, cfg_memory_latency_;
+  sc_core::sc_signal<bool> cfg_depth_write_, cfg_front_face_, cfg_traversal_, cfg_shading_;
+  // Command port.
+  sc_core::sc_signal<bool> frame_ready_, cmd_valid_, cmd_ready_;
+  sc_core::sc_signal<uint32_t> cmd_x0_, cmd_y0_, cmd_x1_, cmd_y1_, cmd_x2_, cmd_y2_;
+  sc_core::sc_signal<uint32_t> cmd_z0_, cmd_z1_, cmd_z2_, cmd_rgb0_, cmd_rgb1_, cmd_rgb2_;
+  // Trace ports.
+  sc_core::sc_signal<bool> trace_setup_decided_, trace_setup_busy_, trace_setup_stall_;
+  sc_core::sc_signal<uint32_t> trace_setup_status_;
+  sc_core::sc_signal<bool> trace_walker_load_, trace_walker_busy_, trace_walker_candidate_, trace_walker_last_;
+  sc_core::sc_signal<bool> trace_frag_valid_, trace_frag_ready_, trace_result_valid_, trace_result_pass_;
+  sc_core::sc_signal<bool> trace_zbuffer_busy_;
+  sc_core::sc_signal<uint32_t> trace_frag_x_, trace_frag_y_, trace_frag_z_, trace_frag_rgb_;
+  // Memory port.
+  sc_core::sc_signal<bool> mem_clear_done_, mem_rd_valid_, mem_rd_ready_, mem_wr_depth_en_, mem_wr_color_en_;
+  sc_core::sc_signal<uint32_t> mem_rd_addr_, mem_rd_depth_, mem_wr_addr_, mem_wr_depth_, mem_wr_rgb_;
+
+  Vrastersim_sc core_;
+  CommandFifo fifo_;
+  ZBufferMemoryModel memory_;
+
+  // The frame being run.
+  Profile profile_;
+  const std::vector<SnappedTriangle>* triangles_ = nullptr;
+  rtl::RtlResult* result_ = nullptr;
+  std::optional<rtl::TraceObserver> observer_;
+  bool frame_pending_ = false;  // run_frame asked the host for a frame
+  bool observing_ = false;      // the monitor observes from the first cycle with frame_ready
+  bool frame_done_ = false;
+  bool stuck_ = false;          // a frame did not finish: the host may be blocked in it
+  int64_t cycle_ = 0, bound_ = 0, clock_cycles_ = 0;
+};
+
+}  // namespace rastersim::systemc
