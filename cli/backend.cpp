@@ -6,6 +6,9 @@
 #ifdef RASTERSIM_HAVE_RTL
 #include "testbench/rtl_backend.h"
 #endif
+#ifdef RASTERSIM_HAVE_SYSTEMC
+#include "testbench/systemc/systemc_backend.h"
+#endif
 
 namespace rastersim {
 
@@ -20,6 +23,9 @@ Backend select_backend(const std::string& name) {
   if (name == "rtl") return Backend::Rtl;
   if (name == "cosim") return Backend::Cosim;
 #endif
+#ifdef RASTERSIM_HAVE_SYSTEMC
+  if (name == "systemc") return Backend::Systemc;
+#endif
   for (const std::string& known : backend_names())
     if (name == known) throw InputError("backend " + name + " is not built in this binary");
   throw InputError("unknown backend '" + name + "'");
@@ -27,6 +33,13 @@ Backend select_backend(const std::string& name) {
 
 void check_backend_profile(Backend backend, const Profile& profile) {
   if (backend == Backend::Model) return;
+#ifdef RASTERSIM_HAVE_SYSTEMC
+  if (backend == Backend::Systemc) {
+    const std::string problem = systemc::configuration_error(profile);
+    if (!problem.empty()) throw InputError(problem);
+    return;
+  }
+#endif
 #ifdef RASTERSIM_HAVE_RTL
   const std::string problem = rtl::configuration_error(profile);
   if (!problem.empty()) throw InputError(problem);
@@ -81,10 +94,19 @@ RenderResult render_triangles(Backend backend, const Profile& profile, const std
       result.report = report.passed ? "" : report.message();
       return result;
     }
-#else
-    default:
-      break;
+#ifdef RASTERSIM_HAVE_SYSTEMC
+    case Backend::Systemc: {
+      systemc::SystemcOptions systemc_options;
+      systemc_options.seed = options.seed;
+      const rtl::RtlResult r = systemc::run_systemc(profile, triangles, systemc_options);
+      if (!r.finished) throw std::runtime_error("the SystemC system did not finish: " + r.note);
+      if (progress) progress(triangles.size());
+      return from_rtl(profile, r, sink);
+    }
 #endif
+#endif
+    default:  // a backend this binary lacks: select_backend() never returns it
+      break;
   }
   (void)options;
   throw std::logic_error("unhandled backend");

@@ -1,5 +1,6 @@
 // The one place where `--backend` is dispatched: the C++ model, the verilated RTL, or both in
-// lockstep (cosim), when the RTL library is built in (RASTERSIM_HAVE_RTL).
+// lockstep (cosim), when the RTL library is built in (RASTERSIM_HAVE_RTL), and the SystemC system
+// model (RASTERSIM_HAVE_SYSTEMC: the verilated core, command FIFO and z-buffer memory model).
 #pragma once
 
 #include <cstdint>
@@ -12,7 +13,7 @@
 
 namespace rastersim {
 
-enum class Backend { Model, Rtl, Cosim };
+enum class Backend { Model, Rtl, Cosim, Systemc };
 
 // Every name --backend accepts (known backends, built or not).
 const std::vector<std::string>& backend_names();
@@ -24,7 +25,7 @@ Backend select_backend(const std::string& name);
 void check_backend_profile(Backend backend, const Profile& profile);
 
 struct BackendOptions {
-  uint64_t seed = 1;         // RTL random power-on state
+  uint64_t seed = 1;         // RTL random power-on state (rtl, cosim; systemc: the process's first frame)
   std::string fst_path;      // RTL waveform, when not empty
   std::string replay_prefix; // cosim: where a divergence's replay files go
 };

@@ -61,10 +61,7 @@ class ProgressLine {
 
 CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   CLI::App* cmd = app.add_subcommand("render", "render a .tri file or a built-in scene through the pipeline");
-  cmd->add_option("input", o.input, "a screen-space .tri file, a Wavefront .obj mesh or a .json scene file")
-      ->type_name("INPUT");
-  cmd->add_option("--scene", o.scene, "built-in scene to render when no INPUT is given (see `rastersim scenes`)")
-      ->type_name("NAME");
+  add_scene_options(*cmd, o);
   cmd->add_option("-o,--output", o.color_out, "colour image (png, exr, tif, ...; 8-bit RGB)")->type_name("FILE");
   cmd->add_option("--depth-out", o.depth_out,
                   "depth image: float depth/(2^N-1) for exr/tif, 16-bit scaled otherwise (png)")
@@ -73,18 +70,30 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
       ->type_name("FILE");
   cmd->add_option("--stats", o.stats_out, "stats JSON: counters, per-unit busy/stall, resolved profile")
       ->type_name("FILE");
-  cmd->add_option("--seed", o.seed, "rtl, cosim: seed of the random power-on state of registers and memories")
+  cmd->add_option("--seed", o.seed, "rtl, cosim, systemc: seed of the random power-on state of registers and memories")
       ->type_name("S");
   cmd->add_option("--fst", o.fst_out, "rtl, cosim: write the RTL waveform (FST)")->type_name("FILE");
   cmd->add_option("--replay-dir", o.replay_dir, "cosim: folder for the replay files of a divergence")
       ->type_name("DIR");
   cmd->add_option("--backend", o.backend,
-                  "model (the C++ reference), rtl (the verilated RTL), cosim (both in lockstep, compared)")
+                  "model (the C++ reference), rtl (the verilated RTL), cosim (both in lockstep, compared), "
+                  "systemc (the verilated core with a command FIFO and a z-buffer memory model with latency and "
+                  "stall pattern, in SystemC)")
       ->check(CLI::IsMember(backend_names()))
       ->type_name("NAME");
   cmd->add_option("--dump-tri", o.dump_tri_out,
                   "write the screen-space triangles the input produced (before snapping) as a .tri file")
       ->type_name("FILE");
+  add_profile_options(*cmd, o.profile);
+  return cmd;
+}
+
+void add_scene_options(CLI::App& app, RenderOptions& o) {
+  CLI::App* cmd = &app;
+  cmd->add_option("input", o.input, "a screen-space .tri file, a Wavefront .obj mesh or a .json scene file")
+      ->type_name("INPUT");
+  cmd->add_option("--scene", o.scene, "built-in scene to render when no INPUT is given (see `rastersim scenes`)")
+      ->type_name("NAME");
   const char* const camera = "Camera (3D inputs: .obj, .json scenes, 3D built-in scenes)";
   for (auto [flag, vec, help] : {std::tuple{"--eye", &o.eye, "camera position X,Y,Z (world space)"},
                                  std::tuple{"--target", &o.target, "point the camera looks at X,Y,Z"},
@@ -95,8 +104,6 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
                                    std::tuple{"--far", &o.far, "far plane distance, > near"}})
     cmd->add_option(flag, *value, help)->expected(1)->type_name("NUMBER")->group(camera);
   cmd->add_flag("--ortho", o.ortho, "orthographic projection")->group(camera);
-  add_profile_options(*cmd, o.profile);
-  return cmd;
 }
 
 frontend::CameraOptions camera_options(const RenderOptions& o) {
@@ -168,7 +175,9 @@ int run_render(const RenderOptions& o) {
   outputs.commit();
 
   const std::string source = o.input.empty() ? "scene " + (o.scene.empty() ? std::string("default") : o.scene) : o.input;
-  const std::string through = backend == Backend::Cosim ? "the model and the RTL in lockstep" : "the " + o.backend;
+  const std::string through = backend == Backend::Cosim     ? "the model and the RTL in lockstep"
+                              : backend == Backend::Systemc ? "the SystemC system (verilated core, command FIFO, memory model)"
+                                                            : "the " + o.backend;
   std::cout << "rendered " << source << " through " << through << ", " << profile.width << "x" << profile.height
             << ", " << to_string(profile.traversal) << " traversal\n";
   if (backend == Backend::Cosim)

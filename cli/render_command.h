@@ -31,6 +31,10 @@ struct RenderOptions {
 };
 
 CLI::App* add_render_command(CLI::App& app, RenderOptions& options);
+// INPUT, --scene and the camera flags (shared with `rastersim sweep`).
+void add_scene_options(CLI::App& command, RenderOptions& options);
+// The camera flags given, for the front end.
+frontend::CameraOptions camera_options(const RenderOptions& options);
 // Returns the exit code; throws InputError (bad input or usage) and std::exception.
 int run_render(const RenderOptions& options);
 

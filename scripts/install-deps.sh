@@ -8,6 +8,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libtinyobjloader-dev
   verilator libsystemc-dev iverilog yosys
   libosmesa6-dev nextpnr-ice40 fpga-icestorm
+  gnuplot-nox
 )
 missing=()
 for p in "${packages[@]}"; do

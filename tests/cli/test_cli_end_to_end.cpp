@@ -460,7 +460,15 @@ INSTANTIATE_TEST_SUITE_P(
 #else
         BadRun{"RtlBackendNotBuilt", nullptr, {"--backend", "rtl"}, "backend rtl is not built in this binary"},
 #endif
+#ifdef RASTERSIM_HAVE_RTL
+        BadRun{"RtlHasNoStallPattern", nullptr, {"--backend", "rtl", "--memory-stall-percent", "20"}, "no back-pressure"},
+#endif
+#ifdef RASTERSIM_HAVE_SYSTEMC
+        BadRun{"SystemcProfileNotBuilt", nullptr, {"--backend", "systemc", "--width", "100"},
+               "the SystemC backend is built for 640x480"},
+#else
         BadRun{"SystemcBackendNotBuilt", nullptr, {"--backend", "systemc"}, "backend systemc is not built in this binary"},
+#endif
         BadRun{"UnknownBackend", nullptr, {"--backend", "gpu"}, "--backend"},
         BadRun{"OutputFolderMissing", nullptr, {"--stats", "no/such/folder/s2.json"}, "folder 'no/such/folder' does not exist"},
         BadRun{"ImageFormatUnknown", nullptr, {"-o", "picture.nosuchformat"}, "no image format"}),

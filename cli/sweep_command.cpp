@@ -1,0 +1,388 @@
+#include "sweep_command.h"
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "backend.h"
+#include "hw_cost.h"
+#include "inputs.h"
+#include "model/input_error.h"
+#include "outputs.h"
+
+#ifndef RASTERSIM_SOURCE_DIR
+#define RASTERSIM_SOURCE_DIR "."
+#endif
+
+namespace rastersim {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<std::string>& camera_keys() {
+  static const std::vector<std::string> keys = {"near", "far", "fov"};
+  return keys;
+}
+
+bool is_camera_key(const std::string& key) {
+  return std::find(camera_keys().begin(), camera_keys().end(), key) != camera_keys().end();
+}
+
+bool parse_number(const std::string& text, double& value) {
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return !text.empty() && end == text.c_str() + text.size() && std::isfinite(value);
+}
+
+// The figures of one sweep point.
+struct Point {
+  std::vector<std::string> values;  // one per axis
+  FrameStats stats;
+  double max_depth_error = 0;
+  int64_t wrong_depth_tests = 0;
+  HardwareCost cost;
+};
+
+// The CSV columns after the swept keys: name, and how a point gives it.
+struct Column {
+  const char* name;
+  double (*value)(const Point&);
+  bool hardware;  // only with --hw-cost
+};
+
+double share(int64_t part, int64_t cycles) { return cycles > 0 ? double(part) / double(cycles) : 0.0; }
+
+const std::vector<Column>& figure_columns() {
+  static const std::vector<Column> columns = {
+      {"cycles", [](const Point& p) { return double(p.stats.cycles); }, false},
+      {"fragments", [](const Point& p) { return double(p.stats.fragments); }, false},
+      {"fragments_per_clock", [](const Point& p) { return share(p.stats.fragments, p.stats.cycles); }, false},
+      {"setup_share", [](const Point& p) { return share(p.stats.setup.busy, p.stats.cycles); }, false},
+      {"stall_share", [](const Point& p) { return share(p.stats.zbuffer.stall, p.stats.cycles); }, false},
+      {"depth_fails", [](const Point& p) { return double(p.stats.depth_fail); }, false},
+      {"wrong_depth_tests", [](const Point& p) { return double(p.wrong_depth_tests); }, false},
+      {"max_depth_error", [](const Point& p) { return p.max_depth_error; }, false},
+      {"yosys_cells", [](const Point& p) { return double(p.cost.cells); }, true},
+      {"ice40_luts", [](const Point& p) { return double(p.cost.ice40_luts); }, true},
+      {"ice40_ffs", [](const Point& p) { return double(p.cost.ice40_ffs); }, true},
+      {"memory_bits", [](const Point& p) { return double(p.cost.memory_bits); }, true},
+  };
+  return columns;
+}
+
+std::string format_value(double v) {
+  char text[64];
+  if (v == std::floor(v) && std::fabs(v) < 1e15)
+    std::snprintf(text, sizeof text, "%lld", static_cast<long long>(v));
+  else
+    std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+// The gnuplot script: one PNG per figure, the first axis along x, one line per combination of the
+// other axes' values. Data inline (datablocks), so the script alone redraws the plots.
+std::string gnuplot_script(const std::vector<SweepAxis>& axes, const std::vector<Point>& points, bool hw_cost,
+                           const std::string& title) {
+  const SweepAxis& x_axis = axes.front();
+  std::vector<double> xs;
+  bool numeric = true;
+  for (const std::string& v : x_axis.values) {
+    double d = 0;
+    numeric = numeric && parse_number(v, d);
+    xs.push_back(d);
+  }
+  if (!numeric)
+    for (size_t i = 0; i < xs.size(); ++i) xs[i] = double(i);
+  const auto [lo, hi] = std::minmax_element(xs.begin(), xs.end());
+  const bool log_x = numeric && *lo > 0 && *hi / *lo >= 100;
+
+  // Series: the points grouped by their values of the other axes, in sweep order.
+  std::vector<std::string> series_names;
+  std::map<std::string, std::vector<const Point*>> series;
+  for (const Point& p : points) {
+    std::string name;
+    for (size_t a = 1; a < axes.size(); ++a) name += (a > 1 ? ", " : "") + axes[a].key + "=" + p.values[a];
+    if (!series.count(name)) series_names.push_back(name);
+    series[name].push_back(&p);
+  }
+  auto x_of = [&](const Point& p) {
+    const auto it = std::find(x_axis.values.begin(), x_axis.values.end(), p.values[0]);
+    return xs[size_t(it - x_axis.values.begin())];
+  };
+
+  std::ostringstream gp;
+  gp << "# Written by rastersim sweep: " << title << "\n";
+  gp << "set terminal pngcairo size 800,500 font ',11'\nset grid\nset key outside right top\n";
+  gp << "set xlabel '" << x_axis.key << "' noenhanced\n";
+  if (log_x) gp << "set logscale x\n";
+  // A tic at every swept value, labelled as given.
+  gp << "set xtics (";
+  for (size_t i = 0; i < x_axis.values.size(); ++i) gp << (i ? ", " : "") << "'" << x_axis.values[i] << "' " << format_value(xs[i]);
+  gp << ")\n";
+  if (!numeric) gp << "set xrange [-0.5:" << double(x_axis.values.size()) - 0.5 << "]\n";
+  const std::vector<Column>& columns = figure_columns();
+  for (size_t s = 0; s < series_names.size(); ++s) {
+    gp << "$series" << s << " << EOD\n";
+    for (const Point* p : series[series_names[s]]) {
+      gp << format_value(x_of(*p));
+      for (const Column& c : columns) gp << " " << (c.hardware && !hw_cost ? "0" : format_value(c.value(*p)));
+      gp << "\n";
+    }
+    gp << "EOD\n";
+  }
+  auto plot = [&](const std::string& file, const std::string& ylabel, size_t column, bool x_is_cycles) {
+    gp << "set output '" << file << "'\nset title '" << title << "' noenhanced\nset ylabel '" << ylabel << "' noenhanced\n";
+    gp << "plot ";
+    for (size_t s = 0; s < series_names.size(); ++s) {
+      const std::string name = series_names[s].empty() ? ylabel : series_names[s];
+      gp << (s ? ", " : "") << "$series" << s << " using " << (x_is_cycles ? "2" : "1") << ":" << column + 2
+         << " with linespoints pointtype 7 title '" << name << "' noenhanced";
+    }
+    gp << "\n";
+  };
+  for (size_t c = 0; c < columns.size(); ++c)
+    if (!columns[c].hardware || hw_cost) plot(std::string(columns[c].name) + ".png", columns[c].name, c, false);
+  if (hw_cost) {  // cycles against area: one point per sweep point
+    gp << "unset logscale x\nunset xtics\nset xtics\nset xrange [*:*]\nset xlabel 'cycles'\n";
+    const size_t luts = size_t(std::find_if(columns.begin(), columns.end(), [](const Column& c) {
+                                 return std::string(c.name) == "ice40_luts";
+                               }) - columns.begin());
+    plot("cycles_vs_ice40_luts.png", "ice40_luts", luts, true);
+  }
+  return gp.str();
+}
+
+}  // namespace
+
+SweepAxis parse_sweep_axis(const std::string& text) {
+  const size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("--vary '" + text + "': expected KEY=V1,V2,... (a profile key, or near, far, fov)");
+  SweepAxis axis;
+  axis.key = text.substr(0, eq);
+  const std::vector<std::string>& keys = profile_keys();
+  if (std::find(keys.begin(), keys.end(), axis.key) == keys.end() && !is_camera_key(axis.key)) {
+    std::string known;
+    for (const std::string& k : keys) known += " " + k;
+    throw InputError("--vary '" + text + "': unknown key '" + axis.key + "' (profile keys:" + known +
+                     "; camera keys: near far fov)");
+  }
+  std::istringstream values(text.substr(eq + 1));
+  for (std::string v; std::getline(values, v, ',');) {
+    if (v.empty()) throw InputError("--vary '" + text + "': an empty value");
+    if (std::find(axis.values.begin(), axis.values.end(), v) != axis.values.end())
+      throw InputError("--vary '" + text + "': value '" + v + "' given twice");
+    axis.values.push_back(v);
+  }
+  if (axis.values.empty()) throw InputError("--vary '" + text + "': no values");
+  return axis;
+}
+
+namespace {
+
+// Edge-function weights w[k] of the centre of pixel (x, y) (vertex k's weight is w[k] / sum),
+// exact integers: coordinates doubled so that the centre (i + 1/2) 2^S is an integer for every S.
+void integer_weights(const SnappedTriangle& t, int subpixel_bits, int x, int y, __int128 w[3]) {
+  const __int128 px = (2 * __int128(x) + 1) << subpixel_bits, py = (2 * __int128(y) + 1) << subpixel_bits;
+  __int128 vx[3], vy[3];
+  for (int k = 0; k < 3; ++k) vx[k] = 2 * __int128(t.v[k].x), vy[k] = 2 * __int128(t.v[k].y);
+  auto edge = [&](int a, int b) { return (vx[b] - vx[a]) * (py - vy[a]) - (vy[b] - vy[a]) * (px - vx[a]); };
+  w[0] = edge(1, 2), w[1] = edge(2, 0), w[2] = edge(0, 1);
+}
+
+}  // namespace
+
+double depth_error_lsb(const SnappedTriangle& t, int subpixel_bits, int x, int y, uint32_t z) {
+  __int128 w[3];
+  integer_weights(t, subpixel_bits, x, y, w);
+  const __int128 area = w[0] + w[1] + w[2];
+  const __int128 num = w[0] * t.v[0].z + w[1] * t.v[1].z + w[2] * t.v[2].z;
+  __int128 diff = __int128(z) * area - num;
+  if (diff < 0) diff = -diff;
+  return double(static_cast<long double>(diff) / static_cast<long double>(area < 0 ? -area : area));
+}
+
+void pixel_weights(const SnappedTriangle& t, int subpixel_bits, int x, int y, long double weight[3]) {
+  __int128 w[3];
+  integer_weights(t, subpixel_bits, x, y, w);
+  const long double area = static_cast<long double>(w[0] + w[1] + w[2]);
+  for (int k = 0; k < 3; ++k) weight[k] = static_cast<long double>(w[k]) / area;
+}
+
+DepthErrorMeter::DepthErrorMeter(const std::vector<ScreenTriangle>& screen, const std::vector<SnappedTriangle>& snapped,
+                                 const Profile& profile)
+    : screen_(screen), snapped_(snapped), profile_(profile),
+      ideal_depth_(size_t(profile.width) * profile.height,
+                   static_cast<long double>(profile.depth_clear_value()) / profile.depth_max()) {}
+
+void DepthErrorMeter::on_fragment(const Fragment& f) {
+  if (f.tri < 0 || size_t(f.tri) >= snapped_.size()) return;
+  const SnappedTriangle& t = snapped_[size_t(f.tri)];
+  max_ = std::max(max_, depth_error_lsb(t, profile_.subpixel_bits, f.x, f.y, f.z));
+  long double w[3];
+  pixel_weights(t, profile_.subpixel_bits, f.x, f.y, w);
+  const ScreenTriangle& s = screen_[size_t(f.tri)];
+  const long double z = w[0] * s.v[0].z + w[1] * s.v[1].z + w[2] * s.v[2].z;
+  long double& stored = ideal_depth_[size_t(f.y) * size_t(profile_.width) + size_t(f.x)];
+  bool pass = false;
+  switch (profile_.depth_func) {
+    case DepthFunc::Never: pass = false; break;
+    case DepthFunc::Less: pass = z < stored; break;
+    case DepthFunc::Equal: pass = z == stored; break;
+    case DepthFunc::LEqual: pass = z <= stored; break;
+    case DepthFunc::Greater: pass = z > stored; break;
+    case DepthFunc::NotEqual: pass = z != stored; break;
+    case DepthFunc::GEqual: pass = z >= stored; break;
+    case DepthFunc::Always: pass = true; break;
+  }
+  if (pass && profile_.depth_write) stored = z;
+  wrong_ += pass != f.pass;
+}
+
+CLI::App* add_sweep_command(CLI::App& app, SweepOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "sweep", "render one scene at every combination of swept profile (and camera) values: CSV, plots, hardware cost");
+  add_scene_options(*cmd, o.scene);
+  cmd->add_option("--vary", o.vary,
+                  "KEY=V1,V2,...: a profile key (e.g. traversal=bbox,span, memory_latency=1,2,4, z_bits=16,24) or "
+                  "a camera key (near, far, fov); repeat for more axes (every combination is run; the first "
+                  "axis is the plots' x axis)")
+      ->required()
+      ->type_name("KEY=V,...");
+  cmd->add_option("--backend", o.backend, "model (default; predicts the RTL's cycles exactly) or systemc")
+      ->check(CLI::IsMember({"model", "systemc"}))
+      ->type_name("NAME");
+  cmd->add_option("--out", o.out_dir, "folder for sweep.csv, sweep.gp and the PNG plots (created)")
+      ->required()
+      ->type_name("DIR");
+  cmd->add_flag("--hw-cost", o.hw_cost,
+                "synthesize each point's core with yosys (generic cells, iCE40 LUTs and FFs; cached per profile)");
+  cmd->add_option("--hw-cost-cache", o.hw_cost_cache, "cache folder of --hw-cost (default ~/.cache/rastersim/hw-cost)")
+      ->type_name("DIR");
+  cmd->add_option("--rtl-dir", o.rtl_dir, "RTL sources for --hw-cost (default: the source tree's rtl/)")
+      ->type_name("DIR");
+  cmd->add_flag("!--no-plots", o.plots, "write the CSV and the gnuplot script only");
+  add_profile_options(*cmd, o.scene.profile);
+  return cmd;
+}
+
+int run_sweep(const SweepOptions& o) {
+  std::vector<SweepAxis> axes;
+  std::set<std::string> seen;
+  for (const std::string& text : o.vary) {
+    axes.push_back(parse_sweep_axis(text));
+    if (!seen.insert(axes.back().key).second) throw InputError("--vary: key '" + axes.back().key + "' given twice");
+  }
+  const Profile base = resolve_profile(o.scene.profile);
+  const Backend backend = select_backend(o.backend);
+  // Every point's profile and camera are checked before anything runs.
+  size_t total = 1;
+  for (const SweepAxis& a : axes) total *= a.values.size();
+  std::vector<Point> points(total);
+  std::vector<Profile> profiles(total, base);
+  std::vector<RenderOptions> scenes(total, o.scene);
+  for (size_t i = 0; i < total; ++i) {
+    size_t rest = i;
+    points[i].values.resize(axes.size());
+    for (size_t a = axes.size(); a-- > 0;) {  // the last axis varies fastest
+      const std::string& v = axes[a].values[rest % axes[a].values.size()];
+      rest /= axes[a].values.size();
+      points[i].values[a] = v;
+      if (is_camera_key(axes[a].key)) {
+        double d = 0;
+        if (!parse_number(v, d)) throw InputError("--vary " + axes[a].key + ": '" + v + "' is not a number");
+        (axes[a].key == "near" ? scenes[i].near : axes[a].key == "far" ? scenes[i].far : scenes[i].fov) = {d};
+      } else {
+        const std::string error = set_profile_key(profiles[i], axes[a].key, v);
+        if (!error.empty()) throw InputError("--vary " + axes[a].key + ": " + error);
+      }
+    }
+    const std::vector<std::string> errors = validate(profiles[i]);
+    if (!errors.empty()) {
+      std::string where;
+      for (size_t a = 0; a < axes.size(); ++a) where += (a ? " " : "") + axes[a].key + "=" + points[i].values[a];
+      throw InputError("sweep point " + where + ": " + errors.front());
+    }
+    check_backend_profile(backend, profiles[i]);
+  }
+  if (o.plots && std::system("gnuplot --version > /dev/null 2>&1") != 0)
+    throw InputError("gnuplot is not installed (scripts/install-deps.sh installs gnuplot-nox), or use --no-plots");
+  std::error_code ec;
+  fs::create_directories(o.out_dir, ec);
+  if (ec || !fs::is_directory(o.out_dir)) throw InputError("--out " + o.out_dir + ": cannot create the folder");
+  const std::string rtl_dir = o.rtl_dir.empty() ? std::string(RASTERSIM_SOURCE_DIR) + "/rtl" : o.rtl_dir;
+
+  for (size_t i = 0; i < total; ++i) {
+    Point& point = points[i];
+    const Profile& p = profiles[i];
+    const std::vector<ScreenTriangle> screen = load_input(o.scene.input, o.scene.scene, p, camera_options(scenes[i]));
+    std::vector<SnappedTriangle> snapped;
+    snapped.reserve(screen.size());
+    for (const ScreenTriangle& t : screen) snapped.push_back(snap(t, p));
+    DepthErrorMeter meter(screen, snapped, p);
+    BackendOptions backend_options;
+    point.stats = render_triangles(backend, p, snapped, &meter, nullptr, backend_options).stats;
+    point.max_depth_error = meter.max_depth_error();
+    point.wrong_depth_tests = meter.wrong_depth_tests();
+    if (o.hw_cost) point.cost = hardware_cost(p, rtl_dir, o.hw_cost_cache);
+    std::cout << "[" << i + 1 << "/" << total << "]";
+    for (size_t a = 0; a < axes.size(); ++a) std::cout << " " << axes[a].key << "=" << point.values[a];
+    std::cout << ": " << point.stats.cycles << " cycles, " << point.stats.depth_fail << " depth fails, "
+              << point.wrong_depth_tests << " wrong depth tests, max depth error " << point.max_depth_error;
+    if (o.hw_cost)
+      std::cout << ", " << point.cost.ice40_luts << " iCE40 LUTs" << (point.cost.from_cache ? " (cached)" : "");
+    std::cout << std::endl;
+  }
+
+  // The CSV and the plot script, written to temporaries and renamed together.
+  OutputFiles outputs;
+  const std::string csv_path = (fs::path(o.out_dir) / "sweep.csv").string();
+  const std::string gp_path = (fs::path(o.out_dir) / "sweep.gp").string();
+  const std::string csv_temp = outputs.add(csv_path, "--out");
+  const std::string gp_temp = outputs.add(gp_path, "--out");
+  std::ostringstream csv;
+  for (const SweepAxis& a : axes) csv << a.key << ",";
+  bool first = true;
+  for (const Column& c : figure_columns())
+    if (!c.hardware || o.hw_cost) csv << (first ? "" : ",") << c.name, first = false;
+  csv << "\n";
+  for (const Point& p : points) {
+    for (const std::string& v : p.values) csv << v << ",";
+    first = true;
+    for (const Column& c : figure_columns())
+      if (!c.hardware || o.hw_cost) csv << (first ? "" : ",") << format_value(c.value(p)), first = false;
+    csv << "\n";
+  }
+  std::string title = o.scene.input.empty() ? "scene " + (o.scene.scene.empty() ? std::string("default") : o.scene.scene)
+                                            : fs::path(o.scene.input).filename().string();
+  title += ", " + std::to_string(base.width) + "x" + std::to_string(base.height) + ", " + o.backend;
+  write_text_file(csv_temp, csv_path, csv.str());
+  write_text_file(gp_temp, gp_path, gnuplot_script(axes, points, o.hw_cost, title));
+  outputs.commit();
+  std::cout << "wrote " << csv_path << "\nwrote " << gp_path << "\n";
+  if (o.plots) {
+    // gnuplot's notes (a constant figure's "empty y range") go to a log, shown only on failure.
+    const std::string command = "cd '" + o.out_dir + "' && gnuplot sweep.gp 2> sweep.gnuplot.log";
+    const int status = std::system(command.c_str());
+    const fs::path log = fs::path(o.out_dir) / "sweep.gnuplot.log";
+    if (status != 0) {
+      std::ifstream in(log);
+      std::cerr << in.rdbuf();
+      throw std::runtime_error("gnuplot failed on " + gp_path + " (" + log.string() + ")");
+    }
+    fs::remove(log);
+    std::cout << "plotted " << o.out_dir << "/*.png\n";
+  }
+  return 0;
+}
+
+}  // namespace rastersim

@@ -1,0 +1,221 @@
+// `rastersim sweep` (cli/sweep_command.cpp): every combination of the swept values is one CSV row
+// whose figures equal what `rastersim render` reports for the same settings; the plots are PNGs;
+// the precision figures against the exact planes (tests/reference.h) and an ideal z-buffer; the
+// hardware cost is synthesized once per profile and then read from the cache. And `rastersim
+// render --backend systemc` against the model, with and without a memory stall pattern.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "cli_test_support.h"
+#include "reference.h"
+#include "sweep_command.h"
+
+namespace rastersim::cli_test {
+namespace {
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// sweep.csv as rows of named cells.
+std::vector<std::map<std::string, std::string>> read_csv(const fs::path& path) {
+  std::istringstream in(read_text(path));
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  std::istringstream names(line);
+  for (std::string n; std::getline(names, n, ',');) header.push_back(n);
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    std::istringstream cells(line);
+    std::map<std::string, std::string> row;
+    size_t i = 0;
+    for (std::string c; std::getline(cells, c, ','); ++i) row[header.at(i)] = c;
+    EXPECT_EQ(i, header.size()) << line;
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(CliSweep, EveryCombinationIsARowEqualToRenderAndPlotted) {
+  ScratchDir dir;
+  const std::vector<std::string> base = {"--scene", "overlap", "--width", "64", "--height", "48"};
+  std::vector<std::string> args = {"sweep", "--vary", "memory_latency=1,4", "--vary", "traversal=bbox,span",
+                                   "--vary", "z_bits=16,24", "--out", "study"};
+  args.insert(args.end(), base.begin(), base.end());
+  const RunResult r = run_rastersim(dir, args);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto rows = read_csv(dir.path("study/sweep.csv"));
+  ASSERT_EQ(rows.size(), 8u);
+  std::set<std::string> combinations;
+  for (const auto& row : rows) {
+    combinations.insert(row.at("memory_latency") + row.at("traversal") + row.at("z_bits"));
+    std::vector<std::string> render = {"render", "--stats", "s.json", "--memory-latency", row.at("memory_latency"),
+                                       "--traversal", row.at("traversal"), "--z-bits", row.at("z_bits")};
+    render.insert(render.end(), base.begin(), base.end());
+    const RunResult rr = run_rastersim(dir, render);
+    ASSERT_EQ(rr.exit_code, 0) << rr.err;
+    const nlohmann::json s = read_json(dir.path("s.json"));
+    const int64_t cycles = s["cycles"], fragments = s["fragments"];
+    EXPECT_EQ(std::stoll(row.at("cycles")), cycles);
+    EXPECT_EQ(std::stoll(row.at("fragments")), fragments);
+    EXPECT_EQ(std::stoll(row.at("depth_fails")), s["depth_fail"].get<int64_t>());
+    EXPECT_NEAR(std::stod(row.at("fragments_per_clock")), double(fragments) / double(cycles), 1e-5);
+    EXPECT_NEAR(std::stod(row.at("setup_share")), s["units"]["setup"]["busy"].get<double>() / double(cycles), 1e-5);
+    EXPECT_NEAR(std::stod(row.at("stall_share")), s["units"]["zbuffer"]["stall"].get<double>() / double(cycles), 1e-5);
+    // Derived guard bits keep every fragment within 1 LSB of the exact plane (PRODUCT.md).
+    EXPECT_LT(std::stod(row.at("max_depth_error")), 1.0);
+    EXPECT_GT(fragments, 1000);
+  }
+  EXPECT_EQ(combinations.size(), 8u);
+  for (const std::string name : {"cycles", "fragments_per_clock", "setup_share", "stall_share", "depth_fails",
+                                 "wrong_depth_tests", "max_depth_error"}) {
+    const Image plot = read_image(dir.path("study/" + name + ".png"));
+    EXPECT_EQ(plot.width, 800) << name;
+    EXPECT_EQ(plot.height, 500) << name;
+  }
+  EXPECT_TRUE(fs::exists(dir.path("study/sweep.gp")));
+}
+
+TEST(CliSweep, FewerGuardBitsThanDerivedShowAsDepthError) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"sweep", "--scene", "overlap", "--width", "160", "--height", "120",
+                                          "--vary", "z_guard_bits=1,auto", "--out", "g", "--no-plots"});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto rows = read_csv(dir.path("g/sweep.csv"));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_GT(std::stod(rows[0].at("max_depth_error")), 1.0);
+  EXPECT_LT(std::stod(rows[1].at("max_depth_error")), 1.0);
+  EXPECT_FALSE(fs::exists(dir.path("g/max_depth_error.png")));
+}
+
+TEST(CliSweep, BadAxesAreInputErrors) {
+  ScratchDir dir;
+  for (const auto& [vary, message] : std::vector<std::pair<std::string, std::string>>{
+           {"colour=1,2", "unknown key 'colour'"},
+           {"z_bits=16,16", "value '16' given twice"},
+           {"z_bits=8,16", "z_bits is 8"},
+           {"near=close", "'close' is not a number"},
+           {"traversal", "expected KEY=V1,V2"}}) {
+    const RunResult r = run_rastersim(dir, {"sweep", "--vary", vary, "--out", "x"});
+    EXPECT_EQ(r.exit_code, 2) << vary;
+    EXPECT_TRUE(contains(r.err, message)) << vary << ": " << r.err;
+    EXPECT_FALSE(fs::exists(dir.path("x"))) << vary;
+  }
+}
+
+// The exact plane of the sweep's depth error is the reference's (tests/reference.h).
+TEST(CliSweep, DepthErrorAgainstTheReferencePlane) {
+  SnappedTriangle t;
+  t.v[0] = {3, 5, 1000, {}}, t.v[1] = {700, 40, 90000, {}}, t.v[2] = {100, 600, 5, {}};
+  for (int subpixel_bits : {1, 4}) {
+    for (int y = 0; y < 8; ++y) {
+      for (int x = 0; x < 8; ++x) {
+        const uint32_t z[3] = {t.v[0].z, t.v[1].z, t.v[2].z};
+        const reference::Rational exact = reference::plane_at_centre(t, z, subpixel_bits, x, y);
+        const double value = double(exact.num) / double(exact.den);
+        for (uint32_t candidate : {uint32_t(value), uint32_t(value) + 7}) {
+          EXPECT_NEAR(depth_error_lsb(t, subpixel_bits, x, y, candidate), std::fabs(double(candidate) - value), 1e-6);
+        }
+      }
+    }
+  }
+}
+
+#ifdef RASTERSIM_HAVE_SYSTEMC
+// The SystemC system (verilated core, command FIFO, memory model) renders exactly what the model
+// renders: images, fragment trace (cycles included) and counters, with and without back-pressure.
+TEST(CliSystemc, SystemcBackendEqualsModelWithAndWithoutAStallPattern) {
+  ScratchDir dir;
+  for (const std::string stall : {"0", "40"}) {
+    for (const std::string backend : {"model", "systemc"}) {
+      const std::string name = backend + stall;
+      const RunResult r = run_rastersim(dir, {"render", "--scene", "overlap", "--backend", backend, "--memory-latency",
+                                              "3", "--memory-stall-percent", stall, "--memory-stall-seed", "9", "-o",
+                                              name + ".png", "--fragments", name + ".csv", "--stats", name + ".json"});
+      ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+      if (backend == "systemc") {
+        EXPECT_TRUE(contains(r.out, "SystemC")) << r.out;
+      }
+    }
+    for (const std::string ext : {".png", ".csv", ".json"})
+      EXPECT_EQ(read_text(dir.path("model" + stall + ext)), read_text(dir.path("systemc" + stall + ext))) << stall << ext;
+  }
+  const nlohmann::json plain = read_json(dir.path("systemc0.json")), stalled = read_json(dir.path("systemc40.json"));
+  EXPECT_GT(plain["fragments"].get<int64_t>(), 1000);
+  EXPECT_GT(stalled["cycles"].get<int64_t>(), plain["cycles"].get<int64_t>());
+  EXPECT_EQ(read_text(dir.path("systemc0.png")), read_text(dir.path("systemc40.png")));
+}
+
+TEST(CliSystemc, SweepThroughSystemc) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"sweep", "--scene", "overlap", "--backend", "systemc", "--vary",
+                                          "memory_stall_percent=0,50", "--out", "s", "--no-plots"});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto rows = read_csv(dir.path("s/sweep.csv"));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_GT(std::stoll(rows[1].at("cycles")), std::stoll(rows[0].at("cycles")));
+  EXPECT_GT(std::stod(rows[1].at("stall_share")), std::stod(rows[0].at("stall_share")));
+  EXPECT_EQ(rows[0].at("fragments"), rows[1].at("fragments"));
+}
+#endif
+
+// --hw-cost runs yosys once per distinct hardware profile and then reads the cache. yosys itself is
+// replaced by a stub on PATH (a real synthesis of the core takes minutes; docs/studies.md runs the
+// real one): the stub records each script it is given and writes `stat` reports whose counts encode
+// the script's MAX_MEMORY_LATENCY, so the test checks the script, the parsing and the caching.
+TEST(CliSweep, HardwareCostRunsYosysOncePerProfileAndCaches) {
+  ScratchDir dir;
+  const fs::path stub_dir = dir.root() / "bin";
+  fs::create_directory(stub_dir);
+  {
+    std::ofstream stub(stub_dir / "yosys");
+    stub << "#!/bin/sh\n"
+            "# Called as: yosys -q -l LOG -s SCRIPT\n"
+            "script=\"$5\"\n"
+            "cat \"$script\" >> " << (dir.root() / "yosys-calls.txt").string() << "\n"
+            "echo '=== next call ===' >> " << (dir.root() / "yosys-calls.txt").string() << "\n"
+            "latency=$(sed -n 's/.*MAX_MEMORY_LATENCY \\([0-9]*\\).*/\\1/p' \"$script\" | head -1)\n"
+            "generic=$(sed -n 's/^tee -q -o \\(.*generic.txt\\) stat$/\\1/p' \"$script\")\n"
+            "ice40=$(sed -n 's/^tee -q -o \\(.*ice40.txt\\) stat$/\\1/p' \"$script\")\n"
+            "printf '=== rastersim_core ===\\n\\n   Number of cells:  %d\\n     $_AND_  7\\n' $((1000 + latency)) > \"$generic\"\n"
+            "printf '=== rastersim_core ===\\n\\n   Number of cells:  9\\n     SB_CARRY  3\\n"
+            "     SB_DFF  %d\\n     SB_DFFE  5\\n     SB_LUT4  %d\\n' $((10 * latency)) $((500 + latency)) > \"$ice40\"\n";
+  }
+  fs::permissions(stub_dir / "yosys", fs::perms::owner_all);
+  const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
+  setenv("PATH", (stub_dir.string() + ":" + path).c_str(), 1);
+  const std::vector<std::string> args = {"sweep", "--scene", "overlap", "--width", "16", "--height", "8",
+                                         "--subpixel-bits", "2", "--z-bits", "16", "--vary", "memory_latency=1,8", "--vary", "traversal=bbox,span",
+                                         "--hw-cost", "--hw-cost-cache", "cache", "--out", "hw", "--no-plots"};
+  const RunResult first = run_rastersim(dir, args);
+  const std::string first_csv = read_text(dir.path("hw/sweep.csv"));
+  const std::string calls = read_text(dir.root() / "yosys-calls.txt");
+  const RunResult second = run_rastersim(dir, args);
+  setenv("PATH", path.c_str(), 1);
+  ASSERT_EQ(first.exit_code, 0) << first.out << first.err;
+  ASSERT_EQ(second.exit_code, 0) << second.out << second.err;
+  // Traversal is a runtime setting: two hardware profiles, two yosys runs, none the second time.
+  size_t runs = 0;
+  for (size_t at = calls.find("=== next call ==="); at != std::string::npos; at = calls.find("=== next call ===", at + 1)) ++runs;
+  EXPECT_EQ(runs, 2u) << calls;
+  EXPECT_EQ(read_text(dir.root() / "yosys-calls.txt"), calls);
+  for (const std::string step : {"chparam -set WIDTH 16 -set HEIGHT 8 -set SUBPIXEL_BITS 2 -set Z_BITS 16 "
+                                 "-set Z_GUARD_BITS 0 -set MAX_MEMORY_LATENCY 8 rastersim_core",
+                                 "synth -flatten -top rastersim_core", "synth_ice40 -top rastersim_core"})
+    EXPECT_TRUE(contains(calls, step)) << step << "\n" << calls;
+  EXPECT_EQ(read_text(dir.path("hw/sweep.csv")), first_csv);
+  EXPECT_TRUE(contains(second.out, "[1/4] memory_latency=1 traversal=bbox")) << second.out;
+  EXPECT_TRUE(contains(second.out.substr(0, second.out.find("[2/4]")), "(cached)")) << second.out;
+  const auto rows = read_csv(dir.path("hw/sweep.csv"));
+  ASSERT_EQ(rows.size(), 4u);
+  for (const auto& row : rows) {
+    const int latency = std::stoi(row.at("memory_latency"));
+    EXPECT_EQ(std::stoll(row.at("yosys_cells")), 1000 + latency);
+    EXPECT_EQ(std::stoll(row.at("ice40_luts")), 500 + latency);
+    EXPECT_EQ(std::stoll(row.at("ice40_ffs")), 10 * latency + 5);  // SB_DFF + SB_DFFE
+    EXPECT_EQ(std::stoll(row.at("memory_bits")), 16 * 8 * (16 + 24) + 2 * 2 * 64);
+  }
+}
+
+}  // namespace
+}  // namespace rastersim::cli_test
