@@ -1,24 +1,32 @@
 // Included at the end of rtl/zbuffer.sv by scripts/formal.sh (formal runs only). The read-after-
 // write hazard logic, against a history of accepted fragments kept here by age and a shadow depth
-// memory written from that history:
+// memory written from that history, with any memory behind the port that keeps its contract
+// (modelled here: the word of a read taken in c, as it is at the end of c, arrives in c + L; the
+// memory may refuse reads in any cycle and clear for any number of cycles):
 //  - a fragment is accepted only if no fragment to the same address was accepted in the last L
-//    cycles (L = cfg_memory_latency), and it is accepted whenever that holds (no needless stall);
-//  - its depth test result comes exactly L cycles after its acceptance;
+//    cycles (L = cfg_memory_latency), and it is accepted whenever that holds, the memory is cleared
+//    and it takes the read (no needless stall); it is accepted exactly when its read is taken;
+//  - its depth test result comes exactly L cycles after its acceptance, and the writes it makes
+//    (address, depth, enables) are those of its result;
 //  - the depth it is compared with is the last depth written to its address (or the clear value
-//    when none was): every read sees all earlier writes.
+//    when none was): every read sees all earlier writes, without forwarding in the memory.
 // The proof starts in the reset state (all registers zero) with rst low; the configuration is
 // constant and 1 <= L <= MAX_MEMORY_LATENCY.
   localparam integer F_MAX = MAX_MEMORY_LATENCY;
+  localparam integer F_WORDS = WIDTH * HEIGHT;
   reg                f_valid [1:F_MAX];
   reg [AB-1:0]       f_addr [1:F_MAX];
   reg [Z_BITS-1:0]   f_z [1:F_MAX];
-  reg [Z_BITS-1:0]   f_depth [0:WORDS-1];
-  reg                f_written [0:WORDS-1];
+  reg [Z_BITS-1:0]   f_depth [0:F_WORDS-1];    // last depth written by the accepted fragments
+  reg                f_written [0:F_WORDS-1];
+  reg [Z_BITS-1:0]   f_mem [0:F_WORDS-1];      // the memory behind the port
+  reg                f_mem_written [0:F_WORDS-1];
+  reg [Z_BITS-1:0]   f_read [1:F_MAX];         // words read, by age
   reg                f_started;
   reg [LB-1:0]       f_latency;
   reg                f_depth_write;
   reg [2:0]          f_depth_func;
-  reg [Z_BITS-1:0]   f_depth_clear;
+  wire [Z_BITS-1:0]  f_clear_value = {Z_BITS{1'b0}};  // the memory's clear value
   wire [AB-1:0] f_frag_addr = frag_y * WIDTH + frag_x;
 
   integer f_k;
@@ -30,23 +38,43 @@
   end
   wire f_done_valid = f_valid[cfg_memory_latency];
   wire [AB-1:0] f_done_addr = f_addr[cfg_memory_latency];
+  wire [Z_BITS-1:0] f_done_z = f_z[cfg_memory_latency];
+  reg f_pass;
+  always @* begin
+    case (cfg_depth_func)
+      3'd0: f_pass = 1'b0;
+      3'd1: f_pass = f_done_z < mem_rd_depth;
+      3'd2: f_pass = f_done_z == mem_rd_depth;
+      3'd3: f_pass = f_done_z <= mem_rd_depth;
+      3'd4: f_pass = f_done_z > mem_rd_depth;
+      3'd5: f_pass = f_done_z != mem_rd_depth;
+      3'd6: f_pass = f_done_z >= mem_rd_depth;
+      default: f_pass = 1'b1;
+    endcase
+  end
 
   always @(posedge clk) begin
     f_started <= 1'b1;
     f_latency <= cfg_memory_latency;
     f_depth_write <= cfg_depth_write;
     f_depth_func <= cfg_depth_func;
-    f_depth_clear <= cfg_depth_clear;
     f_valid[1] <= frag_valid && frag_ready;
     f_addr[1] <= f_frag_addr;
     f_z[1] <= frag_z;
+    // The memory: a taken read sees the word before this cycle's write.
+    f_read[1] <= f_mem_written[mem_rd_addr] ? f_mem[mem_rd_addr] : f_clear_value;
     for (f_k = 2; f_k <= F_MAX; f_k = f_k + 1) begin
       f_valid[f_k] <= f_valid[f_k - 1];
       f_addr[f_k] <= f_addr[f_k - 1];
       f_z[f_k] <= f_z[f_k - 1];
+      f_read[f_k] <= f_read[f_k - 1];
+    end
+    if (mem_wr_depth_en) begin
+      f_mem[mem_wr_addr] <= mem_wr_depth;
+      f_mem_written[mem_wr_addr] <= 1'b1;
     end
     if (f_done_valid && result_pass && cfg_depth_write) begin
-      f_depth[f_done_addr] <= f_z[cfg_memory_latency];
+      f_depth[f_done_addr] <= f_done_z;
       f_written[f_done_addr] <= 1'b1;
     end
   end
@@ -55,11 +83,23 @@
     assume(!rst);
     assume(cfg_memory_latency >= 1 && cfg_memory_latency <= MAX_MEMORY_LATENCY);
     assume(frag_x <= WIDTH - 1 && frag_y <= HEIGHT - 1);
-    if (f_started)
-      assume(cfg_memory_latency == f_latency && cfg_depth_write == f_depth_write &&
-             cfg_depth_func == f_depth_func && cfg_depth_clear == f_depth_clear);
+    if (f_started) begin
+      assume(cfg_memory_latency == f_latency && cfg_depth_write == f_depth_write && cfg_depth_func == f_depth_func);
+      // The memory's contract: the word read L cycles ago, once the clear is done.
+      assume(mem_rd_depth == f_read[cfg_memory_latency]);
+      assume(mem_clear_done);
+    end
     if (frag_valid && frag_ready) assert(!f_conflict);
-    if (frag_valid && clear_done && !f_conflict) assert(frag_ready);
+    if (frag_valid && mem_clear_done && mem_rd_ready && !f_conflict) assert(frag_ready);
+    assert((frag_valid && frag_ready) == (mem_rd_valid && mem_rd_ready));
+    if (mem_rd_valid) assert(mem_rd_addr == f_frag_addr);
     assert(result_valid == f_done_valid);
-    if (f_done_valid) assert(stored == (f_written[f_done_addr] ? f_depth[f_done_addr] : cfg_depth_clear));
+    if (f_done_valid) begin
+      assert(result_pass == f_pass);
+      assert(mem_wr_color_en == f_pass && mem_wr_depth_en == (f_pass && cfg_depth_write));
+      assert(mem_wr_addr == f_done_addr && mem_wr_depth == f_done_z);
+      assert(mem_rd_depth == (f_written[f_done_addr] ? f_depth[f_done_addr] : f_clear_value));
+    end else begin
+      assert(!mem_wr_color_en && !mem_wr_depth_en);
+    end
   end
