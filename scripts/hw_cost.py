@@ -27,10 +27,11 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RTL = os.path.join(ROOT, "rtl")
-UNITS = ["divider", "plane_register", "triangle_setup", "scanline_walker", "z_adder", "zbuffer", "rastersim_top"]
+UNITS = ["divider", "plane_register", "triangle_setup", "scanline_walker", "z_adder", "zbuffer", "zbuffer_memory",
+         "rastersim_top"]
 PROFILE_PARAMETERS = ["WIDTH", "HEIGHT", "SUBPIXEL_BITS", "Z_BITS", "Z_GUARD_BITS", "MAX_MEMORY_LATENCY"]
 DEVICES = {"hx8k": ("--hx8k", "ct256", 7680, 32), "up5k": ("--up5k", "sg48", 5280, 30), "hx1k": ("--hx1k", "tq144", 1280, 16)}
-MEMORY_UNITS = {"zbuffer", "rastersim_top"}
+MEMORY_UNITS = {"zbuffer_memory", "rastersim_top"}  # the frame memories sit in zbuffer_memory
 # The frame memories (yosys selection): depth and colour words and their written-bit maps; the
 # z-buffer's in-flight ring stays in the unit.
 FRAME_MEMORIES = "t:$mem_v2 r:MEMID=*_mem r:MEMID=*_written %u %i"
