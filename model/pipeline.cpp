@@ -44,7 +44,7 @@ struct Pipeline::Glue {
     p.zbuffer_.accept_run(address, cycle, n);
     int64_t passes;
     p.zbuffer_.prefetch_rows_below(address, n, 2);
-    if (n < ZBuffer::kShortRun) {
+    if (n < p.zbuffer_.short_run_limit()) {
       const ZAdder values = adders;  // a local copy the compiler keeps in machine registers
       passes = p.zbuffer_.test_and_write_short_run(address, n, values);
     } else {

@@ -19,6 +19,10 @@ class PlaneFormat {
         half_(uint64_t(1) << (guard_bits - 1)), out_max_(out_max) {}
 
   // v modulo 2^reg_bits: what the register holds.
+  int reg_bits() const { return 64 - wrap_shift_; }
+  int guard_bits() const { return round_shift_ - wrap_shift_; }
+  int64_t out_max() const { return out_max_; }
+
   int64_t wrap(uint64_t v) const { return int64_t(v << wrap_shift_) >> wrap_shift_; }
   // clamp((value + 2^(F-1)) >> F, 0, out_max), the sum taken in the register's width. `value` may be
   // held modulo 2^64: 2^reg_bits divides 2^64, so wrapping the sum once gives the register's result

@@ -25,10 +25,12 @@ struct ZBufferCounters {
   int64_t depth_fail = 0;
 };
 
-// test_and_write_run()'s loop is compiled for several instruction sets (x86-64: avx512, avx2,
+// test_and_write_run()'s loop exists in several versions (x86-64: avx512-masked, avx512, avx2,
 // generic); the best the CPU has is used. Every version gives the same results; tests run each.
 std::vector<std::string> run_kernel_versions();  // those this CPU can run, best first
 void select_run_kernel(const std::string& name);  // throws std::invalid_argument if not available
+using RunKernel = int64_t (*)(uint32_t* depth, uint32_t* color, int64_t n, unsigned pass_mask, bool depth_write,
+                              const ZAdder::Run& planes);
 
 class ZBuffer {
  public:
@@ -78,9 +80,10 @@ class ZBuffer {
     // The first fragment extends the busy interval as accept() does; each later one by one cycle.
     counters_.busy += cycle + latency_ - std::max(cycle, busy_until_ + 1) + 1 + (n - 1);
     busy_until_ = cycle + n - 1 + latency_;
-    // Only the last L of them stay in the ring.
+    // Only the last L of them stay in the ring, which is ordered by age from slot_ (and only by
+    // that): when all L are new they go to slots 0..L-1, without a modulo.
     const int64_t first = std::max<int64_t>(0, n - latency_);
-    int slot = int((slot_ + first) % latency_);
+    int slot = first > 0 ? 0 : slot_;
     for (int64_t i = first; i < n; ++i) {
       inflight_address_[slot] = address + uint32_t(i);
       inflight_cycle_[slot] = cycle + i;
@@ -103,9 +106,16 @@ class ZBuffer {
 
   // test_and_write() of n fragments at consecutive addresses, in order; fragment i's depth and
   // colour are the plane registers' outputs i x steps on from `planes`. Returns how many passed.
-  // Vectorized: for runs of at least kShortRun fragments.
-  static constexpr int64_t kShortRun = 24;  // measured: below this the loop below is faster
-  int64_t test_and_write_run(uint32_t address, int64_t n, const ZAdder::Run& planes);
+  // Vectorized: for runs of at least short_run_limit() fragments. The version is the one selected
+  // (select_run_kernel) when the unit was constructed.
+  int64_t test_and_write_run(uint32_t address, int64_t n, const ZAdder::Run& planes) {
+    const int64_t passes = run_kernel_(memory_.depth_words() + address, memory_.color_words() + address, n,
+                                       pass_mask_, depth_write_, planes);
+    counters_.depth_pass += passes;
+    counters_.depth_fail += n - passes;
+    return passes;
+  }
+  int64_t short_run_limit() const { return short_run_limit_; }
 
   // The same for short runs, one fragment at a time (colours only for those that pass);
   // fragment i's values are values.depth_at(i) and values.color_at(i).
@@ -168,6 +178,8 @@ class ZBuffer {
   unsigned pass_mask_;
   bool depth_write_;
   int latency_;
+  RunKernel run_kernel_;
+  int64_t short_run_limit_;
   ZBufferMemory memory_;
   // The last L accepted fragments (a ring): the only ones that can still be in flight.
   std::vector<uint32_t> inflight_address_;
