@@ -66,7 +66,8 @@ int64_t Pipeline::walk(const SetupResult& s, int64_t load_cycle, TriangleRecord&
 void Pipeline::submit(const SnappedTriangle& tri) {
   TriangleRecord record;
   record.index = next_index_++;
-  const SetupResult& s = last_setup_ = setup_.run(tri);
+  setup_.run(tri, last_setup_);
+  const SetupResult& s = last_setup_;
   record.status = s.status;
   record.setup_accept = setup_free_;
   ++stats_.triangles;
@@ -87,7 +88,7 @@ void Pipeline::submit(const SnappedTriangle& tri) {
     record.walker_load = std::max(record.setup_done, walker_free_);
     stats_.setup.stall += record.walker_load - record.setup_done;
     setup_free_ = record.walker_load + 1;
-    zbuffer_.begin_triangle();
+    zbuffer_.begin_triangle(record.walker_load);  // the walker presents fragments after loading
     record.walker_end = sink_ ? walk<true>(s, record.walker_load, record) : walk<false>(s, record.walker_load, record);
     walker_free_ = record.walker_end + 1;
     if (record.fragments > 0) record.last_write = zbuffer_.last_busy_cycle();

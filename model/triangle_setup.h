@@ -75,7 +75,13 @@ struct SetupResult {
 class TriangleSetup {
  public:
   explicit TriangleSetup(const Profile& profile);
-  SetupResult run(const SnappedTriangle& tri) const;
+  SetupResult run(const SnappedTriangle& tri) const {
+    SetupResult r;
+    run(tri, r);
+    return r;
+  }
+  // The same into `r` (the pipeline's output register), without copying the result.
+  void run(const SnappedTriangle& tri, SetupResult& r) const;
   // Cycles from accept to the output register being valid (drawn) or to done (rejected).
   int cycles(SetupStatus status) const {
     return status == SetupStatus::Drawn ? widths_.setup_cycles : widths_.setup_front_cycles;

@@ -45,8 +45,10 @@ class ZBuffer {
   const std::vector<uint32_t>& depth() const { return memory_.depth(); }
   const std::vector<uint32_t>& color() const { return memory_.color(); }  // 0x00RRGGBB
 
-  // Starts a new triangle: its own fragments never collide, so after L of them no check is needed.
-  void begin_triangle() { fresh_ = 0; }
+  // Starts a new triangle whose fragments are presented in cycle `first` or later: its own fragments
+  // never collide, so after L of them no check is needed; none at all when every fragment in flight
+  // has been written before `first` (a hazard needs one presented by its write cycle, busy_until_).
+  void begin_triangle(int64_t first) { fresh_ = first > busy_until_ ? latency_ : 0; }
   // True once no fragment can stall until the next triangle: accept_run() may be used. Never
   // with a stall pattern: the memory may refuse any read.
   bool settled() const { return fresh_ >= latency_ && !memory_.has_stalls(); }
