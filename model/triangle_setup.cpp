@@ -43,7 +43,18 @@ PlaneSetup TriangleSetup::plane(const i128 value[3], const i128 edge_at_start[3]
 void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
   const Widths& w = widths_;
   const int S = profile_.subpixel_bits;
-  r = SetupResult{};
+  // Every field of a drawn triangle's record is written below; a rejected one's record is a fresh
+  // one with what was decided (without clearing the whole record for every triangle).
+  auto reject = [&r](SetupStatus status) {
+    SetupResult fresh;
+    fresh.status = status;
+    fresh.front_facing = r.front_facing;
+    fresh.area2 = r.area2;
+    fresh.flat_color = r.flat_color;
+    if (status == SetupStatus::Offscreen) fresh.x0 = r.x0, fresh.y0 = r.y0, fresh.x1 = r.x1, fresh.y1 = r.y1;
+    r = fresh;
+  };
+  r.front_facing = false;
   SnappedVertex v[3] = {input.v[0], input.v[1], input.v[2]};
   for (const SnappedVertex& vertex : v) {
     check_signed(vertex.x, w.coord_bits, "vertex x");
@@ -55,11 +66,11 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
   const int64_t area2 = int64_t(v[1].x - v[0].x) * (v[2].y - v[0].y) - int64_t(v[2].x - v[0].x) * (v[1].y - v[0].y);
   check_signed(area2, w.area_bits, "area2");
   r.area2 = area2;
-  if (area2 == 0) return void(r.status = SetupStatus::Degenerate);
+  if (area2 == 0) return reject(SetupStatus::Degenerate);
   // y points down, so area2 > 0 is clockwise as the viewer sees the screen.
   r.front_facing = profile_.front_face == FrontFace::CCW ? area2 < 0 : area2 > 0;
   if ((profile_.cull == CullMode::Back && !r.front_facing) || (profile_.cull == CullMode::Front && r.front_facing))
-    return void(r.status = SetupStatus::Culled);
+    return reject(SetupStatus::Culled);
   if (area2 < 0) std::swap(v[1], v[2]);  // either winding rasterizes: order to area2 > 0
   const int64_t area = area2 < 0 ? -area2 : area2;
 
@@ -71,7 +82,7 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
   r.x1 = int(std::min<int64_t>(profile_.width - 1, (x_max - half) >> S));
   r.y0 = int(std::max<int64_t>(0, (y_min - half + (int64_t(1) << S) - 1) >> S));
   r.y1 = int(std::min<int64_t>(profile_.height - 1, (y_max - half) >> S));
-  if (r.x0 > r.x1 || r.y0 > r.y1) return void(r.status = SetupStatus::Offscreen);
+  if (r.x0 > r.x1 || r.y0 > r.y1) return reject(SetupStatus::Offscreen);
   r.status = SetupStatus::Drawn;
 
   // Edge functions at the first candidate's centre.
