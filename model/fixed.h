@@ -90,6 +90,13 @@ struct FloorDiv {
   i128 quotient;
   i128 remainder;  // 0 <= remainder < divisor
 };
+// The signed result from |n| = q0 d + r0.
+inline FloorDiv floor_from_magnitude(bool negative, unsigned __int128 q0, unsigned __int128 r0, i128 d) {
+  if (!negative) return {i128(q0), i128(r0)};
+  if (r0 == 0) return {-i128(q0), 0};
+  return {-i128(q0) - 1, d - i128(r0)};
+}
+
 inline FloorDiv floor_div(i128 n, i128 d) {
   const unsigned __int128 mag = n < 0 ? (unsigned __int128)(-n) : (unsigned __int128)n;
   unsigned __int128 q0, r0;
@@ -100,10 +107,30 @@ inline FloorDiv floor_div(i128 n, i128 d) {
     q0 = mag / (unsigned __int128)d;
     r0 = mag % (unsigned __int128)d;
   }
-  if (n >= 0) return {i128(q0), i128(r0)};
-  if (r0 == 0) return {-i128(q0), 0};
-  return {-i128(q0) - 1, d - i128(r0)};
+  return floor_from_magnitude(n < 0, q0, r0, d);
 }
+
+// floor_div() by one divisor 0 < d < 2^64 many times (the setup divides every plane by the same
+// area): with inv = floor((2^64 - 1) / d) >= 2^64 / d - 1, the estimate floor(|n| inv / 2^64) is at
+// most 2 below the quotient when |n| < 2^64, and corrections make it exact. Larger |n| divide.
+class FloorDivider {
+ public:
+  explicit FloorDivider(i128 d) : d_(d), wide_(((unsigned __int128)d >> 64) != 0), inv_(wide_ ? 0 : ~uint64_t(0) / uint64_t(d)) {}
+  FloorDiv operator()(i128 n) const {
+    const unsigned __int128 mag = n < 0 ? (unsigned __int128)(-n) : (unsigned __int128)n;
+    if (wide_ || (mag >> 64) != 0) return floor_div(n, d_);
+    const uint64_t m = uint64_t(mag), d = uint64_t(d_);
+    uint64_t q = uint64_t(((unsigned __int128)m * inv_) >> 64);
+    uint64_t r = m - q * d;
+    while (r >= d) r -= d, ++q;
+    return floor_from_magnitude(n < 0, q, r, d_);
+  }
+
+ private:
+  i128 d_;
+  bool wide_;
+  uint64_t inv_;
+};
 
 // Arithmetic shift right = floor division by 2^s for any sign.
 constexpr int64_t asr(int64_t v, int s) { return v >> s; }

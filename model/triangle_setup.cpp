@@ -20,7 +20,8 @@ TriangleSetup::TriangleSetup(const Profile& profile) : profile_(profile), widths
 // Plane through the three vertex values, by barycentric weights of the edge functions:
 // P(Q) = (v0 E1(Q) + v1 E2(Q) + v2 E0(Q)) / area2, edge k opposite vertex k+2.
 PlaneSetup TriangleSetup::plane(const i128 value[3], const i128 edge_at_start[3], const int64_t step_x[3],
-                                const int64_t step_y[3], i128 area2, int reg_bits, const char* what) const {
+                                const int64_t step_y[3], const FloorDivider& by_area2, int reg_bits,
+                                const char* what) const {
   const int F = widths_.guard_bits;
   auto weighted = [&](auto edge) { return value[0] * edge(1) + value[1] * edge(2) + value[2] * edge(0); };
   const i128 start_num = weighted([&](int k) { return edge_at_start[k]; });
@@ -31,7 +32,7 @@ PlaneSetup TriangleSetup::plane(const i128 value[3], const i128 edge_at_start[3]
     const i128 dividend = num * (i128(1) << F);
     if (unsigned_bits(dividend < 0 ? -dividend : dividend) > widths_.divider_bits)
       throw WidthOverflow(std::string(what) + " dividend exceeds divider_bits");
-    return wrap_signed(floor_div(dividend, area2).quotient, reg_bits);
+    return wrap_signed(by_area2(dividend).quotient, reg_bits);
   };
   PlaneSetup p;
   p.start = quotient(start_num);
@@ -109,7 +110,8 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
     step_y[k] = e.step_y;
     if (e.step_x != 0) {
       const int64_t d = e.step_x < 0 ? -int64_t(e.step_x) : int64_t(e.step_x);
-      const FloorDiv q0 = floor_div(e.start, d), q1 = floor_div(e.step_y, d);
+      const FloorDivider by_d(d);  // one divide for both quotients
+      const FloorDiv q0 = by_d(e.start), q1 = by_d(e.step_y);
       e.span_quot = int64_t(q0.quotient);
       e.span_rem = int64_t(q0.remainder);
       e.span_step_quot = int64_t(q1.quotient);
@@ -121,14 +123,15 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
 
   // Planes: depth always, colour for Gouraud shading.
   const i128 z[3] = {v[0].z, v[1].z, v[2].z};
-  r.depth = plane(z, unbiased, step_x, step_y, area, w.z_reg_bits, "depth plane");
+  const FloorDivider by_area(area);
+  r.depth = plane(z, unbiased, step_x, step_y, by_area, w.z_reg_bits, "depth plane");
   if (profile_.shading == Shading::Gouraud) {
     const i128 red[3] = {v[0].color.r, v[1].color.r, v[2].color.r};
     const i128 green[3] = {v[0].color.g, v[1].color.g, v[2].color.g};
     const i128 blue[3] = {v[0].color.b, v[1].color.b, v[2].color.b};
-    r.color[0] = plane(red, unbiased, step_x, step_y, area, w.color_reg_bits, "red plane");
-    r.color[1] = plane(green, unbiased, step_x, step_y, area, w.color_reg_bits, "green plane");
-    r.color[2] = plane(blue, unbiased, step_x, step_y, area, w.color_reg_bits, "blue plane");
+    r.color[0] = plane(red, unbiased, step_x, step_y, by_area, w.color_reg_bits, "red plane");
+    r.color[1] = plane(green, unbiased, step_x, step_y, by_area, w.color_reg_bits, "green plane");
+    r.color[2] = plane(blue, unbiased, step_x, step_y, by_area, w.color_reg_bits, "blue plane");
   }
 }
 

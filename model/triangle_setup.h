@@ -90,7 +90,7 @@ class TriangleSetup {
 
  private:
   PlaneSetup plane(const i128 value[3], const i128 edge_at_start[3], const int64_t step_x[3],
-                   const int64_t step_y[3], i128 area2, int reg_bits, const char* what) const;
+                   const int64_t step_y[3], const FloorDivider& by_area2, int reg_bits, const char* what) const;
   Profile profile_;
   Widths widths_;
 };

@@ -166,6 +166,31 @@ TEST(FastPath, FloorDivisionAndBitCountsAgreeWithTheirDefinitions) {
   EXPECT_EQ(unsigned_bits((i128(1) << 64) - 1), 64);
 }
 
+// The setup's divider by a reciprocal (FloorDivider): equal to floor_div for every sign and size,
+// including divisors 1, powers of two (the reciprocal is then one short) and 2^64 - 1, dividends
+// up to 2^64 - 1 (the largest taken by multiplication) and beyond (taken by division).
+TEST(FastPath, ReciprocalFloorDivisionEqualsFloorDivision) {
+  std::mt19937_64 rng(13);
+  const uint64_t max64 = ~uint64_t(0);
+  std::vector<i128> divisors = {1, 2, 3, 7, i128(1) << 32, (i128(1) << 63) - 1, i128(1) << 63, i128(max64), i128(1) << 64};
+  for (int i = 0; i < 300; ++i) divisors.push_back(i128(rng() >> (rng() % 64)) + 1);
+  for (const i128 d : divisors) {
+    const FloorDivider divider(d);
+    std::vector<i128> dividends = {0, 1, -1, d, -d, d - 1, -(d - 1), d + 1, i128(max64), -i128(max64),
+                                   i128(max64) - 1, i128(1) << 64, -(i128(1) << 64), i128(1) << 70};
+    for (int i = 0; i < 200; ++i) {
+      const i128 n = i128(rng() >> (rng() % 64));
+      dividends.push_back(rng() % 2 ? n : -n);
+    }
+    for (const i128 n : dividends) {
+      const FloorDiv expected = floor_div(n, d), got = divider(n);
+      ASSERT_TRUE(got.quotient == expected.quotient && got.remainder == expected.remainder)
+          << to_string_i128(n) << " / " << to_string_i128(d);
+      ASSERT_TRUE(got.quotient * d + got.remainder == n && got.remainder >= 0 && got.remainder < d);
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(AllPaths, FastPath,
                          ::testing::Combine(::testing::Values(Traversal::BBox, Traversal::Span),
                                             ::testing::Values(DepthFunc::Less, DepthFunc::Equal, DepthFunc::GEqual,
