@@ -88,6 +88,16 @@ std::string format_value(double v) {
   return text;
 }
 
+// How curve s is drawn. gnuplot's colours repeat every 8 linetypes, so each further 8 curves take
+// another filled point shape (circle, square, triangles, diamond, pentagon), then dashes as well.
+std::string curve_style(size_t s) {
+  static const int shapes[] = {7, 5, 9, 11, 13, 15};
+  const size_t group = s / 8, n_shapes = sizeof shapes / sizeof shapes[0];
+  std::string style = "pointtype " + std::to_string(shapes[group % n_shapes]);
+  if (group >= n_shapes) style += " dashtype " + std::to_string(2 + (group / n_shapes - 1) % 4);
+  return style;
+}
+
 // The gnuplot script: one PNG per figure, the first axis along x, one line per combination of the
 // other axes' values. Data inline (datablocks), so the script alone redraws the plots.
 std::string gnuplot_script(const std::vector<SweepAxis>& axes, const std::vector<Point>& points, bool hw_cost,
@@ -119,9 +129,17 @@ std::string gnuplot_script(const std::vector<SweepAxis>& axes, const std::vector
     return xs[size_t(it - x_axis.values.begin())];
   };
 
+  // The key sits at the right in one column: 800 x 500 leaves the plot about 300 px beside entries
+  // of up to 34 characters and holds 20 entries; longer or more entries widen or heighten the
+  // canvas (about 9 px per character, 18 px per entry) rather than narrow the plot.
+  size_t longest_name = 0;
+  for (const std::string& name : series_names) longest_name = std::max(longest_name, name.size());
+  const size_t width = 800 + 9 * (std::max<size_t>(longest_name, 34) - 34);
+  const size_t height = std::max<size_t>(500, 140 + 18 * series_names.size());
+
   std::ostringstream gp;
   gp << "# Written by rastersim sweep: " << title << "\n";
-  gp << "set terminal pngcairo size 800,500 font ',11'\nset grid\nset key outside right top\n";
+  gp << "set terminal pngcairo size " << width << "," << height << " font ',11'\nset grid\nset key outside right top\n";
   gp << "set xlabel '" << x_axis.key << "' noenhanced\n";
   if (log_x) gp << "set logscale x\n";
   // A tic at every swept value, labelled as given.
@@ -145,7 +163,7 @@ std::string gnuplot_script(const std::vector<SweepAxis>& axes, const std::vector
     for (size_t s = 0; s < series_names.size(); ++s) {
       const std::string name = series_names[s].empty() ? ylabel : series_names[s];
       gp << (s ? ", " : "") << "$series" << s << " using " << (x_is_cycles ? "2" : "1") << ":" << column + 2
-         << " with linespoints pointtype 7 title '" << name << "' noenhanced";
+         << " with linespoints " << curve_style(s) << " title '" << name << "' noenhanced";
     }
     gp << "\n";
   };

@@ -5,7 +5,10 @@
 // render --backend systemc` against the model, with and without a memory stall pattern.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
+#include <set>
+#include <tuple>
 
 #include "cli_test_support.h"
 #include "reference.h"
@@ -74,6 +77,56 @@ TEST(CliSweep, EveryCombinationIsARowEqualToRenderAndPlotted) {
     EXPECT_EQ(plot.height, 500) << name;
   }
   EXPECT_TRUE(fs::exists(dir.path("study/sweep.gp")));
+}
+
+// The width of the plot's frame: the longest horizontal run of dark pixels (the frame's top and
+// bottom; the key's line samples are short, the grid is grey).
+int plot_frame_width(const Image& plot) {
+  int longest = 0;
+  for (int y = 0; y < plot.height; ++y) {
+    int run = 0;
+    for (int x = 0; x < plot.width; ++x) {
+      const uint8_t* px = &plot.pixels8[(size_t(y) * size_t(plot.width) + size_t(x)) * size_t(plot.channels)];
+      run = px[0] < 64 && px[1] < 64 && px[2] < 64 ? run + 1 : 0;
+      longest = std::max(longest, run);
+    }
+  }
+  return longest;
+}
+
+// Four axes: twelve curves with long names. gnuplot's colours repeat every 8 linetypes ("unless
+// explicitly defined"), so no two curves may share colour, point shape and dash; and the key at the
+// right must leave the plot about the 300 px the key of docs/studies.md's memory study leaves it.
+TEST(CliSweep, ManyLongNamedCurvesStayDistinctAndLeaveRoomForThePlot) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"sweep", "--scene", "overlap", "--width", "16", "--height", "8", "--vary",
+                                          "memory_latency=1,2,4", "--vary", "traversal=bbox,span", "--vary",
+                                          "subpixel_bits=2,4,8", "--vary", "memory_stall_percent=0,30", "--out", "many"});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  std::istringstream script(read_text(dir.path("many/sweep.gp")));
+  size_t plots = 0;
+  for (std::string line; std::getline(script, line);) {
+    if (line.rfind("plot ", 0) != 0) continue;
+    ++plots;
+    auto number_after = [](const std::string& element, const std::string& word, int absent) {
+      const size_t at = element.find(word + " ");
+      return at == std::string::npos ? absent : std::stoi(element.substr(at + word.size() + 1));
+    };
+    std::set<std::tuple<int, int, int>> styles;
+    size_t curves = 0;
+    for (size_t at = line.find("$series"); at != std::string::npos; at = line.find("$series", at + 1)) {
+      const std::string element = line.substr(at, line.find(" title '", at) - at);
+      EXPECT_FALSE(contains(element, "linetype") || contains(element, "linecolor")) << element;
+      styles.insert({std::stoi(element.substr(7)) % 8, number_after(element, "pointtype", 1),
+                     number_after(element, "dashtype", 1)});
+      ++curves;
+    }
+    EXPECT_EQ(curves, 12u) << line;
+    EXPECT_EQ(styles.size(), curves) << line;
+  }
+  EXPECT_GE(plots, 7u);
+  const Image plot = read_image(dir.path("many/cycles.png"));
+  EXPECT_GE(plot_frame_width(plot), 280) << plot.width << "x" << plot.height;
 }
 
 TEST(CliSweep, FewerGuardBitsThanDerivedShowAsDepthError) {
