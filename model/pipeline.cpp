@@ -1,5 +1,7 @@
 #include "pipeline.h"
 
+#include "zbuffer_avx512.h"
+
 #include <algorithm>
 
 namespace rastersim {
@@ -9,7 +11,12 @@ Pipeline::Pipeline(const Profile& profile)
       setup_(profile),
       walker_(profile, setup_.widths()),
       adders_(setup_.widths(), profile.z_bits, profile.shading == Shading::Gouraud),
-      zbuffer_(profile) {}
+      zbuffer_(profile) {
+#ifdef RASTERSIM_HAVE_AVX512_KERNEL
+  // The selected run kernel is the inline one, and it holds this profile's colour registers.
+  avx512_walk_ = zbuffer_.selected_run_kernel() == "avx512-masked" && avx512_masked_fits(adders_.run());
+#endif
+}
 
 void Pipeline::reset() {
   zbuffer_.clear();
@@ -21,7 +28,7 @@ void Pipeline::reset() {
 }
 
 // The walker's fragment output, wired to the z-buffer's input.
-template <bool Trace>
+template <bool Trace, bool Avx512>
 struct Pipeline::Glue {
   Pipeline& p;
   TriangleRecord& record;
@@ -44,6 +51,15 @@ struct Pipeline::Glue {
     p.zbuffer_.accept_run(address, cycle, n);
     int64_t passes;
     p.zbuffer_.prefetch_rows_below(address, n, 2);
+#ifdef RASTERSIM_HAVE_AVX512_KERNEL
+    if (Avx512) {  // every run, inlined
+      p.zbuffer_.prefetch_rows_below(address, n, 2);
+      record.depth_pass += p.zbuffer_.test_and_write_run(address, n, adders.run(), run_avx512_masked);
+      adders.step_x(n);
+      record.fragments += n;
+      return true;
+    }
+#endif
     if (n < p.zbuffer_.short_run_limit()) {
       const ZAdder values = adders;  // a local copy the compiler keeps in machine registers
       passes = p.zbuffer_.test_and_write_short_run(address, n, values);
@@ -59,9 +75,18 @@ struct Pipeline::Glue {
 
 template <bool Trace>
 int64_t Pipeline::walk(const SetupResult& s, int64_t load_cycle, TriangleRecord& record) {
-  Glue<Trace> glue{*this, record};
+  Glue<Trace, false> glue{*this, record};
   return walker_.walk(s, adders_, load_cycle, glue, walker_counters_);
 }
+
+#ifdef RASTERSIM_HAVE_AVX512_KERNEL
+// The untraced walk compiled for AVX-512 with the run kernel inlined (flatten): no call per row.
+RASTERSIM_AVX512 __attribute__((flatten)) int64_t Pipeline::walk_avx512(const SetupResult& s, int64_t load_cycle,
+                                                                         TriangleRecord& record) {
+  Glue<false, true> glue{*this, record};
+  return walker_.walk(s, adders_, load_cycle, glue, walker_counters_);
+}
+#endif
 
 void Pipeline::submit(const SnappedTriangle& tri) {
   TriangleRecord record;
@@ -89,7 +114,11 @@ void Pipeline::submit(const SnappedTriangle& tri) {
     stats_.setup.stall += record.walker_load - record.setup_done;
     setup_free_ = record.walker_load + 1;
     zbuffer_.begin_triangle(record.walker_load);  // the walker presents fragments after loading
-    record.walker_end = sink_ ? walk<true>(s, record.walker_load, record) : walk<false>(s, record.walker_load, record);
+    if (sink_) record.walker_end = walk<true>(s, record.walker_load, record);
+#ifdef RASTERSIM_HAVE_AVX512_KERNEL
+    else if (avx512_walk_) record.walker_end = walk_avx512(s, record.walker_load, record);
+#endif
+    else record.walker_end = walk<false>(s, record.walker_load, record);
     walker_free_ = record.walker_end + 1;
     if (record.fragments > 0) record.last_write = zbuffer_.last_busy_cycle();
     last_busy_ = std::max({last_busy_, record.walker_end, zbuffer_.last_busy_cycle()});

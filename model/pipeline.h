@@ -82,8 +82,10 @@ class Pipeline {
   const SetupResult& last_setup() const { return last_setup_; }
 
  private:
-  template <bool Trace>
+  template <bool Trace, bool Avx512>
   struct Glue;
+  int64_t walk_avx512(const SetupResult& s, int64_t load_cycle, TriangleRecord& record);
+  bool avx512_walk_ = false;  // untraced triangles take walk_avx512
   template <bool Trace>
   int64_t walk(const SetupResult& s, int64_t load_cycle, TriangleRecord& record);
 

@@ -118,6 +118,17 @@ class ZBuffer {
     return passes;
   }
   int64_t short_run_limit() const { return short_run_limit_; }
+  // The same with a kernel the caller names (inlined into the caller), for example the selected
+  // one's inline form (zbuffer_avx512.h) when selected_run_kernel() names it.
+  template <class Kernel>
+  int64_t test_and_write_run(uint32_t address, int64_t n, const ZAdder::Run& planes, Kernel kernel) {
+    const int64_t passes = kernel(memory_.depth_words() + address, memory_.color_words() + address, n, pass_mask_,
+                                  depth_write_, planes);
+    counters_.depth_pass += passes;
+    counters_.depth_fail += n - passes;
+    return passes;
+  }
+  const std::string& selected_run_kernel() const { return run_kernel_name_; }
 
   // The same for short runs, one fragment at a time (colours only for those that pass);
   // fragment i's values are values.depth_at(i) and values.color_at(i).
@@ -181,6 +192,7 @@ class ZBuffer {
   bool depth_write_;
   int latency_;
   RunKernel run_kernel_;
+  std::string run_kernel_name_;
   int64_t short_run_limit_;
   ZBufferMemory memory_;
   // The last L accepted fragments (a ring): the only ones that can still be in flight.
