@@ -3,38 +3,62 @@
 counts and nextpnr-ice40 Fmax per unit and for the top, at one profile. Run through
 scripts/hw-cost.sh; writes hw-cost.csv and hw-cost.json into --out.
 
-- Counts are those of the unit alone (synth_ice40, flattened).
+- Counts are those of the unit alone (synth_ice40, flattened), as it is in rtl/: no part of a
+  unit is cut out. yosys's `check` must report no problems (undriven nets, driver conflicts,
+  logic loops); a row where it does says UNRELIABLE in the note column.
 - Fmax is that of the unit inside a registered wrapper: every input comes from a shift register
   fed by one pin and every output is captured into a loadable shift register read out on one pin,
   so that no unit needs more pins than the package has and every timing path starts and ends at a
   flip-flop. The wrapper's own cells are placed too but not counted.
-- The z-buffer's frame memories (W x H depth and colour words and their written-bit maps) do
-  not fit any iCE40 at 640 x 480; with --memory external (auto: when they exceed the device's
-  block RAM) they become ports of the unit (an external synchronous SRAM) and the counts are
-  the logic around them; the in-flight ring stays inside. Known problem: the cut (yosys expose)
-  leaves some read-data nets undriven; such rows are marked UNRELIABLE in the note column.
+- The frame memory (W x H depth and colour words and their written-bit maps) is zbuffer_memory;
+  the z-buffer reaches it through its memory port. rastersim_core is the top without it (the
+  memory is an external SRAM on its mem_* ports); rastersim_top is the core with zbuffer_memory.
+  zbuffer_memory and rastersim_top are synthesized only when the frame memory fits the device's
+  block RAM (or with --synthesize-memory); otherwise their row says that it does not fit and
+  gives the memory's bits (14.7 Mbit at 640 x 480).
 - divider and plane_register have no profile parameters of their own: they are synthesized with
   the widths the profile gives the depth plane (the widest divider and plane register).
+- Results are kept per unit in the work folder (--work) with a key of the RTL sources, the
+  profile and the tool scripts: a second run with the same --work reuses them.
 """
 import argparse
 import csv
+import hashlib
 import json
 import os
 import re
 import subprocess
 import sys
 import tempfile
+import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-RTL = os.path.join(ROOT, "rtl")
-UNITS = ["divider", "plane_register", "triangle_setup", "scanline_walker", "z_adder", "zbuffer", "zbuffer_memory",
-         "rastersim_top"]
+RTL = os.path.join(ROOT, "rtl")  # --rtl-dir
+# What each unit's row covers (the "contents" column).
+UNITS = {
+    "divider": "one restoring divider at the depth plane's widths",
+    "plane_register": "one plane register at the depth plane's widths",
+    "triangle_setup": "setup unit",
+    "scanline_walker": "scanline walker",
+    "z_adder": "Z adder (depth and colour plane registers)",
+    "zbuffer": "z-buffer control and in-flight ring; frame memory outside (memory port)",
+    "zbuffer_memory": "frame memory on chip (depth/colour words; written bitmaps; read-back)",
+    "rastersim_core": "TOP WITHOUT FRAME MEMORY: setup + walker + Z adder + z-buffer; "
+                      "memory port to an external SRAM",
+    "rastersim_top": "TOP WITH FRAME MEMORY ON CHIP: rastersim_core + zbuffer_memory",
+}
 PROFILE_PARAMETERS = ["WIDTH", "HEIGHT", "SUBPIXEL_BITS", "Z_BITS", "Z_GUARD_BITS", "MAX_MEMORY_LATENCY"]
 DEVICES = {"hx8k": ("--hx8k", "ct256", 7680, 32), "up5k": ("--up5k", "sg48", 5280, 30), "hx1k": ("--hx1k", "tq144", 1280, 16)}
-MEMORY_UNITS = {"zbuffer_memory", "rastersim_top"}  # the frame memories sit in zbuffer_memory
-# The frame memories (yosys selection): depth and colour words and their written-bit maps; the
-# z-buffer's in-flight ring stays in the unit.
-FRAME_MEMORIES = "t:$mem_v2 r:MEMID=*_mem r:MEMID=*_written %u %i"
+BRAM_BITS = 4096  # SB_RAM40_4K
+MEMORY_UNITS = {"zbuffer_memory", "rastersim_top"}  # the units that hold the frame memory
+
+
+def frame_memory_bits(width, height, z_bits):
+    """zbuffer_memory's bits: W H depth (z_bits) and colour (24) words and two written-bit maps of
+    ceil(W H / 64) rows of 64 bits (rtl/zbuffer_memory.sv)."""
+    words = width * height
+    return words * (z_bits + 24) + 2 * ((words + 63) // 64) * 64
+
 
 # The units without profile parameters, at the widths the profile gives the depth plane.
 SHIMS = {
@@ -157,98 +181,165 @@ def cell_counts(stat_json, top):
     return luts, ffs, brams, carries
 
 
+def check_problems(log):
+    """The problems yosys's `check` passes found (undriven nets, conflicting drivers, logic loops):
+    their total and the first few warning lines."""
+    text = open(log).read()
+    total = sum(int(n) for n in re.findall(r"Found and reported (\d+) problems", text))
+    lines = [line for line in text.splitlines()
+             if line.startswith("Warning:") and ("no driver" in line or "conflict" in line or "logic loop" in line)]
+    return total, lines[:5]
+
+
+def cache_key(*parts):
+    """A digest of the RTL sources (names and contents) and the given texts (scripts, profile)."""
+    digest = hashlib.sha256()
+    for f in sorted(os.listdir(RTL)):
+        if f.endswith((".sv", ".vh")):
+            digest.update(f.encode() + b"\0" + open(os.path.join(RTL, f), "rb").read() + b"\0")
+    for part in parts:
+        digest.update(str(part).encode() + b"\0")
+    return digest.hexdigest()
+
+
+def cached(path, key, compute):
+    """compute()'s result, or the one stored in `path` under the same key (then said on stderr)."""
+    if os.path.exists(path):
+        stored = json.load(open(path))
+        if stored.get("key") == key:
+            print(f"hw-cost: reusing {path}", file=sys.stderr, flush=True)
+            return stored["result"]
+    result = compute()
+    with open(path, "w") as f:
+        json.dump({"key": key, "result": result}, f, indent=2)
+    return result
+
+
+def cost_unit(unit, args, profile, work):
+    """The row of one unit: counts, check problems, Fmax (or why none), tool times."""
+    device_flag, package, device_luts, device_brams = DEVICES[args.device]
+    read = ""
+    if unit in SHIMS:
+        top = "hwcost_" + unit
+        read = os.path.join(work, top + ".v")
+        with open(read, "w") as f:
+            f.write(SHIMS[unit])
+        parameters = dict(profile)
+    else:
+        top = unit
+        parameters = {p: profile[p] for p in module_parameters(unit)}
+    unit_dir = os.path.join(work, unit)
+    os.makedirs(unit_dir, exist_ok=True)
+    memory_bits = frame_memory_bits(profile["WIDTH"], profile["HEIGHT"], profile["Z_BITS"]) if unit in MEMORY_UNITS else 0
+    row = {"unit": unit, "contents": UNITS[unit], "device": args.device, **{p.lower(): v for p, v in profile.items()},
+           "memory_bits": memory_bits, "luts": None, "ffs": None, "brams": None, "carries": None,
+           "check_problems": None, "fmax_mhz": None, "note": "", "synth_s": None, "pnr_s": None}
+    memory_fits = memory_bits <= device_brams * BRAM_BITS
+    if not memory_fits and not args.synthesize_memory:
+        row["note"] = (f"not synthesized: does not fit {args.device} (frame memory {memory_bits} bits = "
+                       f"{memory_bits / 1e6:.1f} Mbit; block RAM {device_brams} x {BRAM_BITS} bits)")
+        return row
+
+    # Counts: synth_ice40 up to its `check` step (whose autoname pass alone takes longer than the
+    # synthesis of the full-size setup unit), then that step's checks and the statistics.
+    chparam = " ".join(f"-set {k} {v}" for k, v in parameters.items())
+    synth = (f"read_verilog -sv -I{RTL} {rtl_sources()} {read}\nchparam {chparam} {top}\nhierarchy -top {top}\n"
+             f"synth_ice40 -top {top} -run :check\nhierarchy -check\ncheck -noinit\n"
+             f"tee -q -o stat.json stat -json\n")
+
+    def synthesize():
+        start = time.monotonic()
+        yosys(synth, os.path.join(unit_dir, "synth.log"), unit_dir)
+        luts, ffs, brams, carries = cell_counts(os.path.join(unit_dir, "stat.json"), top)
+        problems, lines = check_problems(os.path.join(unit_dir, "synth.log"))
+        return {"luts": luts, "ffs": ffs, "brams": brams, "carries": carries, "check_problems": problems,
+                "problem_lines": lines, "synth_s": round(time.monotonic() - start)}
+    counts = cached(os.path.join(unit_dir, "synth.json"), cache_key(unit, read and SHIMS[unit], synth), synthesize)
+    row.update({k: v for k, v in counts.items() if k in row})
+    notes = []
+    if counts["check_problems"]:
+        notes.append(f"UNRELIABLE: yosys check found {counts['check_problems']} problems "
+                     f"({' | '.join(counts['problem_lines'])})")
+    if memory_bits:
+        notes.append("memory on chip" if memory_fits else "memory synthesized beyond the block RAM (--synthesize-memory)")
+    if not args.no_pnr:
+        if row["luts"] > device_luts or row["brams"] > device_brams:
+            lut_ratio, bram_ratio = row["luts"] / device_luts, row["brams"] / device_brams
+            what = "LUTs" if lut_ratio >= bram_ratio else "block RAMs"
+            notes.append(f"does not fit ({max(lut_ratio, bram_ratio):.1f} x the {args.device}'s {what}): "
+                         "no place and route")
+        else:
+            wrap = (f"read_verilog -sv -I{RTL} {rtl_sources()} {read} wrapper.v\n"
+                    f"hierarchy -top hwcost_wrapper\nsynth_ice40 -top hwcost_wrapper -json wrapped.json\n")
+            pnr = ["nextpnr-ice40", device_flag, "--package", package, "--json", "wrapped.json", "--freq", "100",
+                   "--timing-allow-fail", "--report", "pnr.json", "--seed", "1"]
+
+            def place_and_route():
+                start = time.monotonic()
+                ports = yosys_ports(unit_dir, top, read, parameters)
+                with open(os.path.join(unit_dir, "wrapper.v"), "w") as f:
+                    f.write(wrapper(top, parameters, ports))
+                result = {"fmax_mhz": None, "failure": ""}
+                try:
+                    yosys(wrap, os.path.join(unit_dir, "wrap.log"), unit_dir)
+                    run(pnr, os.path.join(unit_dir, "pnr.log"), unit_dir)
+                    fmax = json.load(open(os.path.join(unit_dir, "pnr.json")))["fmax"]
+                    result["fmax_mhz"] = round(min(v["achieved"] for v in fmax.values()), 1)
+                except RuntimeError as e:
+                    result["failure"] = "place and route failed: " + str(e).splitlines()[-1][:120]
+                result["pnr_s"] = round(time.monotonic() - start)
+                return result
+            placed = cached(os.path.join(unit_dir, "pnr-result.json"),
+                            cache_key(unit, read and SHIMS[unit], parameters, wrap, " ".join(pnr)), place_and_route)
+            row["fmax_mhz"], row["pnr_s"] = placed["fmax_mhz"], placed["pnr_s"]
+            if placed["failure"]:
+                notes.append(placed["failure"])
+    row["note"] = "; ".join(notes).replace(",", ";")  # scripts/performance.sh splits the CSV at commas
+    return row
+
+
 def main():
+    global RTL
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     defaults = {"WIDTH": 640, "HEIGHT": 480, "SUBPIXEL_BITS": 4, "Z_BITS": 24, "Z_GUARD_BITS": 0, "MAX_MEMORY_LATENCY": 64}
     for p in PROFILE_PARAMETERS:
         parser.add_argument("--" + p.lower().replace("_", "-"), type=int, default=defaults[p], dest=p)
     parser.add_argument("--device", choices=sorted(DEVICES), default="hx8k")
     parser.add_argument("--units", default=" ".join(UNITS), help="space-separated units (default: all)")
-    parser.add_argument("--memory", choices=["auto", "external", "on-chip"], default="auto",
-                        help="frame memories as ports (external SRAM) or in the unit; auto: external when "
-                             "they exceed the device's block RAM")
+    parser.add_argument("--synthesize-memory", action="store_true",
+                        help="synthesize zbuffer_memory and rastersim_top even when the frame memory exceeds the "
+                             "device's block RAM (small profiles only: yosys builds what does not map to block RAM "
+                             "from flip-flops)")
     parser.add_argument("--no-pnr", action="store_true", help="counts only, no nextpnr (no Fmax)")
+    parser.add_argument("--rtl-dir", default=RTL, help="RTL sources (default: the source tree's rtl/)")
     parser.add_argument("--out", default=".", help="folder for hw-cost.csv and hw-cost.json")
-    parser.add_argument("--work", default="", help="folder for the tools' files (default: a temporary one)")
+    parser.add_argument("--work", default="", help="folder for the tools' files and the per-unit results that a "
+                                                   "second run reuses (default: a new temporary one)")
     args = parser.parse_args()
+    RTL = os.path.abspath(args.rtl_dir)
     profile = {p: getattr(args, p) for p in PROFILE_PARAMETERS}
     units = args.units.split()
     for u in units:
         if u not in UNITS:
-            sys.exit(f"hw-cost: unknown unit '{u}' (units: {' '.join(UNITS)})")
-    device_flag, package, device_luts, device_brams = DEVICES[args.device]
-    work = args.work or tempfile.mkdtemp(prefix="rastersim-hw-cost-")
+            print(f"hw-cost: unknown unit '{u}' (units: {' '.join(UNITS)})", file=sys.stderr)
+            sys.exit(2)
+    work = os.path.abspath(args.work) if args.work else tempfile.mkdtemp(prefix="rastersim-hw-cost-")
     os.makedirs(work, exist_ok=True)
     os.makedirs(args.out, exist_ok=True)
 
     rows = []
     for unit in units:
         print(f"hw-cost: {unit} ...", file=sys.stderr, flush=True)
-        read = ""
-        if unit in SHIMS:
-            shim_name = "hwcost_" + unit
-            shim_path = os.path.join(work, shim_name + ".v")
-            with open(shim_path, "w") as f:
-                f.write(SHIMS[unit])
-            read = shim_path
-            top = shim_name
-            parameters = dict(profile)
-        else:
-            top = unit
-            parameters = {p: profile[p] for p in module_parameters(unit)}
-        unit_dir = os.path.join(work, unit)
-        os.makedirs(unit_dir, exist_ok=True)
-        chparam = " ".join(f"-set {k} {v}" for k, v in parameters.items())
-        memory_bits = profile["WIDTH"] * profile["HEIGHT"] * (profile["Z_BITS"] + 24 + 2)
-        external = unit in MEMORY_UNITS and (args.memory == "external" or
-                                             (args.memory == "auto" and memory_bits > device_brams * 4096))
-        # The unit alone: elaborate, make its memories ports when they cannot be on chip, synthesize.
-        prep = f"read_verilog -sv -I{RTL} {rtl_sources()} {read}\nchparam {chparam} {top}\nhierarchy -top {top}\n"
-        if external:
-            prep += ("proc\nflatten\nopt_clean\nmemory -nomap\n"
-                     f"expose -input {FRAME_MEMORIES} %co1 w:* %i\n"  # read data: now driven from outside
-                     f"expose {FRAME_MEMORIES} %ci1 w:* %i\n"         # address, write data, enables: outputs
-                     f"delete {FRAME_MEMORIES}\nopt_clean\n"
-                     f"rename {top} hwcost_unit\nwrite_verilog -noattr {unit_dir}/unit.v\n")
-            yosys(prep, os.path.join(unit_dir, "expose.log"), unit_dir)
-            top, read, parameters = "hwcost_unit", f"{unit_dir}/unit.v", {}
-            prep = f"read_verilog {read}\nhierarchy -top {top}\n"
-        synth = prep + f"synth_ice40 -top {top}\ntee -q -o stat.json stat -json\n"
-        yosys(synth, os.path.join(unit_dir, "synth.log"), unit_dir)
-        luts, ffs, brams, carries = cell_counts(os.path.join(unit_dir, "stat.json"), top)
-        row = {"unit": unit, "device": args.device, **{p.lower(): v for p, v in profile.items()},
-               "luts": luts, "ffs": ffs, "brams": brams, "carries": carries,
-               "memory": ("external port" if external else "on chip") if unit in MEMORY_UNITS else "", "fmax_mhz": None, "note": ""}
-
-        if external and "has no driver" in open(os.path.join(unit_dir, "synth.log.out")).read():
-            # Known problem: expose leaves some of the memories' read-data nets undriven, and
-            # synthesis then simplifies the logic behind them; these counts are not to be trusted.
-            row["note"] = "UNRELIABLE: the memory cut left undriven nets (see synth.log.out)"
-        if not args.no_pnr:
-            if luts > device_luts or brams > device_brams:
-                row["note"] = (row["note"] + "; " if row["note"] else "") + f"does not fit {args.device} ({device_luts} LUTs, {device_brams} BRAMs): no Fmax"
-            else:
-                ports = yosys_ports(unit_dir, top, read, parameters)
-                with open(os.path.join(unit_dir, "wrapper.v"), "w") as f:
-                    f.write(wrapper(top, parameters, ports))
-                wrap = (f"read_verilog -sv -I{RTL} {rtl_sources() if not external else ''} {read} wrapper.v\n"
-                        f"hierarchy -top hwcost_wrapper\nsynth_ice40 -top hwcost_wrapper -json wrapped.json\n")
-                yosys(wrap, os.path.join(unit_dir, "wrap.log"), unit_dir)
-                report = os.path.join(unit_dir, "pnr.json")
-                try:
-                    run(["nextpnr-ice40", device_flag, "--package", package, "--json", "wrapped.json", "--freq", "100",
-                         "--timing-allow-fail", "--report", report, "--seed", "1"],
-                        os.path.join(unit_dir, "pnr.log"), unit_dir)
-                    fmax = json.load(open(report))["fmax"]
-                    row["fmax_mhz"] = round(min(v["achieved"] for v in fmax.values()), 1)
-                except RuntimeError as e:
-                    row["note"] = "nextpnr failed: " + str(e).splitlines()[-1][:120]
+        row = cost_unit(unit, args, profile, work)
         rows.append(row)
-        print(f"hw-cost: {unit}: {luts} LUT, {ffs} FF, {brams} BRAM, Fmax {row['fmax_mhz']} MHz {row['note']}",
+        counts = (f"{row['luts']} LUT, {row['ffs']} FF, {row['brams']} BRAM, Fmax {row['fmax_mhz']} MHz, "
+                  f"yosys {row['synth_s']} s, wrapper + nextpnr {row['pnr_s']} s" if row["luts"] is not None else "")
+        print(f"hw-cost: {unit} [{row['contents']}]: {counts}{'; ' if counts and row['note'] else ''}{row['note']}",
               file=sys.stderr, flush=True)
 
     with open(os.path.join(args.out, "hw-cost.json"), "w") as f:
-        json.dump({"profile": profile, "device": args.device, "package": package, "units": rows}, f, indent=2)
+        json.dump({"profile": profile, "device": args.device, "package": DEVICES[args.device][1], "units": rows}, f,
+                  indent=2)
     with open(os.path.join(args.out, "hw-cost.csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         writer.writeheader()

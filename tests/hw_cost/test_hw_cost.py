@@ -1,0 +1,77 @@
+#!/usr/bin/env python3
+"""scripts/hw-cost.sh (scripts/hw_cost.py) at tiny profiles, counts only (no nextpnr): the frame
+memory is not synthesized where it cannot fit, a unit's row says UNRELIABLE when yosys's check
+finds an undriven net, and a second run reuses the per-unit results unless the RTL changed."""
+import csv
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SCRIPT = os.path.join(ROOT, "scripts", "hw-cost.sh")
+TINY = ["--width", "16", "--height", "8", "--max-memory-latency", "4", "--no-pnr"]
+
+
+def hw_cost(*args):
+    """(rows by unit, stderr) of one run."""
+    out = tempfile.mkdtemp(prefix="hw-cost-test-out-")
+    result = subprocess.run([SCRIPT, "--out", out, *args], capture_output=True, text=True)
+    if result.returncode != 0:
+        raise AssertionError(f"hw-cost.sh failed:\n{result.stderr}")
+    with open(os.path.join(out, "hw-cost.csv")) as f:
+        rows = {row["unit"]: row for row in csv.DictReader(f)}
+    shutil.rmtree(out)
+    return rows, result.stderr
+
+
+class HwCost(unittest.TestCase):
+    def setUp(self):
+        self.work = tempfile.mkdtemp(prefix="hw-cost-test-work-")
+
+    def tearDown(self):
+        shutil.rmtree(self.work)
+
+    def test_default_profile_frame_memory_is_not_synthesized(self):
+        rows, _ = hw_cost("--units", "zbuffer_memory rastersim_top", "--work", self.work)
+        # 640 x 480 words of 24 depth and 24 colour bits, two written bitmaps of 4800 rows of 64.
+        bits = 640 * 480 * (24 + 24) + 2 * 4800 * 64
+        for unit in ("zbuffer_memory", "rastersim_top"):
+            self.assertEqual(int(rows[unit]["memory_bits"]), bits)
+            self.assertEqual(rows[unit]["luts"], "")
+            self.assertIn("not synthesized: does not fit hx8k", rows[unit]["note"])
+        self.assertFalse(os.path.exists(os.path.join(self.work, "zbuffer_memory", "synth.log")))
+
+    def test_undriven_net_is_reported_and_results_are_reused_until_the_rtl_changes(self):
+        rows, _ = hw_cost(*TINY, "--units", "zbuffer", "--work", self.work)
+        clean = rows["zbuffer"]
+        self.assertEqual(clean["check_problems"], "0")
+        self.assertEqual(clean["note"], "")
+        self.assertGreater(int(clean["luts"]), 0)
+        self.assertEqual(clean["memory_bits"], "0")
+
+        again, stderr = hw_cost(*TINY, "--units", "zbuffer", "--work", self.work)
+        self.assertIn("reusing", stderr)
+        self.assertEqual(again["zbuffer"], clean)
+
+        # A copy of the RTL whose z-buffer leaves can_accept undriven.
+        rtl = os.path.join(self.work, "rtl")
+        shutil.copytree(os.path.join(ROOT, "rtl"), rtl)
+        path = os.path.join(rtl, "zbuffer.sv")
+        with open(path) as f:
+            text = f.read()
+        broken = text.replace("wire can_accept = mem_clear_done && !hazard;", "wire can_accept;")
+        self.assertNotEqual(broken, text)
+        with open(path, "w") as f:
+            f.write(broken)
+        rows, stderr = hw_cost(*TINY, "--units", "zbuffer", "--work", self.work, "--rtl-dir", rtl)
+        self.assertNotIn("reusing", stderr)
+        self.assertGreater(int(rows["zbuffer"]["check_problems"]), 0)
+        self.assertTrue(rows["zbuffer"]["note"].startswith("UNRELIABLE"), rows["zbuffer"]["note"])
+        self.assertIn("can_accept", rows["zbuffer"]["note"])
+
+
+if __name__ == "__main__":
+    unittest.main(argv=sys.argv[:1], verbosity=2)
