@@ -209,6 +209,11 @@ TEST(CliSystemc, SweepThroughSystemc) {
   EXPECT_GT(std::stoll(rows[1].at("cycles")), std::stoll(rows[0].at("cycles")));
   EXPECT_GT(std::stod(rows[1].at("stall_share")), std::stod(rows[0].at("stall_share")));
   EXPECT_EQ(rows[0].at("fragments"), rows[1].at("fragments"));
+  // Every figure of every point equals the model's (the model predicts the stalled cycles too).
+  const RunResult m = run_rastersim(dir, {"sweep", "--scene", "overlap", "--backend", "model", "--vary",
+                                          "memory_stall_percent=0,50", "--out", "m", "--no-plots"});
+  ASSERT_EQ(m.exit_code, 0) << m.out << m.err;
+  EXPECT_EQ(read_csv(dir.path("m/sweep.csv")), rows);
 }
 #endif
 
