@@ -60,6 +60,23 @@ def frame_memory_bits(width, height, z_bits):
     return words * (z_bits + 24) + 2 * ((words + 63) // 64) * 64
 
 
+# synth_ice40 of yosys 0.23 with its `coarse` step spelled out (the passes its log shows without
+# -dsp; tests/hw_cost checks that they are the same) and one change: `share` leaves memory reads ($memrd) alone. The z-buffer reads its
+# in-flight ring at every age (the hazard check); share enumerates the activation patterns of
+# those reads, 2^age of them (128 at latency 8; at latency 64 yosys used 17 GB and was killed),
+# and none of them can be merged since all are active in the same cycle. Other cells are shared as
+# by synth_ice40. `rest` is the label range after coarse: "map_ram:check" stops before the check
+# step (its autoname pass takes longer than synthesizing the full-size setup unit).
+def synth_ice40(top, rest, options=""):
+    return "\n".join([
+        f"synth_ice40 -top {top} -run :coarse",
+        "opt_expr", "opt_clean", "check", "opt -nodffe -nosdff", "fsm", "opt", "wreduce", "peepopt", "opt_clean",
+        "share t:$memrd %n",
+        "techmap -map +/cmp2lut.v -D LUT_WIDTH=4", "opt_expr", "opt_clean", "alumacc", "opt", "memory -nomap",
+        "opt_clean",
+        f"synth_ice40 -top {top} -run {rest} {options}".rstrip()]) + "\n"
+
+
 # The units without profile parameters, at the widths the profile gives the depth plane.
 SHIMS = {
     "divider": """
@@ -240,11 +257,10 @@ def cost_unit(unit, args, profile, work):
                        f"{memory_bits / 1e6:.1f} Mbit; block RAM {device_brams} x {BRAM_BITS} bits)")
         return row
 
-    # Counts: synth_ice40 up to its `check` step (whose autoname pass alone takes longer than the
-    # synthesis of the full-size setup unit), then that step's checks and the statistics.
+    # Counts: synth_ice40 up to its `check` step, then that step's checks and the statistics.
     chparam = " ".join(f"-set {k} {v}" for k, v in parameters.items())
     synth = (f"read_verilog -sv -I{RTL} {rtl_sources()} {read}\nchparam {chparam} {top}\nhierarchy -top {top}\n"
-             f"synth_ice40 -top {top} -run :check\nhierarchy -check\ncheck -noinit\n"
+             f"{synth_ice40(top, 'map_ram:check')}hierarchy -check\ncheck -noinit\n"
              f"tee -q -o stat.json stat -json\n")
 
     def synthesize():
@@ -270,7 +286,7 @@ def cost_unit(unit, args, profile, work):
                          "no place and route")
         else:
             wrap = (f"read_verilog -sv -I{RTL} {rtl_sources()} {read} wrapper.v\n"
-                    f"hierarchy -top hwcost_wrapper\nsynth_ice40 -top hwcost_wrapper -json wrapped.json\n")
+                    f"hierarchy -top hwcost_wrapper\n{synth_ice40('hwcost_wrapper', 'map_ram:', '-json wrapped.json')}")
             pnr = ["nextpnr-ice40", device_flag, "--package", package, "--json", "wrapped.json", "--freq", "100",
                    "--timing-allow-fail", "--report", "pnr.json", "--seed", "1"]
 

@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """scripts/hw-cost.sh (scripts/hw_cost.py) at tiny profiles, counts only (no nextpnr): the frame
 memory is not synthesized where it cannot fit, a unit's row says UNRELIABLE when yosys's check
-finds an undriven net, and a second run reuses the per-unit results unless the RTL changed."""
+finds an undriven net, a second run reuses the per-unit results unless the RTL changed, and the
+script's spelled-out synth_ice40 runs the same passes as yosys's own."""
 import csv
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -11,11 +13,14 @@ import tempfile
 import unittest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+import hw_cost  # noqa: E402  (scripts/ is not a package)
 SCRIPT = os.path.join(ROOT, "scripts", "hw-cost.sh")
 TINY = ["--width", "16", "--height", "8", "--max-memory-latency", "4", "--no-pnr"]
 
 
-def hw_cost(*args):
+def run_hw_cost(*args):
     """(rows by unit, stderr) of one run."""
     out = tempfile.mkdtemp(prefix="hw-cost-test-out-")
     result = subprocess.run([SCRIPT, "--out", out, *args], capture_output=True, text=True)
@@ -35,7 +40,7 @@ class HwCost(unittest.TestCase):
         shutil.rmtree(self.work)
 
     def test_default_profile_frame_memory_is_not_synthesized(self):
-        rows, _ = hw_cost("--units", "zbuffer_memory rastersim_top", "--work", self.work)
+        rows, _ = run_hw_cost("--units", "zbuffer_memory rastersim_top", "--work", self.work)
         # 640 x 480 words of 24 depth and 24 colour bits, two written bitmaps of 4800 rows of 64.
         bits = 640 * 480 * (24 + 24) + 2 * 4800 * 64
         for unit in ("zbuffer_memory", "rastersim_top"):
@@ -45,14 +50,14 @@ class HwCost(unittest.TestCase):
         self.assertFalse(os.path.exists(os.path.join(self.work, "zbuffer_memory", "synth.log")))
 
     def test_undriven_net_is_reported_and_results_are_reused_until_the_rtl_changes(self):
-        rows, _ = hw_cost(*TINY, "--units", "zbuffer", "--work", self.work)
+        rows, _ = run_hw_cost(*TINY, "--units", "zbuffer", "--work", self.work)
         clean = rows["zbuffer"]
         self.assertEqual(clean["check_problems"], "0")
         self.assertEqual(clean["note"], "")
         self.assertGreater(int(clean["luts"]), 0)
         self.assertEqual(clean["memory_bits"], "0")
 
-        again, stderr = hw_cost(*TINY, "--units", "zbuffer", "--work", self.work)
+        again, stderr = run_hw_cost(*TINY, "--units", "zbuffer", "--work", self.work)
         self.assertIn("reusing", stderr)
         self.assertEqual(again["zbuffer"], clean)
 
@@ -66,11 +71,34 @@ class HwCost(unittest.TestCase):
         self.assertNotEqual(broken, text)
         with open(path, "w") as f:
             f.write(broken)
-        rows, stderr = hw_cost(*TINY, "--units", "zbuffer", "--work", self.work, "--rtl-dir", rtl)
+        rows, stderr = run_hw_cost(*TINY, "--units", "zbuffer", "--work", self.work, "--rtl-dir", rtl)
         self.assertNotIn("reusing", stderr)
         self.assertGreater(int(rows["zbuffer"]["check_problems"]), 0)
         self.assertTrue(rows["zbuffer"]["note"].startswith("UNRELIABLE"), rows["zbuffer"]["note"])
         self.assertIn("can_accept", rows["zbuffer"]["note"])
+
+    def test_spelled_out_synth_ice40_runs_the_same_passes_as_yosys(self):
+        """On a unit without memory reads (where the restricted share changes nothing), the script's
+        synth_ice40 and yosys's own run the same passes in the same order and give the same cells."""
+        rtl = os.path.join(ROOT, "rtl")
+        read = (f"read_verilog -sv -I{rtl} {os.path.join(rtl, 'plane_register.sv')} {os.path.join(rtl, 'z_adder.sv')}\n"
+                "chparam -set WIDTH 16 -set HEIGHT 8 -set Z_BITS 16 z_adder\nhierarchy -top z_adder\n")
+        results = []
+        for name, synth in (("yosys", "synth_ice40 -top z_adder -run :check\n"),
+                            ("script", hw_cost.synth_ice40("z_adder", "map_ram:check"))):
+            script, log = os.path.join(self.work, name + ".ys"), os.path.join(self.work, name + ".log")
+            with open(script, "w") as f:
+                f.write(read + synth + "stat\n")
+            subprocess.run(["yosys", "-q", "-l", log, "-s", script], check=True, capture_output=True)
+            with open(log) as f:
+                text = f.read()
+            passes = [p for p in re.findall(r"^[0-9.]+ Executing (.*)$", text, re.M) if p != "SYNTH_ICE40 pass."]
+            cells = re.findall(r"^ +(SB_\w+) +(\d+)$", text, re.M)
+            results.append((passes, cells))
+        self.assertIn("SHARE pass (SAT-based resource sharing).", results[0][0])
+        self.assertEqual(results[1][0], results[0][0])
+        self.assertTrue(results[0][1])
+        self.assertEqual(results[1][1], results[0][1])
 
 
 if __name__ == "__main__":
