@@ -208,6 +208,19 @@ def check_problems(log):
     return total, lines[:5]
 
 
+def pnr_failure(log, device, error):
+    """Why nextpnr failed: "does not fit" with its logic-cell utilisation when it ran out of cells
+    (a LUT and a flip-flop share a cell, so a unit under the LUT count can still overflow), else
+    its first error line."""
+    text = open(log).read() if os.path.exists(log) else error
+    used = re.search(r"ICESTORM_LC:\s*(\d+)/\s*(\d+)", text)
+    if "no BELs remaining" in text and used:
+        ratio = int(used.group(1)) / int(used.group(2))
+        return f"does not fit ({ratio:.1f} x the {device}'s logic cells; wrapper included): placement failed"
+    errors = [line for line in text.splitlines() if line.startswith("ERROR")]
+    return "place and route failed: " + (errors[0] if errors else error.splitlines()[-1])[:120]
+
+
 def cache_key(*parts):
     """A digest of the RTL sources (names and contents) and the given texts (scripts, profile)."""
     digest = hashlib.sha256()
@@ -247,14 +260,16 @@ def cost_unit(unit, args, profile, work):
         parameters = {p: profile[p] for p in module_parameters(unit)}
     unit_dir = os.path.join(work, unit)
     os.makedirs(unit_dir, exist_ok=True)
-    memory_bits = frame_memory_bits(profile["WIDTH"], profile["HEIGHT"], profile["Z_BITS"]) if unit in MEMORY_UNITS else 0
+    frame_bits = frame_memory_bits(profile["WIDTH"], profile["HEIGHT"], profile["Z_BITS"])
+    memory_bits = frame_bits if unit in MEMORY_UNITS else 0
     row = {"unit": unit, "contents": UNITS[unit], "device": args.device, **{p.lower(): v for p, v in profile.items()},
            "memory_bits": memory_bits, "luts": None, "ffs": None, "brams": None, "carries": None,
            "check_problems": None, "fmax_mhz": None, "note": "", "synth_s": None, "pnr_s": None}
     memory_fits = memory_bits <= device_brams * BRAM_BITS
     if not memory_fits and not args.synthesize_memory:
-        row["note"] = (f"not synthesized: does not fit {args.device} (frame memory {memory_bits} bits = "
-                       f"{memory_bits / 1e6:.1f} Mbit; block RAM {device_brams} x {BRAM_BITS} bits)")
+        row["note"] = (f"not synthesized: does not fit (frame memory {memory_bits} bits = "
+                       f"{memory_bits / (device_brams * BRAM_BITS):.1f} x the {args.device}'s block RAM of "
+                       f"{device_brams} x {BRAM_BITS} bits)")
         return row
 
     # Counts: synth_ice40 up to its `check` step, then that step's checks and the statistics.
@@ -277,7 +292,10 @@ def cost_unit(unit, args, profile, work):
         notes.append(f"UNRELIABLE: yosys check found {counts['check_problems']} problems "
                      f"({' | '.join(counts['problem_lines'])})")
     if memory_bits:
-        notes.append("memory on chip" if memory_fits else "memory synthesized beyond the block RAM (--synthesize-memory)")
+        notes.append("memory on chip" if memory_fits
+                     else "memory synthesized beyond the block RAM (--synthesize-memory)")
+    elif unit == "rastersim_core":
+        notes.append(f"frame memory ({frame_bits} bits) not included: external behind the memory port")
     if not args.no_pnr:
         if row["luts"] > device_luts or row["brams"] > device_brams:
             lut_ratio, bram_ratio = row["luts"] / device_luts, row["brams"] / device_brams
@@ -302,7 +320,7 @@ def cost_unit(unit, args, profile, work):
                     fmax = json.load(open(os.path.join(unit_dir, "pnr.json")))["fmax"]
                     result["fmax_mhz"] = round(min(v["achieved"] for v in fmax.values()), 1)
                 except RuntimeError as e:
-                    result["failure"] = "place and route failed: " + str(e).splitlines()[-1][:120]
+                    result["failure"] = pnr_failure(os.path.join(unit_dir, "pnr.log"), args.device, str(e))
                 result["pnr_s"] = round(time.monotonic() - start)
                 return result
             placed = cached(os.path.join(unit_dir, "pnr-result.json"),

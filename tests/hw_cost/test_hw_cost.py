@@ -46,7 +46,8 @@ class HwCost(unittest.TestCase):
         for unit in ("zbuffer_memory", "rastersim_top"):
             self.assertEqual(int(rows[unit]["memory_bits"]), bits)
             self.assertEqual(rows[unit]["luts"], "")
-            self.assertIn("not synthesized: does not fit hx8k", rows[unit]["note"])
+            self.assertIn("not synthesized: does not fit (frame memory 15360000 bits = 117.2 x the hx8k's block RAM",
+                          rows[unit]["note"])
         self.assertFalse(os.path.exists(os.path.join(self.work, "zbuffer_memory", "synth.log")))
 
     def test_undriven_net_is_reported_and_results_are_reused_until_the_rtl_changes(self):
@@ -76,6 +77,19 @@ class HwCost(unittest.TestCase):
         self.assertGreater(int(rows["zbuffer"]["check_problems"]), 0)
         self.assertTrue(rows["zbuffer"]["note"].startswith("UNRELIABLE"), rows["zbuffer"]["note"])
         self.assertIn("can_accept", rows["zbuffer"]["note"])
+
+    def test_nextpnr_out_of_cells_reads_as_does_not_fit(self):
+        log = os.path.join(self.work, "pnr.log")
+        with open(log, "w") as f:
+            f.write("Info: Device utilisation:\nInfo: \t         ICESTORM_LC: 10459/ 7680   136%\n"
+                    "ERROR: Unable to place cell 'x', no BELs remaining to implement cell type 'ICESTORM_LC'\n"
+                    "1 warning, 1 error\n")
+        self.assertEqual(hw_cost.pnr_failure(log, "hx8k", "nextpnr-ice40 failed"),
+                         "does not fit (1.4 x the hx8k's logic cells; wrapper included): placement failed")
+        with open(log, "w") as f:
+            f.write("Info: reading\nERROR: something else\n1 error\n")
+        self.assertEqual(hw_cost.pnr_failure(log, "hx8k", "nextpnr-ice40 failed"),
+                         "place and route failed: ERROR: something else")
 
     def test_spelled_out_synth_ice40_runs_the_same_passes_as_yosys(self):
         """On a unit without memory reads (where the restricted share changes nothing), the script's
