@@ -53,7 +53,6 @@ struct Pipeline::Glue {
     p.zbuffer_.prefetch_rows_below(address, n, 2);
 #ifdef RASTERSIM_HAVE_AVX512_KERNEL
     if (Avx512) {  // every run, inlined
-      p.zbuffer_.prefetch_rows_below(address, n, 2);
       record.depth_pass += p.zbuffer_.test_and_write_run(address, n, adders.run(), run_avx512_masked);
       adders.step_x(n);
       record.fragments += n;

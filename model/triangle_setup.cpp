@@ -44,8 +44,9 @@ PlaneSetup TriangleSetup::plane(const i128 value[3], const i128 edge_at_start[3]
 void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
   const Widths& w = widths_;
   const int S = profile_.subpixel_bits;
-  // Every field of a drawn triangle's record is written below; a rejected one's record is a fresh
-  // one with what was decided (without clearing the whole record for every triangle).
+  // Every field of a drawn triangle's record is written below (the colour planes only with Gouraud
+  // shading; otherwise they keep a fresh record's zeros); a rejected one's record is a fresh one with
+  // what was decided. So the record is not cleared for every triangle.
   auto reject = [&r](SetupStatus status) {
     SetupResult fresh;
     fresh.status = status;
