@@ -66,7 +66,7 @@ std::string settings_summary(const Profile& p) {
   std::ostringstream s;
   s << to_string(p.traversal) << ", " << to_string(p.shading) << ", depth " << to_string(p.depth_func)
     << (p.depth_write ? "" : " no-write") << ", clear " << p.depth_clear_value() << ", cull " << to_string(p.cull)
-    << " " << to_string(p.front_face) << ", latency " << p.memory_latency;
+    << " " << to_string(p.front_face) << ", latency " << p.memory_latency << ", setup FIFO " << p.setup_fifo_depth;
   return s.str();
 }
 
@@ -114,7 +114,7 @@ CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
   cmd->add_flag("!--no-directed", o.directed, "skip the directed frames");
   cmd->add_flag("--fixed-settings", o.fixed_settings,
                 "random frames keep the profile's runtime settings (by default each frame draws depth_func, "
-                "depth_write, depth_clear, cull, front_face, traversal, shading and memory_latency, except the keys "
+                "depth_write, depth_clear, cull, front_face, traversal, shading, memory_latency and setup_fifo_depth, except the keys "
                 "set by a flag or the profile file)");
   cmd->add_option("--shard", o.shard, "run only frames k with k mod N = K - 1 (1 <= K <= N); the union of shards 1/N .. N/N is the whole run")
       ->type_name("K/N");

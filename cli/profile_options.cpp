@@ -36,6 +36,7 @@ std::string key_help(const std::string& key) {
       {"memory_latency", "z-buffer read latency in cycles, 1..64"},
       {"memory_stall_percent", "z-buffer memory back-pressure: share of cycles refusing reads, 0..90 (0 on chip)"},
       {"memory_stall_seed", "seed of the memory's stall pattern, 0..2^31-1"},
+      {"setup_fifo_depth", "setup records on their way to the walker (the record FIFO's depth), 1..16"},
   };
   auto it = help.find(key);
   return it == help.end() ? "profile key " + key : it->second;

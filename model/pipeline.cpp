@@ -11,7 +11,8 @@ Pipeline::Pipeline(const Profile& profile)
       setup_(profile),
       walker_(profile, setup_.widths()),
       adders_(setup_.widths(), profile.z_bits, profile.shading == Shading::Gouraud),
-      zbuffer_(profile) {
+      zbuffer_(profile),
+      credit_release_(size_t(profile.setup_fifo_depth), -1) {
 #ifdef RASTERSIM_HAVE_AVX512_KERNEL
   // The selected run kernel is the inline one, and it holds this profile's colour registers.
   avx512_walk_ = zbuffer_.selected_run_kernel() == "avx512-masked" && avx512_masked_fits(adders_.run());
@@ -24,6 +25,8 @@ void Pipeline::reset() {
   stats_ = {};
   next_index_ = 0;
   setup_free_ = walker_free_ = 0;
+  std::fill(credit_release_.begin(), credit_release_.end(), -1);
+  drawn_ = 0;
   last_busy_ = -1;
 }
 
@@ -93,25 +96,29 @@ void Pipeline::submit(const SnappedTriangle& tri) {
   setup_.run(tri, last_setup_);
   const SetupResult& s = last_setup_;
   record.status = s.status;
-  record.setup_accept = setup_free_;
+  // The unit accepts when it is free and one of the setup_fifo_depth record credits is: the credit
+  // of the drawn triangle setup_fifo_depth drawn triangles back returns the cycle after its load.
+  const int64_t credit_free = credit_release_[size_t(drawn_ % int64_t(credit_release_.size()))] + 1;
+  record.setup_accept = std::max(setup_free_, credit_free);
+  stats_.setup.stall += record.setup_accept - setup_free_;  // a triangle waits, the FIFO is full
   ++stats_.triangles;
   const int setup_cycles = setup_.cycles(s.status);
   stats_.setup.busy += setup_cycles;
   record.setup_done = record.setup_accept + setup_cycles - 1;
+  setup_free_ = record.setup_done + 1;
   if (s.status != SetupStatus::Drawn) {
     switch (s.status) {
       case SetupStatus::Degenerate: ++stats_.triangles_degenerate; break;
       case SetupStatus::Culled: ++stats_.triangles_culled; break;
       default: ++stats_.triangles_offscreen; break;
     }
-    setup_free_ = record.setup_done + 1;
     last_busy_ = std::max(last_busy_, record.setup_done);
   } else {
     ++stats_.triangles_drawn;
-    // The walker takes the record once the output is valid and the walker is free.
+    // The record leaves the output register at once (to the walker or into the FIFO); the walker
+    // takes it once it is valid, the walker is free and the records before it are taken.
     record.walker_load = std::max(record.setup_done, walker_free_);
-    stats_.setup.stall += record.walker_load - record.setup_done;
-    setup_free_ = record.walker_load + 1;
+    credit_release_[size_t(drawn_++ % int64_t(credit_release_.size()))] = record.walker_load;
     zbuffer_.begin_triangle(record.walker_load);  // the walker presents fragments after loading
     if (sink_) record.walker_end = walk<true>(s, record.walker_load, record);
 #ifdef RASTERSIM_HAVE_AVX512_KERNEL
@@ -120,7 +127,7 @@ void Pipeline::submit(const SnappedTriangle& tri) {
     else record.walker_end = walk<false>(s, record.walker_load, record);
     walker_free_ = record.walker_end + 1;
     if (record.fragments > 0) record.last_write = zbuffer_.last_busy_cycle();
-    last_busy_ = std::max({last_busy_, record.walker_end, zbuffer_.last_busy_cycle()});
+    last_busy_ = std::max({last_busy_, record.setup_done, record.walker_end, zbuffer_.last_busy_cycle()});
   }
   if (log_) log_->push_back(record);
 }

@@ -36,7 +36,7 @@ struct TriangleRecord {
   int64_t index = 0;
   SetupStatus status = SetupStatus::Degenerate;
   int64_t setup_accept = 0;    // cycle the setup unit accepted the triangle
-  int64_t setup_done = 0;      // cycle its output became valid (drawn) or its last cycle (rejected)
+  int64_t setup_done = 0;      // drawn: the cycle its record is in the output register; rejected: its decision cycle
   int64_t walker_load = -1;    // cycle the walker took the record (handshake), -1 if not drawn
   int64_t walker_end = -1;     // walker's last cycle on this triangle
   int64_t fragments = 0;
@@ -101,6 +101,10 @@ class Pipeline {
   FrameStats stats_;
   int64_t next_index_ = 0;
   int64_t setup_free_ = 0;       // first cycle the setup unit can accept
+  // Walker load cycles of the last setup_fifo_depth drawn triangles (a ring): a drawn triangle holds
+  // a record credit from its accept to its load, and the setup unit accepts only with a free credit.
+  std::vector<int64_t> credit_release_;
+  int64_t drawn_ = 0;            // drawn triangles so far (ring position)
   int64_t walker_free_ = 0;      // first cycle the walker can load
   int64_t last_busy_ = -1;       // last cycle any unit was busy
 };

@@ -16,6 +16,8 @@ enum class FrontFace { CCW, CW };
 enum class Traversal { BBox, Span };
 enum class Shading { Flat, Gouraud };
 
+constexpr int kMaxSetupFifoDepth = 16;  // the RTL's MAX_SETUP_FIFO_DEPTH default
+
 struct Profile {
   int width = 640;            // pixels, 1..4096
   int height = 480;           // pixels, 1..4096
@@ -34,6 +36,10 @@ struct Profile {
   // 0..90, in a pattern fixed by the seed (zbuffer_memory.h). 0: never (the on-chip memory).
   int memory_stall_percent = 0;
   int memory_stall_seed = 1;  // 0..2^31-1
+  // Setup records that may be on their way to the walker: accepted by the setup unit (and not
+  // rejected) but not yet loaded by the walker, 1..16. 1: the walker must take a record before the
+  // setup unit accepts the next triangle. docs/cycle-model.md.
+  int setup_fifo_depth = 1;
 
   uint32_t depth_max() const { return uint32_t((uint64_t(1) << z_bits) - 1); }
   uint32_t depth_clear_value() const { return depth_clear < 0 ? depth_max() : uint32_t(depth_clear); }

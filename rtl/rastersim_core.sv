@@ -13,7 +13,8 @@ module rastersim_core #(
   parameter integer SUBPIXEL_BITS = 4,
   parameter integer Z_BITS = 24,
   parameter integer Z_GUARD_BITS = 0,      // 0: derived (proven minimum)
-  parameter integer MAX_MEMORY_LATENCY = 64
+  parameter integer MAX_MEMORY_LATENCY = 64,
+  parameter integer MAX_SETUP_FIFO_DEPTH = 16  // record FIFO entries; cfg_setup_fifo_depth <= this
 ) (
   input  wire clk,
   input  wire rst,
@@ -24,6 +25,7 @@ module rastersim_core #(
   input  wire       cfg_traversal,         // 0 bbox, 1 span
   input  wire       cfg_shading,           // 0 flat, 1 gouraud
   input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,  // 1 .. MAX_MEMORY_LATENCY
+  input  wire [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] cfg_setup_fifo_depth,  // record credits, 1 .. MAX
   output wire frame_ready,
   // Triangle command: snapped vertices, x and y s(COORD_BITS-S).S, z uN, rgb {r, g, b}.
   input  wire cmd_valid,
@@ -35,8 +37,9 @@ module rastersim_core #(
   output wire trace_setup_decided,
   output wire [1:0] trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen
   output wire trace_setup_busy,
-  output wire trace_setup_stall,           // output valid, walker busy
-  output wire trace_walker_load,           // setup -> walker handshake
+  output wire trace_setup_stall,           // a triangle offered, the unit free, every record credit held
+  output wire trace_setup_done,            // a drawn triangle's record is in the setup output register
+  output wire trace_walker_load,           // record -> walker handshake
   output wire trace_walker_busy,
   output wire trace_walker_candidate,
   output wire trace_walker_last,
@@ -94,6 +97,7 @@ module rastersim_core #(
   localparam integer P_Z_BITS /*verilator public*/ = Z_BITS;
   localparam integer P_Z_GUARD_BITS /*verilator public*/ = Z_GUARD_BITS;
   localparam integer P_MAX_MEMORY_LATENCY /*verilator public*/ = MAX_MEMORY_LATENCY;
+  localparam integer P_MAX_SETUP_FIFO_DEPTH /*verilator public*/ = MAX_SETUP_FIFO_DEPTH;
   /* verilator lint_on UNUSEDPARAM */
 
   localparam integer EB = EDGE_BITS;
@@ -109,6 +113,7 @@ module rastersim_core #(
   reg depth_write_q, front_face_q, traversal_q, shading_q;
   reg [1:0] cull_q;
   reg [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] memory_latency_q;
+  reg [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] setup_fifo_depth_q;
   always @(posedge clk) begin
     if (rst) begin
       depth_func_q <= cfg_depth_func;
@@ -118,12 +123,82 @@ module rastersim_core #(
       traversal_q <= cfg_traversal;
       shading_q <= cfg_shading;
       memory_latency_q <= cfg_memory_latency;
+      setup_fifo_depth_q <= cfg_setup_fifo_depth;
     end
   end
 
-  // Setup -> walker record. Readable from C++ (public_flat_rd) so that the co-simulation compares
-  // the setup unit's outputs field by field when the walker takes them.
-  wire setup_valid, walker_ready;
+  // Setup record fields, in the order of the packed record below.
+  wire setup_valid;
+  wire [X_BITS-1:0] setup_x0, setup_x1;
+  wire [Y_BITS-1:0] setup_y0, setup_y1;
+  wire [3*EB-1:0]  setup_edge_start, setup_span_quot;
+  wire [3*SXB-1:0] setup_edge_step_x;
+  wire [3*SYB-1:0] setup_edge_step_y, setup_span_step_quot;
+  wire [3*RB-1:0]  setup_span_rem, setup_span_step_rem;
+  wire [ZRB-1:0]   setup_depth_start, setup_depth_step_x, setup_depth_step_y;
+  wire [3*CRB-1:0] setup_color_start, setup_color_step_x, setup_color_step_y;
+  wire [23:0]      setup_flat_rgb;
+  wire setup_ready;
+  wire decided_front_facing_unused;
+  wire [AREA_BITS-1:0] decided_area2_unused;
+
+  // Record credits (docs/cycle-model.md): a triangle holds one from its accept until it is rejected
+  // or its record is loaded by the walker; the setup unit accepts only while one is free.
+  localparam integer CREDIT_BITS = rs_ubits32(MAX_SETUP_FIFO_DEPTH);
+  reg [CREDIT_BITS-1:0] credits_held;
+  wire credit_free = credits_held < setup_fifo_depth_q;
+  wire accept = cmd_valid && cmd_ready;
+  wire rejected = trace_setup_decided && trace_setup_status != 2'd0;
+  always @(posedge clk) begin
+    if (rst) credits_held <= {CREDIT_BITS{1'b0}};
+    else credits_held <= credits_held + {{(CREDIT_BITS-1){1'b0}}, accept}
+                         - {{(CREDIT_BITS-1){1'b0}}, rejected} - {{(CREDIT_BITS-1){1'b0}}, trace_walker_load};
+  end
+
+  assign cmd_ready = setup_ready && frame_ready && credit_free;
+  assign trace_setup_stall = cmd_valid && setup_ready && frame_ready && !credit_free;
+  assign trace_setup_done = setup_valid;
+
+  triangle_setup #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
+                   .Z_GUARD_BITS(Z_GUARD_BITS)) setup (
+    .clk(clk), .rst(rst), .cfg_cull(cull_q), .cfg_front_face(front_face_q),
+    .in_valid(cmd_valid && frame_ready && credit_free), .in_ready(setup_ready),
+    .in_x({cmd_x2, cmd_x1, cmd_x0}), .in_y({cmd_y2, cmd_y1, cmd_y0}), .in_z({cmd_z2, cmd_z1, cmd_z0}),
+    .in_rgb({cmd_rgb2, cmd_rgb1, cmd_rgb0}),
+    .decided(trace_setup_decided), .decided_status(trace_setup_status),
+    .decided_front_facing(decided_front_facing_unused), .decided_area2(decided_area2_unused),
+    .busy(trace_setup_busy),
+    .out_valid(setup_valid),
+    .out_x0(setup_x0), .out_x1(setup_x1), .out_y0(setup_y0), .out_y1(setup_y1),
+    .out_edge_start(setup_edge_start), .out_edge_step_x(setup_edge_step_x), .out_edge_step_y(setup_edge_step_y),
+    .out_span_quot(setup_span_quot), .out_span_rem(setup_span_rem), .out_span_step_quot(setup_span_step_quot),
+    .out_span_step_rem(setup_span_step_rem),
+    .out_depth_start(setup_depth_start), .out_depth_step_x(setup_depth_step_x),
+    .out_depth_step_y(setup_depth_step_y),
+    .out_color_start(setup_color_start), .out_color_step_x(setup_color_step_x),
+    .out_color_step_y(setup_color_step_y),
+    .out_flat_rgb(setup_flat_rgb));
+
+  // Record FIFO: the output register's record goes to the walker directly when no earlier record
+  // waits and the walker takes it in that cycle, else into the FIFO (the credits leave it room).
+  localparam integer RECORD_BITS = 2 * X_BITS + 2 * Y_BITS + 6 * EB + 3 * SXB + 6 * SYB + 6 * RB + 3 * ZRB
+                                   + 9 * CRB + 24;
+  wire [RECORD_BITS-1:0] setup_record = {
+      setup_x0, setup_x1, setup_y0, setup_y1, setup_edge_start, setup_edge_step_x, setup_edge_step_y,
+      setup_span_quot, setup_span_rem, setup_span_step_quot, setup_span_step_rem,
+      setup_depth_start, setup_depth_step_x, setup_depth_step_y,
+      setup_color_start, setup_color_step_x, setup_color_step_y, setup_flat_rgb};
+  wire fifo_empty;
+  wire [RECORD_BITS-1:0] fifo_head;
+  wire walker_ready;
+  wire record_valid = !fifo_empty || setup_valid;
+  setup_fifo #(.WIDTH(RECORD_BITS), .DEPTH(MAX_SETUP_FIFO_DEPTH)) record_fifo (
+    .clk(clk), .rst(rst), .push(setup_valid && !(fifo_empty && walker_ready)), .push_data(setup_record),
+    .pop(!fifo_empty && walker_ready), .empty(fifo_empty), .head(fifo_head));
+  assign trace_walker_load = record_valid && walker_ready;
+
+  // The record the walker sees. Readable from C++ (public_flat_rd) so that the co-simulation
+  // compares the setup unit's outputs field by field when the walker takes them.
   wire [X_BITS-1:0] rec_x0 /*verilator public_flat_rd*/;
   wire [X_BITS-1:0] rec_x1 /*verilator public_flat_rd*/;
   wire [Y_BITS-1:0] rec_y0 /*verilator public_flat_rd*/;
@@ -142,32 +217,10 @@ module rastersim_core #(
   wire [3*CRB-1:0] rec_color_step_x /*verilator public_flat_rd*/;
   wire [3*CRB-1:0] rec_color_step_y /*verilator public_flat_rd*/;
   wire [23:0]      rec_flat_rgb /*verilator public_flat_rd*/;
-  wire setup_ready;
-  wire decided_front_facing_unused;
-  wire [AREA_BITS-1:0] decided_area2_unused;
-
-  assign cmd_ready = setup_ready && frame_ready;
-
-  triangle_setup #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
-                   .Z_GUARD_BITS(Z_GUARD_BITS)) setup (
-    .clk(clk), .rst(rst), .cfg_cull(cull_q), .cfg_front_face(front_face_q),
-    .in_valid(cmd_valid && frame_ready), .in_ready(setup_ready),
-    .in_x({cmd_x2, cmd_x1, cmd_x0}), .in_y({cmd_y2, cmd_y1, cmd_y0}), .in_z({cmd_z2, cmd_z1, cmd_z0}),
-    .in_rgb({cmd_rgb2, cmd_rgb1, cmd_rgb0}),
-    .decided(trace_setup_decided), .decided_status(trace_setup_status),
-    .decided_front_facing(decided_front_facing_unused), .decided_area2(decided_area2_unused),
-    .busy(trace_setup_busy),
-    .out_valid(setup_valid), .out_ready(walker_ready),
-    .out_x0(rec_x0), .out_x1(rec_x1), .out_y0(rec_y0), .out_y1(rec_y1),
-    .out_edge_start(rec_edge_start), .out_edge_step_x(rec_edge_step_x), .out_edge_step_y(rec_edge_step_y),
-    .out_span_quot(rec_span_quot), .out_span_rem(rec_span_rem), .out_span_step_quot(rec_span_step_quot),
-    .out_span_step_rem(rec_span_step_rem),
-    .out_depth_start(rec_depth_start), .out_depth_step_x(rec_depth_step_x), .out_depth_step_y(rec_depth_step_y),
-    .out_color_start(rec_color_start), .out_color_step_x(rec_color_step_x), .out_color_step_y(rec_color_step_y),
-    .out_flat_rgb(rec_flat_rgb));
-
-  assign trace_setup_stall = setup_valid && !walker_ready;
-  assign trace_walker_load = setup_valid && walker_ready;
+  assign {rec_x0, rec_x1, rec_y0, rec_y1, rec_edge_start, rec_edge_step_x, rec_edge_step_y,
+          rec_span_quot, rec_span_rem, rec_span_step_quot, rec_span_step_rem,
+          rec_depth_start, rec_depth_step_x, rec_depth_step_y,
+          rec_color_start, rec_color_step_x, rec_color_step_y, rec_flat_rgb} = fifo_empty ? setup_record : fifo_head;
 
   // Walker + Z adder -> z-buffer fragment.
   wire adder_load, adder_step_x, adder_next_row, adder_row_enter;
@@ -180,7 +233,7 @@ module rastersim_core #(
 
   scanline_walker #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS)) walker (
     .clk(clk), .rst(rst), .cfg_traversal(traversal_q),
-    .in_valid(setup_valid), .in_ready(walker_ready),
+    .in_valid(record_valid), .in_ready(walker_ready),
     .in_x0(rec_x0), .in_x1(rec_x1), .in_y0(rec_y0), .in_y1(rec_y1),
     .in_edge_start(rec_edge_start), .in_edge_step_x(rec_edge_step_x), .in_edge_step_y(rec_edge_step_y),
     .in_span_quot(rec_span_quot), .in_span_rem(rec_span_rem), .in_span_step_quot(rec_span_step_quot),

@@ -9,7 +9,8 @@ module rastersim_top #(
   parameter integer SUBPIXEL_BITS = 4,
   parameter integer Z_BITS = 24,
   parameter integer Z_GUARD_BITS = 0,      // 0: derived (proven minimum)
-  parameter integer MAX_MEMORY_LATENCY = 64
+  parameter integer MAX_MEMORY_LATENCY = 64,
+  parameter integer MAX_SETUP_FIFO_DEPTH = 16  // record FIFO entries; cfg_setup_fifo_depth <= this
 ) (
   input  wire clk,
   input  wire rst,
@@ -21,6 +22,7 @@ module rastersim_top #(
   input  wire       cfg_traversal,         // 0 bbox, 1 span
   input  wire       cfg_shading,           // 0 flat, 1 gouraud
   input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,  // 1 .. MAX_MEMORY_LATENCY
+  input  wire [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] cfg_setup_fifo_depth,  // record credits, 1 .. MAX
   output wire frame_ready,
   // Triangle command: snapped vertices, x and y s(COORD_BITS-S).S, z uN, rgb {r, g, b}.
   input  wire cmd_valid,
@@ -32,8 +34,9 @@ module rastersim_top #(
   output wire trace_setup_decided,
   output wire [1:0] trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen
   output wire trace_setup_busy,
-  output wire trace_setup_stall,           // output valid, walker busy
-  output wire trace_walker_load,           // setup -> walker handshake
+  output wire trace_setup_stall,           // a triangle offered, the unit free, every record credit held
+  output wire trace_setup_done,            // a drawn triangle's record is in the setup output register
+  output wire trace_walker_load,           // record -> walker handshake
   output wire trace_walker_busy,
   output wire trace_walker_candidate,
   output wire trace_walker_last,
@@ -60,15 +63,18 @@ module rastersim_top #(
   wire [23:0] mem_wr_rgb;
 
   rastersim_core #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
-                   .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY)) core (
+                   .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY),
+                   .MAX_SETUP_FIFO_DEPTH(MAX_SETUP_FIFO_DEPTH)) core (
     .clk(clk), .rst(rst), .cfg_depth_func(cfg_depth_func), .cfg_depth_write(cfg_depth_write),
     .cfg_cull(cfg_cull), .cfg_front_face(cfg_front_face), .cfg_traversal(cfg_traversal),
-    .cfg_shading(cfg_shading), .cfg_memory_latency(cfg_memory_latency), .frame_ready(frame_ready),
+    .cfg_shading(cfg_shading), .cfg_memory_latency(cfg_memory_latency),
+    .cfg_setup_fifo_depth(cfg_setup_fifo_depth), .frame_ready(frame_ready),
     .cmd_valid(cmd_valid), .cmd_ready(cmd_ready),
     .cmd_x0(cmd_x0), .cmd_y0(cmd_y0), .cmd_x1(cmd_x1), .cmd_y1(cmd_y1), .cmd_x2(cmd_x2), .cmd_y2(cmd_y2),
     .cmd_z0(cmd_z0), .cmd_z1(cmd_z1), .cmd_z2(cmd_z2), .cmd_rgb0(cmd_rgb0), .cmd_rgb1(cmd_rgb1), .cmd_rgb2(cmd_rgb2),
     .trace_setup_decided(trace_setup_decided), .trace_setup_status(trace_setup_status),
     .trace_setup_busy(trace_setup_busy), .trace_setup_stall(trace_setup_stall),
+    .trace_setup_done(trace_setup_done),
     .trace_walker_load(trace_walker_load), .trace_walker_busy(trace_walker_busy),
     .trace_walker_candidate(trace_walker_candidate), .trace_walker_last(trace_walker_last),
     .trace_frag_valid(trace_frag_valid), .trace_frag_ready(trace_frag_ready),

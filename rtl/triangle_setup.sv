@@ -5,7 +5,8 @@
 // Cycles (docs/cycle-model.md): accept in cycle a (IDLE, in_valid & in_ready); FRONT in a+1
 // decides (a rejected triangle ends there); a drawn one starts every divider at the end of a+1,
 // the dividers run DIVIDER_BITS cycles (a+2 .. a+DIVIDER_BITS+1), and the output is valid from
-// a+DIVIDER_BITS+2 = a + setup_cycles - 1 until the walker takes it (out_valid & out_ready).
+// a+DIVIDER_BITS+2 = a + setup_cycles - 1 (setup_done) for that one cycle, in which the core passes
+// it to the walker or into the record FIFO (rastersim_core.sv); the unit is free again after it.
 module triangle_setup #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
@@ -29,10 +30,10 @@ module triangle_setup #(
   output wire [1:0]  decided_status,
   output wire        decided_front_facing,
   output wire signed [rs_area_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] decided_area2,  // s.2S
-  output wire busy,   // accept, FRONT, DIVIDE, or OUT cycles (OUT while held counts as stall)
-  // Setup record of a drawn triangle (the model's SetupResult), edge k at [k*B +: B].
+  output wire busy,   // accept, FRONT, DIVIDE, or OUT cycles
+  // Setup record of a drawn triangle (the model's SetupResult), edge k at [k*B +: B], valid for
+  // the one cycle setup_done.
   output wire out_valid,
-  input  wire out_ready,
   output reg  [rs_ubits32(WIDTH - 1)-1:0]  out_x0,
   output reg  [rs_ubits32(WIDTH - 1)-1:0]  out_x1,
   output reg  [rs_ubits32(HEIGHT - 1)-1:0] out_y0,
@@ -327,7 +328,7 @@ module triangle_setup #(
           divide_left <= divide_left - 1'b1;
           if (divide_left == 1) state <= OUT;
         end
-        default: if (out_ready) state <= IDLE;  // OUT
+        default: state <= IDLE;  // OUT: the core takes the record
       endcase
     end
   end

@@ -9,6 +9,7 @@ packages=(
   verilator libsystemc-dev iverilog yosys
   libosmesa6-dev nextpnr-ice40 fpga-icestorm
   gnuplot-nox
+  glmark2-data  # the Stanford bunny (bunny.obj) for the real-mesh benchmark
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # yosys 0.23: `synth` and `check -assert` (no latches, no combinational loops, no undriven or
 # multiply driven nets) for every RTL unit and the top, at a small profile (16 x 8, S = 2,
-# N = 16, memory latency up to 4) so that the memories and multipliers synthesize quickly.
+# N = 16, memory latency up to 4, record FIFO of 2) so that the memories and multipliers synthesize quickly.
 # Usage: rtl-yosys.sh [unit ...]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 rtl="$root/rtl"
 units=("$@")
-[ ${#units[@]} -eq 0 ] && units=(divider plane_register triangle_setup scanline_walker z_adder zbuffer zbuffer_memory rastersim_top)
-declare -A values=([WIDTH]=16 [HEIGHT]=8 [SUBPIXEL_BITS]=2 [Z_BITS]=16 [MAX_MEMORY_LATENCY]=4)
+[ ${#units[@]} -eq 0 ] && units=(divider plane_register triangle_setup setup_fifo scanline_walker z_adder zbuffer zbuffer_memory rastersim_top)
+declare -A values=([WIDTH]=16 [HEIGHT]=8 [SUBPIXEL_BITS]=2 [Z_BITS]=16 [MAX_MEMORY_LATENCY]=4 [MAX_SETUP_FIFO_DEPTH]=2)
 status=0
 for top in "${units[@]}"; do
   chparam=""

@@ -56,7 +56,7 @@ struct TraceSample {
   bool cmd_valid = false, cmd_ready = false;
   bool setup_decided = false;
   int setup_status = 0;
-  bool setup_busy = false, setup_stall = false;
+  bool setup_busy = false, setup_stall = false, setup_done = false;
   bool walker_load = false, walker_busy = false, walker_candidate = false, walker_last = false;
   bool frag_valid = false, frag_ready = false;
   int frag_x = 0, frag_y = 0;
@@ -79,6 +79,7 @@ TraceSample sample_trace(const Ports& top) {
   s.setup_status = int(word(top.trace_setup_status));
   s.setup_busy = bit(top.trace_setup_busy);
   s.setup_stall = bit(top.trace_setup_stall);
+  s.setup_done = bit(top.trace_setup_done);
   s.walker_load = bit(top.trace_walker_load);
   s.walker_busy = bit(top.trace_walker_busy);
   s.walker_candidate = bit(top.trace_walker_candidate);
@@ -163,35 +164,38 @@ class TraceObserver {
   bool observe(int64_t cycle, const TraceSample& s, ReadRecord&& read_record) {
     FrameStats& stats = out_.stats;
     const bool submitting = next_ < total_;
+    // Triangles pass each stage in order: accept, decision, record in the output register (drawn
+    // ones), walker load.
     if (s.cmd_valid && s.cmd_ready) {
       TriangleRecord r;
       r.index = int64_t(next_);
       r.setup_accept = cycle;
       out_.triangles.push_back(r);
-      in_setup_ = int64_t(next_);
-      setup_output_seen_ = false;
+      undecided_.push_back(int64_t(next_));
       ++next_;
       ++stats.triangles;
     }
-    if (s.setup_decided && in_setup_ >= 0) {
-      TriangleRecord& r = out_.triangles[size_t(in_setup_)];
+    if (s.setup_decided && !undecided_.empty()) {
+      TriangleRecord& r = out_.triangles[size_t(undecided_.front())];
       r.status = SetupStatus(s.setup_status);
       switch (r.status) {
-        case SetupStatus::Drawn: ++stats.triangles_drawn; break;
+        case SetupStatus::Drawn: ++stats.triangles_drawn, in_setup_.push_back(r.index); break;
         case SetupStatus::Degenerate: ++stats.triangles_degenerate, r.setup_done = cycle; break;
         case SetupStatus::Culled: ++stats.triangles_culled, r.setup_done = cycle; break;
         case SetupStatus::Offscreen: ++stats.triangles_offscreen, r.setup_done = cycle; break;
       }
+      undecided_.pop_front();
     }
-    const bool setup_output_valid = s.setup_stall || s.walker_load;
-    if (setup_output_valid && !setup_output_seen_ && in_setup_ >= 0) {
-      out_.triangles[size_t(in_setup_)].setup_done = cycle;
-      setup_output_seen_ = true;
+    if (s.setup_done && !in_setup_.empty()) {
+      out_.triangles[size_t(in_setup_.front())].setup_done = cycle;
+      waiting_.push_back(in_setup_.front());
+      in_setup_.pop_front();
     }
-    if (s.walker_load && in_setup_ >= 0) {
-      out_.triangles[size_t(in_setup_)].walker_load = cycle;
-      out_.setups[size_t(in_setup_)] = read_record();
-      in_walker_ = in_setup_;
+    if (s.walker_load && !waiting_.empty()) {
+      in_walker_ = waiting_.front();
+      waiting_.pop_front();
+      out_.triangles[size_t(in_walker_)].walker_load = cycle;
+      out_.setups[size_t(in_walker_)] = read_record();
     }
     if (s.frag_valid && s.frag_ready) {
       Fragment f;
@@ -226,7 +230,7 @@ class TraceObserver {
     if (s.walker_last && in_walker_ >= 0) out_.triangles[size_t(in_walker_)].walker_end = cycle;
     if (s.walker_candidate) ++stats.candidates;
     const bool stall = s.frag_valid && !s.frag_ready;
-    stats.setup.busy += s.setup_busy && !s.setup_stall;
+    stats.setup.busy += s.setup_busy;
     stats.setup.stall += s.setup_stall;
     stats.walker.busy += s.walker_busy;
     stats.walker.stall += stall;
@@ -254,11 +258,12 @@ class TraceObserver {
   RtlResult& out_;
   size_t total_;
   size_t next_ = 0;            // next triangle to submit
-  int64_t in_setup_ = -1;      // triangle the setup unit holds
+  std::deque<int64_t> undecided_;  // accepted, not yet decided
+  std::deque<int64_t> in_setup_;   // drawn, record not yet in the output register
+  std::deque<int64_t> waiting_;    // record made, not yet loaded by the walker
   int64_t in_walker_ = -1;     // triangle the walker walks
   std::deque<size_t> in_flight_;  // fragments accepted by the z-buffer, awaiting their result
   int64_t last_busy_ = -1;
-  bool setup_output_seen_ = false;
   bool done_ = false;
 };
 

@@ -146,7 +146,8 @@ CosimCase random_case(const Profile& profile, uint64_t seed, int count) {
 
 const std::vector<std::string>& runtime_setting_keys() {
   static const std::vector<std::string> keys = {"depth_func", "depth_write", "depth_clear", "cull",
-                                                "front_face", "traversal",   "shading",     "memory_latency"};
+                                                "front_face", "traversal",   "shading",     "memory_latency",
+                                                "setup_fifo_depth"};
   return keys;
 }
 
@@ -166,6 +167,7 @@ Profile random_settings(const Profile& profile, uint64_t seed, const std::set<st
   const auto traversal = Traversal(uniform(0, 1));
   const auto shading = Shading(uniform(0, 1));
   const int latency = int(uniform(1, std::max(1, std::min(8, max_memory_latency))));
+  const int fifo_depth = int(uniform(0, 2) == 0 ? 1 : uniform(2, 4));  // 1 as often as not quite
   if (free("depth_func")) p.depth_func = depth_func;
   if (free("depth_write")) p.depth_write = depth_write;
   if (free("depth_clear")) p.depth_clear = depth_clear;
@@ -174,6 +176,7 @@ Profile random_settings(const Profile& profile, uint64_t seed, const std::set<st
   if (free("traversal")) p.traversal = traversal;
   if (free("shading")) p.shading = shading;
   if (free("memory_latency")) p.memory_latency = latency;
+  if (free("setup_fifo_depth")) p.setup_fifo_depth = fifo_depth;
   return p;
 }
 

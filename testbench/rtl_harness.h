@@ -25,6 +25,9 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
   using Core = CoreOf<V>;
   if (p.memory_stall_percent > 0)
     throw std::invalid_argument("rastersim_top's on-chip memory has no back-pressure (memory_stall_percent)");
+  if (p.setup_fifo_depth > int(Core::P_MAX_SETUP_FIFO_DEPTH))
+    throw std::invalid_argument("setup_fifo_depth " + std::to_string(p.setup_fifo_depth) +
+                                " exceeds the RTL's MAX_SETUP_FIFO_DEPTH " + std::to_string(int(Core::P_MAX_SETUP_FIFO_DEPTH)));
   const int coord_bits = Core::COORD_BITS, setup_cycles = Core::SETUP_CYCLES;
   auto context = std::make_unique<VerilatedContext>();
   context->randReset(2);
@@ -53,6 +56,7 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
   top->cfg_traversal = p.traversal == Traversal::Span;
   top->cfg_shading = p.shading == Shading::Gouraud;
   top->cfg_memory_latency = uint8_t(p.memory_latency);
+  top->cfg_setup_fifo_depth = uint8_t(p.setup_fifo_depth);
   top->cmd_valid = 0;
   top->readback_addr = 0;
   top->rst = 1;

@@ -44,6 +44,7 @@ TEST(ProfileValidate, EachKeyJustOutsideItsRangeIsRejectedByName) {
       {"z_guard_bits", [](Profile& p, int64_t v) { p.z_guard_bits = int(v); }, 0, 24},
       {"memory_latency", [](Profile& p, int64_t v) { p.memory_latency = int(v); }, 1, 64},
       {"memory_stall_percent", [](Profile& p, int64_t v) { p.memory_stall_percent = int(v); }, 0, 90},
+      {"setup_fifo_depth", [](Profile& p, int64_t v) { p.setup_fifo_depth = int(v); }, 1, 16},
   };
   for (const RangeKey& k : keys) {
     for (int64_t ok : {k.lo, k.hi}) {

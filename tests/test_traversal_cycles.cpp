@@ -201,58 +201,74 @@ TEST_P(CycleModel, OneTriangleCostsWhatTheRulesSay) {
 }
 
 // Many triangles with L = 1, where no hazard can occur (consecutive triangles' fragments are at
-// least two cycles apart): every record follows the documented hand-off chain.
+// least two cycles apart): every record follows the documented hand-off chain, for record FIFOs of
+// 1 to 4 credits. The accept cycle is found by brute force: the first cycle at or after the one the
+// unit is free in which fewer than setup_fifo_depth earlier triangles hold a credit (from the cycle
+// after their accept to their decision if rejected, to their walker load if drawn).
 TEST_P(CycleModel, HandOffChainOverAScene) {
-  Profile p = test::make_profile(80, 60, 4, GetParam(), 24);
-  p.memory_latency = 1;
-  const uint64_t seed = 7 + uint64_t(GetParam());
-  SCOPED_TRACE(::testing::Message() << describe(p) << " seed " << seed);
-  TriangleGen gen(p, seed);
-  Pipeline pipe(p);
-  const Widths& w = pipe.widths();
-  std::vector<TriangleRecord> records;
-  pipe.set_triangle_log(&records);
-  std::vector<SnappedTriangle> scene;
-  for (int n = 0; n < 300; ++n) scene.push_back(random_scene_triangle(gen, n));
-  for (const SnappedTriangle& t : scene) pipe.submit(t);
-  const FrameStats& stats = pipe.stats();
-  ASSERT_EQ(records.size(), scene.size());
-  const int64_t setup_cycles = 2 + w.divider_bits + 1;
-  int64_t accept = 0, walker_end_prev = -1, last_busy = -1, setup_busy = 0, setup_stall = 0, walker_busy = 0;
-  for (size_t n = 0; n < scene.size(); ++n) {
-    const TriangleRecord& r = records[n];
-    const SnappedTriangle& t = scene[n];
-    SCOPED_TRACE(::testing::Message() << "triangle " << n << " " << describe(t));
-    ASSERT_EQ(r.index, int64_t(n));
-    ASSERT_EQ(r.setup_accept, accept);
-    const bool drawn = reference::twice_area(t) != 0 && !reference::bounding_box(t, p).empty();
-    ASSERT_EQ(r.status == SetupStatus::Drawn, drawn);
-    if (!drawn) {
-      ASSERT_EQ(r.setup_done, accept + 1);
-      setup_busy += 2;
-      last_busy = std::max(last_busy, accept + 1);
-      accept += 2;
-      continue;
+  for (int depth = 1; depth <= 4; ++depth) {
+    Profile p = test::make_profile(80, 60, 4, GetParam(), 24);
+    p.memory_latency = 1;
+    p.setup_fifo_depth = depth;
+    const uint64_t seed = 7 + uint64_t(GetParam());
+    SCOPED_TRACE(::testing::Message() << describe(p) << " seed " << seed << " setup_fifo_depth " << depth);
+    TriangleGen gen(p, seed);
+    Pipeline pipe(p);
+    const Widths& w = pipe.widths();
+    std::vector<TriangleRecord> records;
+    pipe.set_triangle_log(&records);
+    std::vector<SnappedTriangle> scene;
+    for (int n = 0; n < 300; ++n) scene.push_back(random_scene_triangle(gen, n));
+    for (const SnappedTriangle& t : scene) pipe.submit(t);
+    const FrameStats& stats = pipe.stats();
+    ASSERT_EQ(records.size(), scene.size());
+    const int64_t setup_cycles = 2 + w.divider_bits + 1;
+    std::vector<std::pair<int64_t, int64_t>> credits;  // [first, last] cycle each triangle holds one
+    int64_t setup_free = 0, walker_end_prev = -1, last_busy = -1, setup_busy = 0, setup_stall = 0, walker_busy = 0;
+    for (size_t n = 0; n < scene.size(); ++n) {
+      const TriangleRecord& r = records[n];
+      const SnappedTriangle& t = scene[n];
+      SCOPED_TRACE(::testing::Message() << "triangle " << n << " " << describe(t));
+      int64_t accept = setup_free;
+      auto held = [&](int64_t c) {
+        return std::count_if(credits.begin(), credits.end(), [c](auto h) { return h.first <= c && c <= h.second; });
+      };
+      while (held(accept) >= depth) ++accept;
+      ASSERT_EQ(r.index, int64_t(n));
+      ASSERT_EQ(r.setup_accept, accept);
+      setup_stall += accept - setup_free;
+      const bool drawn = reference::twice_area(t) != 0 && !reference::bounding_box(t, p).empty();
+      ASSERT_EQ(r.status == SetupStatus::Drawn, drawn);
+      if (!drawn) {
+        ASSERT_EQ(r.setup_done, accept + 1);
+        setup_busy += 2;
+        last_busy = std::max(last_busy, accept + 1);
+        credits.push_back({accept + 1, accept + 1});
+        setup_free = accept + 2;
+        continue;
+      }
+      ASSERT_EQ(r.setup_done, accept + setup_cycles - 1);
+      const int64_t load = std::max(r.setup_done, walker_end_prev + 1);
+      ASSERT_EQ(r.walker_load, load);
+      const int64_t walker = expected_walker_cycles(t, p, w);
+      ASSERT_EQ(r.walker_end, load + walker - 1);
+      setup_busy += setup_cycles;
+      walker_busy += walker;
+      walker_end_prev = r.walker_end;
+      last_busy = std::max({last_busy, r.walker_end, r.last_write});
+      credits.push_back({accept + 1, load});
+      setup_free = r.setup_done + 1;
     }
-    ASSERT_EQ(r.setup_done, accept + setup_cycles - 1);
-    const int64_t load = std::max(r.setup_done, walker_end_prev + 1);
-    ASSERT_EQ(r.walker_load, load);
-    const int64_t walker = expected_walker_cycles(t, p, w);
-    ASSERT_EQ(r.walker_end, load + walker - 1);
-    setup_busy += setup_cycles;
-    setup_stall += load - r.setup_done;
-    walker_busy += walker;
-    walker_end_prev = r.walker_end;
-    last_busy = std::max({last_busy, r.walker_end, r.last_write});
-    accept = load + 1;
+    EXPECT_EQ(stats.setup.busy, setup_busy);
+    EXPECT_EQ(stats.setup.stall, setup_stall);
+    if (depth == 1) {
+      EXPECT_GT(setup_stall, 0);
+    }
+    EXPECT_EQ(stats.walker.busy, walker_busy);
+    EXPECT_EQ(stats.walker.stall, 0);
+    EXPECT_EQ(stats.zbuffer.stall, 0);
+    EXPECT_EQ(stats.cycles, last_busy + 1);
   }
-  EXPECT_EQ(stats.setup.busy, setup_busy);
-  EXPECT_EQ(stats.setup.stall, setup_stall);
-  EXPECT_GT(setup_stall, 0);
-  EXPECT_EQ(stats.walker.busy, walker_busy);
-  EXPECT_EQ(stats.walker.stall, 0);
-  EXPECT_EQ(stats.zbuffer.stall, 0);
-  EXPECT_EQ(stats.cycles, last_busy + 1);
 }
 
 // The memory's stall pattern (zbuffer_memory.h): one triangle has no hazards, so each covered pixel

@@ -72,10 +72,10 @@ int sc_main(int, char*[]) {
 
   sc_clock clk("clk", 10, SC_NS);
   sc_signal<bool> rst, frame_ready, cmd_valid, cmd_ready;
-  sc_signal<uint32_t> cfg_depth_func, cfg_cull, cfg_memory_latency;
+  sc_signal<uint32_t> cfg_depth_func, cfg_cull, cfg_memory_latency, cfg_setup_fifo_depth;
   sc_signal<bool> cfg_depth_write, cfg_front_face, cfg_traversal, cfg_shading;
   sc_signal<uint32_t> cmd[12];
-  sc_signal<bool> setup_decided, setup_busy, setup_stall, walker_load, walker_busy, walker_candidate, walker_last;
+  sc_signal<bool> setup_decided, setup_busy, setup_stall, setup_done, walker_load, walker_busy, walker_candidate, walker_last;
   sc_signal<bool> frag_valid, frag_ready, result_valid, result_pass, zbuffer_busy;
   sc_signal<uint32_t> setup_status, frag_x, frag_y, frag_z, frag_rgb;
   sc_signal<bool> mem_clear_done, mem_rd_valid, mem_rd_ready, mem_wr_depth_en, mem_wr_color_en;
@@ -89,18 +89,19 @@ int sc_main(int, char*[]) {
   cfg_traversal.write(profile.traversal == rastersim::Traversal::Span);
   cfg_shading.write(profile.shading == rastersim::Shading::Gouraud);
   cfg_memory_latency.write(uint32_t(profile.memory_latency));
+  cfg_setup_fifo_depth.write(uint32_t(profile.setup_fifo_depth));
 
   Vrastersim_sc core("core");
   core.clk(clk), core.rst(rst);
   core.cfg_depth_func(cfg_depth_func), core.cfg_depth_write(cfg_depth_write), core.cfg_cull(cfg_cull);
   core.cfg_front_face(cfg_front_face), core.cfg_traversal(cfg_traversal), core.cfg_shading(cfg_shading);
-  core.cfg_memory_latency(cfg_memory_latency);
+  core.cfg_memory_latency(cfg_memory_latency), core.cfg_setup_fifo_depth(cfg_setup_fifo_depth);
   core.frame_ready(frame_ready), core.cmd_valid(cmd_valid), core.cmd_ready(cmd_ready);
   core.cmd_x0(cmd[0]), core.cmd_y0(cmd[1]), core.cmd_x1(cmd[2]), core.cmd_y1(cmd[3]);
   core.cmd_x2(cmd[4]), core.cmd_y2(cmd[5]), core.cmd_z0(cmd[6]), core.cmd_z1(cmd[7]), core.cmd_z2(cmd[8]);
   core.cmd_rgb0(cmd[9]), core.cmd_rgb1(cmd[10]), core.cmd_rgb2(cmd[11]);
   core.trace_setup_decided(setup_decided), core.trace_setup_status(setup_status);
-  core.trace_setup_busy(setup_busy), core.trace_setup_stall(setup_stall);
+  core.trace_setup_busy(setup_busy), core.trace_setup_stall(setup_stall), core.trace_setup_done(setup_done);
   core.trace_walker_load(walker_load), core.trace_walker_busy(walker_busy);
   core.trace_walker_candidate(walker_candidate), core.trace_walker_last(walker_last);
   core.trace_frag_valid(frag_valid), core.trace_frag_ready(frag_ready);

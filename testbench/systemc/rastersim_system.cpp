@@ -47,6 +47,9 @@ std::string RastersimSystem::configuration_error(const Profile& p) {
   if (p.memory_latency > max_memory_latency())
     return "memory_latency " + std::to_string(p.memory_latency) + " exceeds the SystemC core's maximum " +
            std::to_string(max_memory_latency());
+  if (p.setup_fifo_depth > int(Core::P_MAX_SETUP_FIFO_DEPTH))
+    return "setup_fifo_depth " + std::to_string(p.setup_fifo_depth) + " exceeds the SystemC core's maximum " +
+           std::to_string(int(Core::P_MAX_SETUP_FIFO_DEPTH));
   return "";
 }
 
@@ -65,6 +68,7 @@ RastersimSystem::RastersimSystem(sc_core::sc_module_name name, int fifo_depth)
   core_.cfg_traversal(cfg_traversal_);
   core_.cfg_shading(cfg_shading_);
   core_.cfg_memory_latency(cfg_memory_latency_);
+  core_.cfg_setup_fifo_depth(cfg_setup_fifo_depth_);
   core_.frame_ready(frame_ready_);
   core_.cmd_valid(cmd_valid_);
   core_.cmd_ready(cmd_ready_);
@@ -76,6 +80,7 @@ RastersimSystem::RastersimSystem(sc_core::sc_module_name name, int fifo_depth)
   core_.trace_setup_status(trace_setup_status_);
   core_.trace_setup_busy(trace_setup_busy_);
   core_.trace_setup_stall(trace_setup_stall_);
+  core_.trace_setup_done(trace_setup_done_);
   core_.trace_walker_load(trace_walker_load_);
   core_.trace_walker_busy(trace_walker_busy_);
   core_.trace_walker_candidate(trace_walker_candidate_);
@@ -147,6 +152,7 @@ void RastersimSystem::host() {
     cfg_traversal_.write(p.traversal == Traversal::Span);
     cfg_shading_.write(p.shading == Shading::Gouraud);
     cfg_memory_latency_.write(uint32_t(p.memory_latency));
+    cfg_setup_fifo_depth_.write(uint32_t(p.setup_fifo_depth));
     rst_.write(true);
     for (int i = 0; i < kResetCycles; ++i) wait();
     // The memory dropped clear_done at the first reset edge; the frame starts when it rises again.

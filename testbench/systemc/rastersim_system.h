@@ -53,14 +53,14 @@ class RastersimSystem : public sc_core::sc_module {
   sc_core::sc_clock clk_;
   sc_core::sc_signal<bool> rst_;
   // Core configuration (sampled during reset).
-  sc_core::sc_signal<uint32_t> cfg_depth_func_, cfg_cull_, cfg_memory_latency_;
+  sc_core::sc_signal<uint32_t> cfg_depth_func_, cfg_cull_, cfg_memory_latency_, cfg_setup_fifo_depth_;
   sc_core::sc_signal<bool> cfg_depth_write_, cfg_front_face_, cfg_traversal_, cfg_shading_;
   // Command port.
   sc_core::sc_signal<bool> frame_ready_, cmd_valid_, cmd_ready_;
   sc_core::sc_signal<uint32_t> cmd_x0_, cmd_y0_, cmd_x1_, cmd_y1_, cmd_x2_, cmd_y2_;
   sc_core::sc_signal<uint32_t> cmd_z0_, cmd_z1_, cmd_z2_, cmd_rgb0_, cmd_rgb1_, cmd_rgb2_;
   // Trace ports.
-  sc_core::sc_signal<bool> trace_setup_decided_, trace_setup_busy_, trace_setup_stall_;
+  sc_core::sc_signal<bool> trace_setup_decided_, trace_setup_busy_, trace_setup_stall_, trace_setup_done_;
   sc_core::sc_signal<uint32_t> trace_setup_status_;
   sc_core::sc_signal<bool> trace_walker_load_, trace_walker_busy_, trace_walker_candidate_, trace_walker_last_;
   sc_core::sc_signal<bool> trace_frag_valid_, trace_frag_ready_, trace_result_valid_, trace_result_pass_;

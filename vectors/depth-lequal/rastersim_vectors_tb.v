@@ -25,6 +25,7 @@ module rastersim_vectors_tb;
   localparam integer Y_BITS = 4;
   localparam integer ADDR_BITS = 8;
   localparam integer LATENCY_BITS = 3;
+  localparam integer SETUP_FIFO_DEPTH = 1;  // cfg_setup_fifo_depth and MAX_SETUP_FIFO_DEPTH
   // The vectors.
   localparam integer TRIANGLES = 11;  // commands.hex, triangles.hex
   localparam integer DRAWN = 11;  // setup.hex
@@ -53,7 +54,7 @@ module rastersim_vectors_tb;
   reg [23:0] cmd_rgb0 = 0, cmd_rgb1 = 0, cmd_rgb2 = 0;
   reg [ADDR_BITS-1:0] readback_addr = 0;
   wire frame_ready, cmd_ready;
-  wire trace_setup_decided, trace_setup_busy, trace_setup_stall;
+  wire trace_setup_decided, trace_setup_busy, trace_setup_stall, trace_setup_done;
   wire [1:0] trace_setup_status;
   wire trace_walker_load, trace_walker_busy, trace_walker_candidate, trace_walker_last;
   wire trace_frag_valid, trace_frag_ready;
@@ -68,7 +69,8 @@ module rastersim_vectors_tb;
   // The pipeline under test: rastersim_top, or a port with the same parameters and ports.
   rastersim_top #(
     .WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
-    .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MEMORY_LATENCY)
+    .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MEMORY_LATENCY),
+    .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH)
   ) dut (
     .clk(clk), .rst(rst),
     // The profile's run-time keys, sampled while rst is high.
@@ -80,12 +82,14 @@ module rastersim_vectors_tb;
     .cfg_traversal(1'd1),  // span
     .cfg_shading(1'd1),  // gouraud
     .cfg_memory_latency(3'd5),
+    .cfg_setup_fifo_depth(1'd1),
     .frame_ready(frame_ready),
     .cmd_valid(cmd_valid), .cmd_ready(cmd_ready),
     .cmd_x0(cmd_x0), .cmd_y0(cmd_y0), .cmd_x1(cmd_x1), .cmd_y1(cmd_y1), .cmd_x2(cmd_x2), .cmd_y2(cmd_y2),
     .cmd_z0(cmd_z0), .cmd_z1(cmd_z1), .cmd_z2(cmd_z2), .cmd_rgb0(cmd_rgb0), .cmd_rgb1(cmd_rgb1), .cmd_rgb2(cmd_rgb2),
     .trace_setup_decided(trace_setup_decided), .trace_setup_status(trace_setup_status),
     .trace_setup_busy(trace_setup_busy), .trace_setup_stall(trace_setup_stall),
+    .trace_setup_done(trace_setup_done),
     .trace_walker_load(trace_walker_load), .trace_walker_busy(trace_walker_busy),
     .trace_walker_candidate(trace_walker_candidate), .trace_walker_last(trace_walker_last),
     .trace_frag_valid(trace_frag_valid), .trace_frag_ready(trace_frag_ready),
@@ -123,12 +127,13 @@ module rastersim_vectors_tb;
   reg [FRAGMENT_BITS-1:0] observed_fragment;
   reg [FRAME_BITS-1:0] observed_frame;
 
-  integer cycle, clear_wait, next_command, in_setup, in_walker, last_busy, i, t, d;
+  integer cycle, clear_wait, next_command, next_decided, n_done, n_loaded, in_setup, in_walker, last_busy, i, t, d;
+  integer drawn_tri [0:DRAWN_SLOTS-1];  // triangle index of each drawn triangle, in order
   integer seen_setup_count, seen_fragment_count, seen_result_count;
   integer n_triangles, n_drawn, n_degenerate, n_culled, n_offscreen, n_candidates, n_pass, n_fail;
   integer setup_busy, setup_stall, walker_busy, walker_stall, zbuffer_busy, zbuffer_stall;
   integer passed, failed, skipped, shown, hidden, events_failed;
-  reg submitting, busy, setup_output_seen, finished, word_ok;
+  reg submitting, busy, finished, word_ok;
   reg [8*64:1] context_text;
 
   // One field of one vector: prints the first SHOWN mismatches.
@@ -214,13 +219,14 @@ module rastersim_vectors_tb;
       seen_fragments[i] = {FRAGMENT_BITS{1'b1}};
       seen_fragment_tri[i] = -1;
     end
-    next_command = 0; in_setup = -1; in_walker = -1; last_busy = -1; clear_wait = 0; cycle = -1;
+    next_command = 0; next_decided = 0; n_done = 0; n_loaded = 0;
+    in_setup = -1; in_walker = -1; last_busy = -1; clear_wait = 0; cycle = -1;
     seen_setup_count = 0; seen_fragment_count = 0; seen_result_count = 0;
     n_triangles = 0; n_drawn = 0; n_degenerate = 0; n_culled = 0; n_offscreen = 0; n_candidates = 0;
     n_pass = 0; n_fail = 0; setup_busy = 0; setup_stall = 0; walker_busy = 0; walker_stall = 0;
     zbuffer_busy = 0; zbuffer_stall = 0;
     passed = 0; failed = 0; skipped = 0; shown = 0; hidden = 0; events_failed = 0;
-    setup_output_seen = 1'b0; finished = 1'b0; context_text = "";
+    finished = 1'b0; context_text = "";
 
     // Reset: rst high for four rising edges (the cfg_* inputs are sampled meanwhile).
     // Inputs change 1 ns after a rising edge and outputs are sampled at the falling edge, so that
@@ -247,25 +253,27 @@ module rastersim_vectors_tb;
         submitting = cmd_valid;
         if (cmd_valid && cmd_ready) begin
           seen_accept[next_command] = cycle;
-          in_setup = next_command;
-          setup_output_seen = 1'b0;
           next_command = next_command + 1;
           n_triangles = n_triangles + 1;
         end
-        if (trace_setup_decided && in_setup >= 0) begin
-          seen_status[in_setup] = trace_setup_status;
+        // Triangles pass each stage in order: decision, record made (drawn ones), walker load.
+        if (trace_setup_decided && next_decided < next_command) begin
+          seen_status[next_decided] = trace_setup_status;
           case (trace_setup_status)
-            2'd0: n_drawn = n_drawn + 1;
-            2'd1: begin n_degenerate = n_degenerate + 1; seen_done[in_setup] = cycle; end
-            2'd2: begin n_culled = n_culled + 1; seen_done[in_setup] = cycle; end
-            default: begin n_offscreen = n_offscreen + 1; seen_done[in_setup] = cycle; end
+            2'd0: begin if (n_drawn < DRAWN_SLOTS) drawn_tri[n_drawn] = next_decided; n_drawn = n_drawn + 1; end
+            2'd1: begin n_degenerate = n_degenerate + 1; seen_done[next_decided] = cycle; end
+            2'd2: begin n_culled = n_culled + 1; seen_done[next_decided] = cycle; end
+            default: begin n_offscreen = n_offscreen + 1; seen_done[next_decided] = cycle; end
           endcase
+          next_decided = next_decided + 1;
         end
-        if ((trace_setup_stall || trace_walker_load) && !setup_output_seen && in_setup >= 0) begin
-          seen_done[in_setup] = cycle;
-          setup_output_seen = 1'b1;
+        if (trace_setup_done && n_done < n_drawn && n_done < DRAWN_SLOTS) begin
+          seen_done[drawn_tri[n_done]] = cycle;
+          n_done = n_done + 1;
         end
-        if (trace_walker_load && in_setup >= 0) begin
+        if (trace_walker_load && n_loaded < n_done) begin
+          in_setup = drawn_tri[n_loaded];
+          n_loaded = n_loaded + 1;
           seen_load[in_setup] = cycle;
 `ifndef RS_NO_SETUP_RECORD
           if (seen_setup_count < DRAWN_SLOTS) begin
@@ -348,7 +356,7 @@ module rastersim_vectors_tb;
         end
         if (trace_walker_last && in_walker >= 0) seen_end[in_walker] = cycle;
         if (trace_walker_candidate) n_candidates = n_candidates + 1;
-        if (trace_setup_busy && !trace_setup_stall) setup_busy = setup_busy + 1;
+        if (trace_setup_busy) setup_busy = setup_busy + 1;
         if (trace_setup_stall) setup_stall = setup_stall + 1;
         if (trace_walker_busy) walker_busy = walker_busy + 1;
         if (trace_zbuffer_busy) zbuffer_busy = zbuffer_busy + 1;

@@ -1,0 +1,44 @@
+// Record FIFO between triangle_setup and scanline_walker (docs/cycle-model.md, "Record FIFO").
+// DEPTH entries of WIDTH bits; a record pushed in cycle c is at the head from c+1 when it is the
+// oldest. Push and pop may happen in the same cycle. The core's record credits guarantee that a
+// push never meets a full FIFO, so there is no full flag.
+module setup_fifo #(
+  parameter integer WIDTH = 8,
+  parameter integer DEPTH = 2
+) (
+  input  wire clk,
+  input  wire rst,
+  input  wire push,
+  input  wire [WIDTH-1:0] push_data,
+  input  wire pop,
+  output wire empty,
+  output wire [WIDTH-1:0] head
+);
+  localparam integer INDEX_BITS = DEPTH > 1 ? $clog2(DEPTH) : 1;
+  localparam integer COUNT_BITS = $clog2(DEPTH + 1);
+  localparam integer LAST_INDEX = DEPTH - 1;
+  localparam [INDEX_BITS-1:0] LAST = LAST_INDEX[INDEX_BITS-1:0];
+
+  reg [WIDTH-1:0] entries [0:DEPTH-1];
+  reg [INDEX_BITS-1:0] read_index, write_index;
+  reg [COUNT_BITS-1:0] count;
+
+  assign empty = count == {COUNT_BITS{1'b0}};
+  assign head = entries[read_index];
+
+  always @(posedge clk) begin
+    if (rst) begin
+      read_index <= {INDEX_BITS{1'b0}};
+      write_index <= {INDEX_BITS{1'b0}};
+      count <= {COUNT_BITS{1'b0}};
+    end else begin
+      if (push) write_index <= write_index == LAST ? {INDEX_BITS{1'b0}} : write_index + 1'b1;
+      if (pop) read_index <= read_index == LAST ? {INDEX_BITS{1'b0}} : read_index + 1'b1;
+      if (push && !pop) count <= count + 1'b1;
+      else if (pop && !push) count <= count - 1'b1;
+    end
+  end
+
+  // Storage (no reset: an entry is written before it is read).
+  always @(posedge clk) if (push) entries[write_index] <= push_data;
+endmodule
