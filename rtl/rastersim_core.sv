@@ -192,7 +192,7 @@ module rastersim_core #(
   wire [RECORD_BITS-1:0] fifo_head;
   wire walker_ready;
   wire record_valid = !fifo_empty || setup_valid;
-  setup_fifo #(.WIDTH(RECORD_BITS), .DEPTH(MAX_SETUP_FIFO_DEPTH)) record_fifo (
+  setup_fifo #(.RECORD_BITS(RECORD_BITS), .ENTRIES(MAX_SETUP_FIFO_DEPTH)) record_fifo (
     .clk(clk), .rst(rst), .push(setup_valid && !(fifo_empty && walker_ready)), .push_data(setup_record),
     .pop(!fifo_empty && walker_ready), .empty(fifo_empty), .head(fifo_head));
   assign trace_walker_load = record_valid && walker_ready;

@@ -1,25 +1,25 @@
 // Record FIFO between triangle_setup and scanline_walker (docs/cycle-model.md, "Record FIFO").
-// DEPTH entries of WIDTH bits; a record pushed in cycle c is at the head from c+1 when it is the
+// ENTRIES records of RECORD_BITS bits; a record pushed in cycle c is at the head from c+1 when it is the
 // oldest. Push and pop may happen in the same cycle. The core's record credits guarantee that a
 // push never meets a full FIFO, so there is no full flag.
 module setup_fifo #(
-  parameter integer WIDTH = 8,
-  parameter integer DEPTH = 2
+  parameter integer RECORD_BITS = 8,
+  parameter integer ENTRIES = 2
 ) (
   input  wire clk,
   input  wire rst,
   input  wire push,
-  input  wire [WIDTH-1:0] push_data,
+  input  wire [RECORD_BITS-1:0] push_data,
   input  wire pop,
   output wire empty,
-  output wire [WIDTH-1:0] head
+  output wire [RECORD_BITS-1:0] head
 );
-  localparam integer INDEX_BITS = DEPTH > 1 ? $clog2(DEPTH) : 1;
-  localparam integer COUNT_BITS = $clog2(DEPTH + 1);
-  localparam integer LAST_INDEX = DEPTH - 1;
+  localparam integer INDEX_BITS = ENTRIES > 1 ? $clog2(ENTRIES) : 1;
+  localparam integer COUNT_BITS = $clog2(ENTRIES + 1);
+  localparam integer LAST_INDEX = ENTRIES - 1;
   localparam [INDEX_BITS-1:0] LAST = LAST_INDEX[INDEX_BITS-1:0];
 
-  reg [WIDTH-1:0] entries [0:DEPTH-1];
+  reg [RECORD_BITS-1:0] entries [0:ENTRIES-1];
   reg [INDEX_BITS-1:0] read_index, write_index;
   reg [COUNT_BITS-1:0] count;
 
