@@ -9,19 +9,20 @@
 #include <algorithm>
 #include <cstdint>
 #include <deque>
+#include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "testbench/rtl_backend.h"
+#include "testbench/setup_record.h"
 
 namespace rastersim::rtl {
 
 inline uint32_t mask_bits(int64_t value, int bits) {
   return uint32_t(uint64_t(value) & ((uint64_t(1) << bits) - 1));
 }
-
-inline uint32_t pack_rgb(const Rgb& c) { return (uint32_t(c.r) << 16) | (uint32_t(c.g) << 8) | c.b; }
 
 // Drives one triangle on the command port: coordinates in two's complement of COORD_BITS.
 template <class Ports>
@@ -30,7 +31,7 @@ void drive_command(Ports& top, const SnappedTriangle& t, int coord_bits) {
   top.cmd_x1 = mask_bits(t.v[1].x, coord_bits), top.cmd_y1 = mask_bits(t.v[1].y, coord_bits);
   top.cmd_x2 = mask_bits(t.v[2].x, coord_bits), top.cmd_y2 = mask_bits(t.v[2].y, coord_bits);
   top.cmd_z0 = t.v[0].z, top.cmd_z1 = t.v[1].z, top.cmd_z2 = t.v[2].z;
-  top.cmd_rgb0 = pack_rgb(t.v[0].color), top.cmd_rgb1 = pack_rgb(t.v[1].color), top.cmd_rgb2 = pack_rgb(t.v[2].color);
+  top.cmd_rgb0 = rgb_word(t.v[0].color), top.cmd_rgb1 = rgb_word(t.v[1].color), top.cmd_rgb2 = rgb_word(t.v[2].color);
 }
 
 // A bound on the cycles a correct RTL can take: per triangle the setup, plus every candidate of
@@ -112,37 +113,48 @@ int64_t field_bits(const Wide& value, int lo, int width, bool is_signed) {
   return field_bits(v, 0, width, is_signed);
 }
 
-// The setup record on the setup -> walker wires of rastersim_core (rec_*, public_flat_rd); Core is
-// the verilated class of rastersim_core, which publishes the widths.
+// Calls `read(value)` with the value of rastersim_core's record wire `name` (rec_*).
+template <class Core, class Read>
+int64_t read_record_wire(const Core& t, const std::string& name, Read&& read) {
+  if (name == "rec_x0") return read(t.rec_x0);
+  if (name == "rec_x1") return read(t.rec_x1);
+  if (name == "rec_y0") return read(t.rec_y0);
+  if (name == "rec_y1") return read(t.rec_y1);
+  if (name == "rec_edge_start") return read(t.rec_edge_start);
+  if (name == "rec_edge_step_x") return read(t.rec_edge_step_x);
+  if (name == "rec_edge_step_y") return read(t.rec_edge_step_y);
+  if (name == "rec_span_quot") return read(t.rec_span_quot);
+  if (name == "rec_span_rem") return read(t.rec_span_rem);
+  if (name == "rec_span_step_quot") return read(t.rec_span_step_quot);
+  if (name == "rec_span_step_rem") return read(t.rec_span_step_rem);
+  if (name == "rec_depth_start") return read(t.rec_depth_start);
+  if (name == "rec_depth_step_x") return read(t.rec_depth_step_x);
+  if (name == "rec_depth_step_y") return read(t.rec_depth_step_y);
+  if (name == "rec_color_start") return read(t.rec_color_start);
+  if (name == "rec_color_step_x") return read(t.rec_color_step_x);
+  if (name == "rec_color_step_y") return read(t.rec_color_step_y);
+  if (name == "rec_flat_rgb") return read(t.rec_flat_rgb);
+  throw std::logic_error("rastersim_core has no record wire " + name);
+}
+
+// The setup record on the record wires of rastersim_core (rec_*, public_flat_rd), field by field
+// as setup_record.h lists them; Core is the verilated class of rastersim_core, which publishes
+// the profile it was built for.
 template <class Core>
 SetupResult read_setup_record(const Core& t, bool gouraud) {
+  static const Widths widths = derive_widths(int(Core::P_WIDTH), int(Core::P_HEIGHT), int(Core::P_SUBPIXEL_BITS),
+                                             int(Core::P_Z_BITS), int(Core::P_Z_GUARD_BITS));
+  static const std::vector<SetupRecordField> all = setup_record_fields(widths, true);
+  static const std::vector<SetupRecordField> flat = setup_record_fields(widths, false);
   SetupResult r;
   r.status = SetupStatus::Drawn;
-  r.x0 = int(t.rec_x0), r.x1 = int(t.rec_x1), r.y0 = int(t.rec_y0), r.y1 = int(t.rec_y1);
-  const int eb = Core::EDGE_BITS, sxb = Core::EDGE_STEP_X_BITS, syb = Core::EDGE_STEP_Y_BITS, rb = Core::SPAN_REM_BITS;
-  for (int k = 0; k < 3; ++k) {
-    EdgeSetup& e = r.edge[k];
-    e.start = field_bits(t.rec_edge_start, k * eb, eb, true);
-    e.step_x = field_bits(t.rec_edge_step_x, k * sxb, sxb, true);
-    e.step_y = field_bits(t.rec_edge_step_y, k * syb, syb, true);
-    e.span_quot = field_bits(t.rec_span_quot, k * eb, eb, true);
-    e.span_rem = field_bits(t.rec_span_rem, k * rb, rb, false);
-    e.span_step_quot = field_bits(t.rec_span_step_quot, k * syb, syb, true);
-    e.span_step_rem = field_bits(t.rec_span_step_rem, k * rb, rb, false);
+  for (const SetupRecordField& f : gouraud ? all : flat) {
+    f.set(r, read_record_wire(t, f.wire, [&f](const auto& value) {
+      const int lo = f.wire_lo < 0 ? 0 : f.wire_lo;
+      if constexpr (std::is_integral_v<std::decay_t<decltype(value)>>) return field_bits(uint64_t(value), lo, f.bits, f.is_signed);
+      else return field_bits(value, lo, f.bits, f.is_signed);
+    }));
   }
-  const int zrb = Core::Z_REG_BITS, crb = Core::COLOR_REG_BITS;
-  r.depth.start = field_bits(t.rec_depth_start, 0, zrb, true);
-  r.depth.step_x = field_bits(t.rec_depth_step_x, 0, zrb, true);
-  r.depth.step_y = field_bits(t.rec_depth_step_y, 0, zrb, true);
-  if (gouraud) {
-    for (int c = 0; c < 3; ++c) {
-      r.color[c].start = field_bits(t.rec_color_start, c * crb, crb, true);
-      r.color[c].step_x = field_bits(t.rec_color_step_x, c * crb, crb, true);
-      r.color[c].step_y = field_bits(t.rec_color_step_y, c * crb, crb, true);
-    }
-  }
-  const uint32_t flat = t.rec_flat_rgb;
-  r.flat_color = Rgb{uint8_t(flat >> 16), uint8_t(flat >> 8), uint8_t(flat)};
   return r;
 }
 

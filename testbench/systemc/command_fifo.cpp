@@ -7,7 +7,7 @@ namespace rastersim {
 std::ostream& operator<<(std::ostream& out, const SnappedTriangle& t) {
   for (int k = 0; k < 3; ++k)
     out << (k ? " " : "") << t.v[k].x << " " << t.v[k].y << " " << t.v[k].z << " #" << std::hex
-        << rtl::pack_rgb(t.v[k].color) << std::dec;
+        << rtl::rgb_word(t.v[k].color) << std::dec;
   return out;
 }
 

@@ -18,6 +18,7 @@
 #include "model/input_error.h"
 #include "model/widths.h"
 #include "testbench/rtl_backend.h"
+#include "testbench/setup_record.h"
 #include "testbench/vectors/package_text.h"
 #include "testbench/vectors/rtl_sources.h"
 
@@ -133,33 +134,8 @@ Layouts make_layouts(const Profile& p) {
   l.triangles.add("last_write", 32, true, std::string("cycle of its last depth-test result (write)") + none);
 
   l.setup.add("tri", 32, false, "triangle index (line of commands.hex)");
-  l.setup.add("x0", w.x_bits, false, "first candidate column (bounding box clipped to the screen)");
-  l.setup.add("x1", w.x_bits, false, "last candidate column");
-  l.setup.add("y0", w.y_bits, false, "first candidate row");
-  l.setup.add("y1", w.y_bits, false, "last candidate row");
-  for (int k = 0; k < 3; ++k) {
-    const std::string e = "edge" + std::to_string(k) + "_";
-    l.setup.add(e + "start", w.edge_bits, true, "edge function at the first candidate's centre, s.2S, biased");
-    l.setup.add(e + "step_x", w.edge_step_x_bits, true, "edge change per pixel in x, s.2S");
-    l.setup.add(e + "step_y", w.edge_step_y_bits, true, "edge change per pixel in y, s.2S");
-    l.setup.add(e + "span_quot", w.edge_bits, true, "span walker: floor(start / |step_x|)");
-    l.setup.add(e + "span_rem", w.span_rem_bits, false, "span walker: start mod |step_x|");
-    l.setup.add(e + "span_step_quot", w.edge_step_y_bits, true, "span walker: floor(step_y / |step_x|)");
-    l.setup.add(e + "span_step_rem", w.span_rem_bits, false, "span walker: step_y mod |step_x|");
-  }
-  const char* const plane = " plane register, s(N+1).F, wrapped";
-  l.setup.add("depth_start", w.z_reg_bits, true, std::string("depth") + plane + ", at the first candidate");
-  l.setup.add("depth_step_x", w.z_reg_bits, true, std::string("depth") + plane + ", per pixel in x");
-  l.setup.add("depth_step_y", w.z_reg_bits, true, std::string("depth") + plane + ", per pixel in y");
-  if (p.shading == Shading::Gouraud) {
-    for (const char* channel : {"red", "green", "blue"}) {
-      const std::string c = channel;
-      l.setup.add(c + "_start", w.color_reg_bits, true, c + " plane register, s9.F, at the first candidate");
-      l.setup.add(c + "_step_x", w.color_reg_bits, true, c + " plane register, s9.F, per pixel in x");
-      l.setup.add(c + "_step_y", w.color_reg_bits, true, c + " plane register, s9.F, per pixel in y");
-    }
-  }
-  l.setup.add("flat_rgb", 24, false, "provoking (first) vertex colour 0xRRGGBB");
+  for (const rtl::SetupRecordField& f : rtl::setup_record_fields(w, p.shading == Shading::Gouraud))
+    l.setup.add(f.name, f.bits, f.is_signed, f.meaning);
 
   l.fragments.add("tri", 32, false, "triangle index");
   l.fragments.add("cycle", 32, true, "cycle the z-buffer accepted it (frag_valid and frag_ready)");
@@ -221,7 +197,7 @@ std::string lines(const WordLayout& layout, const std::vector<std::vector<int64_
   return out;
 }
 
-uint32_t rgb_word(const Rgb& c) { return (uint32_t(c.r) << 16) | (uint32_t(c.g) << 8) | c.b; }
+using rtl::rgb_word;
 
 }  // namespace
 
@@ -235,6 +211,8 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   const rtl::RtlResult model = rtl::run_model(profile, tris);
   const Layouts layouts = make_layouts(profile);
   const Widths widths = derive_widths(profile);
+  const std::vector<rtl::SetupRecordField> record_fields =
+      rtl::setup_record_fields(widths, profile.shading == Shading::Gouraud);
 
   std::vector<std::vector<int64_t>> commands, triangles, setups, fragments, depth, color;
   for (const SnappedTriangle& t : tris) {
@@ -253,13 +231,8 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
     if (r.status != SetupStatus::Drawn) continue;
     ++drawn;
     const SetupResult& s = model.setups[i];
-    std::vector<int64_t> w = {int64_t(i), s.x0, s.x1, s.y0, s.y1};
-    for (const EdgeSetup& e : s.edge)
-      w.insert(w.end(), {e.start, e.step_x, e.step_y, e.span_quot, e.span_rem, e.span_step_quot, e.span_step_rem});
-    w.insert(w.end(), {s.depth.start, s.depth.step_x, s.depth.step_y});
-    if (profile.shading == Shading::Gouraud)
-      for (const PlaneSetup& c : s.color) w.insert(w.end(), {c.start, c.step_x, c.step_y});
-    w.push_back(rgb_word(s.flat_color));
+    std::vector<int64_t> w = {int64_t(i)};
+    for (const rtl::SetupRecordField& f : record_fields) w.push_back(f.get(s));
     setups.push_back(w);
   }
   for (const Fragment& f : model.fragments)

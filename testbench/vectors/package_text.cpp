@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "testbench/setup_record.h"
+
 namespace rastersim::vectors {
 namespace {
 
@@ -347,31 +349,9 @@ std::string testbench_text(const PackageFacts& k) {
     << "          if (seen_setup_count < DRAWN_SLOTS) begin\n"
     << "            observed_setup = {SETUP_BITS{1'b0}};\n";
   {
-    const int eb = w.edge_bits, sxb = w.edge_step_x_bits, syb = w.edge_step_y_bits, rb = w.span_rem_bits;
-    const int crb = w.color_reg_bits;
-    std::map<std::string, std::pair<std::string, int>> record = {
-        {"tri", {"in_setup", -1}},          {"x0", {"dut.core.rec_x0", -1}},
-        {"x1", {"dut.core.rec_x1", -1}},         {"y0", {"dut.core.rec_y0", -1}},
-        {"y1", {"dut.core.rec_y1", -1}},         {"depth_start", {"dut.core.rec_depth_start", -1}},
-        {"depth_step_x", {"dut.core.rec_depth_step_x", -1}}, {"depth_step_y", {"dut.core.rec_depth_step_y", -1}},
-        {"flat_rgb", {"dut.core.rec_flat_rgb", -1}}};
-    for (int e = 0; e < 3; ++e) {
-      const std::string n = "edge" + std::to_string(e) + "_";
-      record[n + "start"] = {"dut.core.rec_edge_start", e * eb};
-      record[n + "step_x"] = {"dut.core.rec_edge_step_x", e * sxb};
-      record[n + "step_y"] = {"dut.core.rec_edge_step_y", e * syb};
-      record[n + "span_quot"] = {"dut.core.rec_span_quot", e * eb};
-      record[n + "span_rem"] = {"dut.core.rec_span_rem", e * rb};
-      record[n + "span_step_quot"] = {"dut.core.rec_span_step_quot", e * syb};
-      record[n + "span_step_rem"] = {"dut.core.rec_span_step_rem", e * rb};
-    }
-    const char* const channels[] = {"red", "green", "blue"};
-    for (int c = 0; c < 3; ++c) {
-      const std::string n = channels[c];
-      record[n + "_start"] = {"dut.core.rec_color_start", c * crb};
-      record[n + "_step_x"] = {"dut.core.rec_color_step_x", c * crb};
-      record[n + "_step_y"] = {"dut.core.rec_color_step_y", c * crb};
-    }
+    std::map<std::string, std::pair<std::string, int>> record = {{"tri", {"in_setup", -1}}};
+    for (const rtl::SetupRecordField& f : rtl::setup_record_fields(w, p.shading == Shading::Gouraud))
+      record[f.name] = {"dut.core." + f.wire, f.wire_lo};
     for (const Field& f : l.setup.fields()) {
       const auto it = record.find(f.name);
       if (it == record.end()) throw std::logic_error("testbench: no RTL signal for setup field " + f.name);

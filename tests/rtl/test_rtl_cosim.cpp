@@ -186,7 +186,7 @@ TEST(RtlCompare, ReportsTheFirstDivergenceAsASentence) {
   setup.setups[drawn].depth.step_x = int64_t(setup.setups[drawn].depth.step_x) + 1;
   const Divergence s = compare(r.model, setup);
   EXPECT_EQ(s.unit, "triangle_setup");
-  EXPECT_EQ(s.field, "record depth.step_x");
+  EXPECT_EQ(s.field, "record depth_step_x");
   EXPECT_EQ(s.triangle, int64_t(drawn));
   EXPECT_EQ(s.cycle, r.model.triangles[drawn].walker_load);
 

@@ -1,0 +1,94 @@
+// The setup record's fields, defined once for C++: their order (rastersim_core's packed record and
+// a vector package's setup.hex word), names, widths, signedness and meaning, the rec_* wire of
+// rastersim_core that carries each (and the bit offset in it), and how each is read from and
+// written into a SetupResult. The co-simulation's comparison, the RTL harness's record reader and
+// the vector layout all walk this table.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "model/triangle_setup.h"
+#include "model/widths.h"
+
+namespace rastersim::rtl {
+
+struct SetupRecordField {
+  std::string name;     // as in setup.hex and the package README: "edge0_span_quot"
+  int bits;
+  bool is_signed;
+  std::string meaning;
+  std::string wire;     // rastersim_core wire: "rec_span_quot"
+  int wire_lo;          // bit offset of the field in the wire; -1: the wire is this field alone
+  std::function<int64_t(const SetupResult&)> get;
+  std::function<void(SetupResult&, int64_t)> set;
+};
+
+inline uint32_t rgb_word(const Rgb& c) { return (uint32_t(c.r) << 16) | (uint32_t(c.g) << 8) | c.b; }
+
+// The fields of a drawn triangle's record; the colour planes only with Gouraud shading (flat
+// shading leaves them zero in the model and does not compare them).
+inline std::vector<SetupRecordField> setup_record_fields(const Widths& w, bool gouraud) {
+  std::vector<SetupRecordField> f;
+  auto add = [&f](std::string name, int bits, bool is_signed, std::string meaning, std::string wire, int lo,
+                  std::function<int64_t(const SetupResult&)> get, std::function<void(SetupResult&, int64_t)> set) {
+    f.push_back({std::move(name), bits, is_signed, std::move(meaning), std::move(wire), lo, std::move(get),
+                 std::move(set)});
+  };
+  add("x0", w.x_bits, false, "first candidate column (bounding box clipped to the screen)", "rec_x0", -1,
+      [](const SetupResult& s) { return int64_t(s.x0); }, [](SetupResult& s, int64_t v) { s.x0 = int(v); });
+  add("x1", w.x_bits, false, "last candidate column", "rec_x1", -1,
+      [](const SetupResult& s) { return int64_t(s.x1); }, [](SetupResult& s, int64_t v) { s.x1 = int(v); });
+  add("y0", w.y_bits, false, "first candidate row", "rec_y0", -1,
+      [](const SetupResult& s) { return int64_t(s.y0); }, [](SetupResult& s, int64_t v) { s.y0 = int(v); });
+  add("y1", w.y_bits, false, "last candidate row", "rec_y1", -1,
+      [](const SetupResult& s) { return int64_t(s.y1); }, [](SetupResult& s, int64_t v) { s.y1 = int(v); });
+  for (int k = 0; k < 3; ++k) {
+    const std::string e = "edge" + std::to_string(k) + "_";
+    // One edge field: its member, width, meaning and wire.
+    auto edge = [&](const char* field, auto member, int bits, bool is_signed, const char* meaning, const char* wire) {
+      add(e + field, bits, is_signed, meaning, wire, k * bits,
+          [k, member](const SetupResult& s) { return int64_t(s.edge[k].*member); },
+          [k, member](SetupResult& s, int64_t v) { s.edge[k].*member = v; });
+    };
+    edge("start", &EdgeSetup::start, w.edge_bits, true, "edge function at the first candidate's centre, s.2S, biased",
+         "rec_edge_start");
+    edge("step_x", &EdgeSetup::step_x, w.edge_step_x_bits, true, "edge change per pixel in x, s.2S", "rec_edge_step_x");
+    edge("step_y", &EdgeSetup::step_y, w.edge_step_y_bits, true, "edge change per pixel in y, s.2S", "rec_edge_step_y");
+    edge("span_quot", &EdgeSetup::span_quot, w.edge_bits, true, "span walker: floor(start / |step_x|)", "rec_span_quot");
+    edge("span_rem", &EdgeSetup::span_rem, w.span_rem_bits, false, "span walker: start mod |step_x|", "rec_span_rem");
+    edge("span_step_quot", &EdgeSetup::span_step_quot, w.edge_step_y_bits, true,
+         "span walker: floor(step_y / |step_x|)", "rec_span_step_quot");
+    edge("span_step_rem", &EdgeSetup::span_step_rem, w.span_rem_bits, false, "span walker: step_y mod |step_x|",
+         "rec_span_step_rem");
+  }
+  // One plane's three fields; `plane` selects the plane in a record, `lo` is its offset in the wires.
+  auto plane = [&](const std::string& name, auto select, int bits, const std::string& format, const std::string& wire,
+                   int lo) {
+    const std::string register_text = name + " plane register, " + format;
+    add(name + "_start", bits, true, register_text + ", at the first candidate", wire + "_start", lo,
+        [select](const SetupResult& s) { return int64_t(select(s).start); },
+        [select](SetupResult& s, int64_t v) { select(s).start = v; });
+    add(name + "_step_x", bits, true, register_text + ", per pixel in x", wire + "_step_x", lo,
+        [select](const SetupResult& s) { return int64_t(select(s).step_x); },
+        [select](SetupResult& s, int64_t v) { select(s).step_x = v; });
+    add(name + "_step_y", bits, true, register_text + ", per pixel in y", wire + "_step_y", lo,
+        [select](const SetupResult& s) { return int64_t(select(s).step_y); },
+        [select](SetupResult& s, int64_t v) { select(s).step_y = v; });
+  };
+  plane("depth", [](auto& s) -> auto& { return s.depth; }, w.z_reg_bits, "s(N+1).F, wrapped", "rec_depth", -1);
+  if (gouraud) {
+    const char* const channels[] = {"red", "green", "blue"};
+    for (int c = 0; c < 3; ++c)
+      plane(channels[c], [c](auto& s) -> auto& { return s.color[c]; }, w.color_reg_bits, "s9.F", "rec_color",
+            c * w.color_reg_bits);
+  }
+  add("flat_rgb", 24, false, "provoking (first) vertex colour 0xRRGGBB", "rec_flat_rgb", -1,
+      [](const SetupResult& s) { return int64_t(rgb_word(s.flat_color)); },
+      [](SetupResult& s, int64_t v) { s.flat_color = Rgb{uint8_t(v >> 16), uint8_t(v >> 8), uint8_t(v)}; });
+  return f;
+}
+
+}  // namespace rastersim::rtl
