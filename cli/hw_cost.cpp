@@ -70,7 +70,8 @@ std::string hardware_parameters(const Profile& p) {
   return "WIDTH=" + std::to_string(p.width) + " HEIGHT=" + std::to_string(p.height) +
          " SUBPIXEL_BITS=" + std::to_string(p.subpixel_bits) + " Z_BITS=" + std::to_string(p.z_bits) +
          " Z_GUARD_BITS=" + std::to_string(p.z_guard_bits) + " MAX_MEMORY_LATENCY=" + std::to_string(p.memory_latency) +
-         " MAX_SETUP_FIFO_DEPTH=" + std::to_string(p.setup_fifo_depth);
+         " MAX_SETUP_FIFO_DEPTH=" + std::to_string(p.setup_fifo_depth) +
+         " SETUP_INTERVAL=" + std::to_string(p.setup_interval);
 }
 
 HardwareCost hardware_cost(const Profile& p, const std::string& rtl_dir, const std::string& cache_dir_or_empty) {

@@ -9,6 +9,7 @@ namespace rastersim {
 Pipeline::Pipeline(const Profile& profile)
     : profile_(profile),
       setup_(profile),
+      timing_(rastersim::setup_timing(profile)),
       walker_(profile, setup_.widths()),
       adders_(setup_.widths(), profile.z_bits, profile.shading == Shading::Gouraud),
       zbuffer_(profile),
@@ -27,6 +28,7 @@ void Pipeline::reset() {
   setup_free_ = walker_free_ = 0;
   std::fill(credit_release_.begin(), credit_release_.end(), -1);
   drawn_ = 0;
+  setup_busy_until_ = -1;
   last_busy_ = -1;
 }
 
@@ -98,14 +100,19 @@ void Pipeline::submit(const SnappedTriangle& tri) {
   record.status = s.status;
   // The unit accepts when it is free and one of the setup_fifo_depth record credits is: the credit
   // of the drawn triangle setup_fifo_depth drawn triangles back returns the cycle after its load.
+  // The pipelined unit accepts only in the first cycle of a slot (frame cycles kI).
   const int64_t credit_free = credit_release_[size_t(drawn_ % int64_t(credit_release_.size()))] + 1;
-  record.setup_accept = std::max(setup_free_, credit_free);
-  stats_.setup.stall += record.setup_accept - setup_free_;  // a triangle waits, the FIFO is full
+  int64_t accept = std::max(setup_free_, credit_free);
+  const int64_t interval = timing_.interval;
+  if (interval > 0) accept = (accept + interval - 1) / interval * interval;
+  record.setup_accept = accept;
+  stats_.setup.stall += accept - setup_free_;  // a triangle waits, the FIFO is full
   ++stats_.triangles;
-  const int setup_cycles = setup_.cycles(s.status);
-  stats_.setup.busy += setup_cycles;
-  record.setup_done = record.setup_accept + setup_cycles - 1;
-  setup_free_ = record.setup_done + 1;
+  record.setup_done = accept + (s.status == SetupStatus::Drawn ? timing_.drawn_latency : timing_.rejected_latency);
+  setup_free_ = interval > 0 ? accept + interval : record.setup_done + 1;
+  // Busy: cycles in which the unit holds a triangle, [accept, setup_done] of each, counted once.
+  stats_.setup.busy += std::max<int64_t>(0, record.setup_done - std::max(accept - 1, setup_busy_until_));
+  setup_busy_until_ = std::max(setup_busy_until_, record.setup_done);
   if (s.status != SetupStatus::Drawn) {
     switch (s.status) {
       case SetupStatus::Degenerate: ++stats_.triangles_degenerate; break;

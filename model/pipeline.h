@@ -78,6 +78,7 @@ class Pipeline {
 
   const Profile& profile() const { return profile_; }
   const Widths& widths() const { return setup_.widths(); }
+  const SetupTiming& setup_timing() const { return timing_; }
   const ZBuffer& zbuffer() const { return zbuffer_; }
   const SetupResult& last_setup() const { return last_setup_; }
 
@@ -91,6 +92,7 @@ class Pipeline {
 
   Profile profile_;
   TriangleSetup setup_;
+  SetupTiming timing_;
   ScanlineWalker walker_;
   ZAdder adders_;
   ZBuffer zbuffer_;
@@ -101,6 +103,7 @@ class Pipeline {
   FrameStats stats_;
   int64_t next_index_ = 0;
   int64_t setup_free_ = 0;       // first cycle the setup unit can accept
+  int64_t setup_busy_until_ = -1;  // last cycle the setup unit holds a triangle so far
   // Walker load cycles of the last setup_fifo_depth drawn triangles (a ring): a drawn triangle holds
   // a record credit from its accept to its load, and the setup unit accepts only with a free credit.
   std::vector<int64_t> credit_release_;

@@ -69,7 +69,7 @@ const std::vector<std::string>& profile_keys() {
   static const std::vector<std::string> keys = {
       "width", "height", "subpixel_bits", "z_bits", "z_guard_bits", "depth_func", "depth_write",
       "depth_clear", "cull", "front_face", "traversal", "shading", "memory_latency",
-      "memory_stall_percent", "memory_stall_seed", "setup_fifo_depth"};
+      "memory_stall_percent", "memory_stall_seed", "setup_fifo_depth", "setup_interval"};
   return keys;
 }
 
@@ -89,6 +89,7 @@ std::vector<std::string> validate(const Profile& p) {
   range("memory_stall_percent", p.memory_stall_percent, 0, 90);
   range("memory_stall_seed", p.memory_stall_seed, 0, INT32_MAX);
   range("setup_fifo_depth", p.setup_fifo_depth, 1, kMaxSetupFifoDepth);
+  if (p.setup_interval != 0) range("setup_interval", p.setup_interval, kMinSetupInterval, kMaxSetupInterval);
   if (p.z_bits >= 16 && p.z_bits <= 32 && p.depth_clear >= 0 && p.depth_clear > int64_t(p.depth_max()))
     errors.push_back("depth_clear is " + std::to_string(p.depth_clear) + "; it must be in 0.." +
                      std::to_string(p.depth_max()) + " for z_bits " + std::to_string(p.z_bits));
@@ -118,6 +119,7 @@ std::string set_profile_key(Profile& p, const std::string& key, const std::strin
   if (key == "memory_stall_percent") return integer(p.memory_stall_percent);
   if (key == "memory_stall_seed") return integer(p.memory_stall_seed);
   if (key == "setup_fifo_depth") return integer(p.setup_fifo_depth);
+  if (key == "setup_interval") return integer(p.setup_interval);
   if (key == "depth_clear") {
     if (value == "max") return p.depth_clear = -1, "";
     if (!parse_int(value, n) || n < 0) return key + " takes a non-negative integer or 'max', not '" + value + "'";
@@ -180,6 +182,7 @@ std::string profile_to_json(const Profile& p, int indent) {
   j["memory_stall_percent"] = p.memory_stall_percent;
   j["memory_stall_seed"] = p.memory_stall_seed;
   j["setup_fifo_depth"] = p.setup_fifo_depth;
+  j["setup_interval"] = p.setup_interval;
   return j.dump(indent);
 }
 

@@ -17,6 +17,7 @@ enum class Traversal { BBox, Span };
 enum class Shading { Flat, Gouraud };
 
 constexpr int kMaxSetupFifoDepth = 16;  // the RTL's MAX_SETUP_FIFO_DEPTH default
+constexpr int kMinSetupInterval = 2, kMaxSetupInterval = 64;  // the pipelined setup unit's range
 
 struct Profile {
   int width = 640;            // pixels, 1..4096
@@ -40,6 +41,10 @@ struct Profile {
   // rejected) but not yet loaded by the walker, 1..16. 1: the walker must take a record before the
   // setup unit accepts the next triangle. docs/cycle-model.md.
   int setup_fifo_depth = 1;
+  // Initiation interval of the setup unit: 0 = the parallel-divider unit (one triangle at a time,
+  // divider_bits + 3 cycles per drawn triangle); 2..64 = the pipelined unit, which accepts a
+  // triangle every I cycles at best. docs/cycle-model.md.
+  int setup_interval = 0;
 
   uint32_t depth_max() const { return uint32_t((uint64_t(1) << z_bits) - 1); }
   uint32_t depth_clear_value() const { return depth_clear < 0 ? depth_max() : uint32_t(depth_clear); }

@@ -82,10 +82,6 @@ class TriangleSetup {
   }
   // The same into `r` (the pipeline's output register), without copying the result.
   void run(const SnappedTriangle& tri, SetupResult& r) const;
-  // Cycles from accept to the output register being valid (drawn) or to done (rejected).
-  int cycles(SetupStatus status) const {
-    return status == SetupStatus::Drawn ? widths_.setup_cycles : widths_.setup_front_cycles;
-  }
   const Widths& widths() const { return widths_; }
 
  private:

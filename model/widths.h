@@ -75,6 +75,48 @@ inline Widths derive_widths(const Profile& p) {
   return derive_widths(p.width, p.height, p.subpixel_bits, p.z_bits, p.z_guard_bits);
 }
 
+// When the setup unit handles a triangle (docs/cycle-model.md). `setup_interval` 0 is the
+// parallel-divider unit (one triangle at a time, `setup_cycles` per drawn triangle); I >= 2 is the
+// pipelined unit: one triangle per slot of I cycles through a FRONT slot, the numerator slots and
+// the divide slots, every multiply and divide digit-serial with at most kSetupStepsPerCycle steps
+// chained in a cycle.
+constexpr int kSetupStepsPerCycle = 4;
+
+struct SetupTiming {
+  int interval;        // I: cycles between two accepts at best (0: parallel dividers)
+  int numer_stages;    // slots of the plane numerators (Horner over the vertex values' z_bits bits)
+  int numer_steps;     // shift-add steps per cycle in a numerator slot
+  int divide_stages;   // slots of the 18 restoring divisions (divider_bits steps)
+  int divide_steps;    // restoring steps per cycle in a divide slot
+  int drawn_latency;   // accept -> record in the output register (setup_done - setup_accept)
+  int rejected_latency;  // accept -> decision
+  int free_after;      // accept -> first cycle the unit may accept again
+};
+
+constexpr int ceil_div(int a, int b) { return (a + b - 1) / b; }
+
+constexpr SetupTiming setup_timing(const Widths& w, int z_bits, int interval) {
+  SetupTiming t{};
+  t.interval = interval;
+  t.rejected_latency = w.setup_front_cycles - 1;
+  if (interval == 0) {
+    t.drawn_latency = w.setup_cycles - 1;
+    t.free_after = 0;  // the unit is free after its output (or decision) cycle
+    return t;
+  }
+  t.numer_stages = ceil_div(z_bits, interval * kSetupStepsPerCycle);
+  t.numer_steps = ceil_div(z_bits, interval * t.numer_stages);
+  t.divide_stages = ceil_div(w.divider_bits, interval * kSetupStepsPerCycle);
+  t.divide_steps = ceil_div(w.divider_bits, interval * t.divide_stages);
+  t.drawn_latency = interval * (1 + t.numer_stages + t.divide_stages);
+  t.free_after = interval;
+  return t;
+}
+
+inline SetupTiming setup_timing(const Profile& p) {
+  return setup_timing(derive_widths(p), p.z_bits, p.setup_interval);
+}
+
 // The largest profile must fit the model's storage: plane registers and edge values in int64_t,
 // dividends in i128.
 static_assert(derive_widths(4096, 4096, 8, 32, 0).edge_bits <= 63);

@@ -14,7 +14,8 @@ module rastersim_core #(
   parameter integer Z_BITS = 24,
   parameter integer Z_GUARD_BITS = 0,      // 0: derived (proven minimum)
   parameter integer MAX_MEMORY_LATENCY = 64,
-  parameter integer MAX_SETUP_FIFO_DEPTH = 16  // record FIFO entries; cfg_setup_fifo_depth <= this
+  parameter integer MAX_SETUP_FIFO_DEPTH = 16,  // record FIFO entries; cfg_setup_fifo_depth <= this
+  parameter integer SETUP_INTERVAL = 0         // 0: parallel-divider setup; 2..64: pipelined (profile setup_interval)
 ) (
   input  wire clk,
   input  wire rst,
@@ -37,7 +38,7 @@ module rastersim_core #(
   output wire trace_setup_decided,
   output wire [1:0] trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen
   output wire trace_setup_busy,
-  output wire trace_setup_stall,           // a triangle offered, the unit free, every record credit held
+  output wire trace_setup_stall,           // a triangle offered, the unit free, not accepted (credits, slot)
   output wire trace_setup_done,            // a drawn triangle's record is in the setup output register
   output wire trace_walker_load,           // record -> walker handshake
   output wire trace_walker_busy,
@@ -88,6 +89,8 @@ module rastersim_core #(
   localparam integer ADDR_BITS /*verilator public*/ = rs_ubits32(WIDTH * HEIGHT - 1);
   localparam integer SETUP_FRONT_CYCLES /*verilator public*/ = 2;
   localparam integer SETUP_CYCLES /*verilator public*/ = SETUP_FRONT_CYCLES + DIVIDER_BITS + 1;
+  localparam integer SETUP_DRAWN_LATENCY /*verilator public*/ =
+      rs_setup_drawn_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS, SETUP_INTERVAL);
   localparam integer WALKER_LOAD_CYCLES /*verilator public*/ = 1;
   localparam integer SPAN_ROW_CYCLES /*verilator public*/ = 1;
   // The profile parameters themselves, for the harness.
@@ -98,6 +101,7 @@ module rastersim_core #(
   localparam integer P_Z_GUARD_BITS /*verilator public*/ = Z_GUARD_BITS;
   localparam integer P_MAX_MEMORY_LATENCY /*verilator public*/ = MAX_MEMORY_LATENCY;
   localparam integer P_MAX_SETUP_FIFO_DEPTH /*verilator public*/ = MAX_SETUP_FIFO_DEPTH;
+  localparam integer P_SETUP_INTERVAL /*verilator public*/ = SETUP_INTERVAL;
   /* verilator lint_on UNUSEDPARAM */
 
   localparam integer EB = EDGE_BITS;
@@ -156,12 +160,13 @@ module rastersim_core #(
   end
 
   assign cmd_ready = setup_ready && frame_ready && credit_free;
-  assign trace_setup_stall = cmd_valid && setup_ready && frame_ready && !credit_free;
+  wire setup_free;
+  assign trace_setup_stall = cmd_valid && frame_ready && setup_free && !accept;
   assign trace_setup_done = setup_valid;
 
   triangle_setup #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
-                   .Z_GUARD_BITS(Z_GUARD_BITS)) setup (
-    .clk(clk), .rst(rst), .cfg_cull(cull_q), .cfg_front_face(front_face_q),
+                   .Z_GUARD_BITS(Z_GUARD_BITS), .SETUP_INTERVAL(SETUP_INTERVAL)) setup (
+    .clk(clk), .rst(rst), .run(frame_ready), .free(setup_free), .cfg_cull(cull_q), .cfg_front_face(front_face_q),
     .in_valid(cmd_valid && frame_ready && credit_free), .in_ready(setup_ready),
     .in_x({cmd_x2, cmd_x1, cmd_x0}), .in_y({cmd_y2, cmd_y1, cmd_y0}), .in_z({cmd_z2, cmd_z1, cmd_z0}),
     .in_rgb({cmd_rgb2, cmd_rgb1, cmd_rgb0}),

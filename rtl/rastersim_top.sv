@@ -10,7 +10,8 @@ module rastersim_top #(
   parameter integer Z_BITS = 24,
   parameter integer Z_GUARD_BITS = 0,      // 0: derived (proven minimum)
   parameter integer MAX_MEMORY_LATENCY = 64,
-  parameter integer MAX_SETUP_FIFO_DEPTH = 16  // record FIFO entries; cfg_setup_fifo_depth <= this
+  parameter integer MAX_SETUP_FIFO_DEPTH = 16,  // record FIFO entries; cfg_setup_fifo_depth <= this
+  parameter integer SETUP_INTERVAL = 0         // 0: parallel-divider setup; 2..64: pipelined
 ) (
   input  wire clk,
   input  wire rst,
@@ -64,7 +65,7 @@ module rastersim_top #(
 
   rastersim_core #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
                    .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY),
-                   .MAX_SETUP_FIFO_DEPTH(MAX_SETUP_FIFO_DEPTH)) core (
+                   .MAX_SETUP_FIFO_DEPTH(MAX_SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL)) core (
     .clk(clk), .rst(rst), .cfg_depth_func(cfg_depth_func), .cfg_depth_write(cfg_depth_write),
     .cfg_cull(cfg_cull), .cfg_front_face(cfg_front_face), .cfg_traversal(cfg_traversal),
     .cfg_shading(cfg_shading), .cfg_memory_latency(cfg_memory_latency),

@@ -130,3 +130,22 @@ function automatic integer rs_divider_bits(input integer w, input integer h, inp
     rs_divider_bits = rs_ubits(((128'd36 * z_max) * rs_area_unit(w, h, s)) << rs_guard_bits(w, h, z_guard_bits));
   end
 endfunction
+
+// The pipelined setup unit's schedule (SETUP_INTERVAL I >= 2; model/widths.h setup_timing): slots
+// of numerator and divide steps, at most 4 steps of one multiply or divide chained in a cycle.
+function automatic integer rs_setup_numer_stages(input integer z_bits, input integer interval);
+  rs_setup_numer_stages = (z_bits + interval * 4 - 1) / (interval * 4);
+endfunction
+
+function automatic integer rs_setup_divide_stages(input integer divider_bits, input integer interval);
+  rs_setup_divide_stages = (divider_bits + interval * 4 - 1) / (interval * 4);
+endfunction
+
+// Accept -> the record in the output register, for a drawn triangle.
+function automatic integer rs_setup_drawn_latency(input integer w, input integer h, input integer s,
+                                                  input integer z_bits, input integer z_guard_bits,
+                                                  input integer interval);
+  rs_setup_drawn_latency = interval == 0 ? rs_divider_bits(w, h, s, z_bits, z_guard_bits) + 2
+      : interval * (1 + rs_setup_numer_stages(z_bits, interval)
+                    + rs_setup_divide_stages(rs_divider_bits(w, h, s, z_bits, z_guard_bits), interval));
+endfunction

@@ -2,20 +2,27 @@
 // top-left bias, the screen-clipped bounding box, the cull / degenerate / offscreen decision, the
 // span-walker quotients, and the depth and colour planes from exact floor divisions.
 //
-// Cycles (docs/cycle-model.md): accept in cycle a (IDLE, in_valid & in_ready); FRONT in a+1
-// decides (a rejected triangle ends there); a drawn one starts every divider at the end of a+1,
-// the dividers run DIVIDER_BITS cycles (a+2 .. a+DIVIDER_BITS+1), and the output is valid from
-// a+DIVIDER_BITS+2 = a + setup_cycles - 1 (setup_done) for that one cycle, in which the core passes
-// it to the walker or into the record FIFO (rastersim_core.sv); the unit is free again after it.
+// Two schedules of the same arithmetic (docs/cycle-model.md), chosen by SETUP_INTERVAL:
+// - 0, parallel dividers: accept in cycle a (IDLE, in_valid & in_ready); FRONT in a+1 decides (a
+//   rejected triangle ends there); a drawn one starts every divider at the end of a+1, the dividers
+//   run DIVIDER_BITS cycles (a+2 .. a+DIVIDER_BITS+1), and the output is valid from
+//   a+DIVIDER_BITS+2 = a + setup_cycles - 1 (setup_done) for that one cycle, in which the core
+//   passes it to the walker or into the record FIFO (rastersim_core.sv); the unit is free after it.
+// - I = 2..64, pipelined: slots of I cycles counted from the first cycle of `run`; accept only in
+//   a slot's first cycle; FRONT slot (decision in a+1), NUMER_STAGES numerator slots, DIVIDE_STAGES
+//   divide slots, then the output register, valid in a + I (1 + NUMER_STAGES + DIVIDE_STAGES).
 module triangle_setup #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
   parameter integer SUBPIXEL_BITS = 4,
   parameter integer Z_BITS = 24,
-  parameter integer Z_GUARD_BITS = 0
+  parameter integer Z_GUARD_BITS = 0,
+  parameter integer SETUP_INTERVAL = 0  // 0: parallel dividers; 2..64: pipelined, initiation interval
 ) (
   input  wire clk,
   input  wire rst,
+  input  wire run,                   // the frame runs (cycle 0 is its first cycle): slots count
+  output wire free,                  // no triangle accepted in this slot yet (0: parallel, busy)
   input  wire [1:0] cfg_cull,        // 0 none, 1 back, 2 front
   input  wire       cfg_front_face,  // 0 ccw, 1 cw
   // Command input: vertex k at [k*B +: B]; x, y s(COORD_BITS-S).S subpixels; z uN; rgb {r,g,b} u8.
@@ -34,10 +41,10 @@ module triangle_setup #(
   // Setup record of a drawn triangle (the model's SetupResult), edge k at [k*B +: B], valid for
   // the one cycle setup_done.
   output wire out_valid,
-  output reg  [rs_ubits32(WIDTH - 1)-1:0]  out_x0,
-  output reg  [rs_ubits32(WIDTH - 1)-1:0]  out_x1,
-  output reg  [rs_ubits32(HEIGHT - 1)-1:0] out_y0,
-  output reg  [rs_ubits32(HEIGHT - 1)-1:0] out_y1,
+  output wire [rs_ubits32(WIDTH - 1)-1:0]  out_x0,
+  output wire [rs_ubits32(WIDTH - 1)-1:0]  out_x1,
+  output wire [rs_ubits32(HEIGHT - 1)-1:0] out_y0,
+  output wire [rs_ubits32(HEIGHT - 1)-1:0] out_y1,
   output wire [3*rs_edge_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] out_edge_start,   // s.2S, biased
   output wire [3*rs_edge_step_x_bits(HEIGHT, SUBPIXEL_BITS)-1:0] out_edge_step_x, // s.2S
   output wire [3*rs_edge_step_y_bits(WIDTH, SUBPIXEL_BITS)-1:0]  out_edge_step_y, // s.2S
@@ -52,7 +59,7 @@ module triangle_setup #(
   output wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0]    out_color_start,
   output wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0]    out_color_step_x,
   output wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0]    out_color_step_y,
-  output reg  [23:0] out_flat_rgb     // provoking (first) vertex colour
+  output wire [23:0] out_flat_rgb     // provoking (first) vertex colour
 );
 `include "rastersim_widths.vh"
 
@@ -77,29 +84,21 @@ module triangle_setup #(
   localparam integer ONE_LESS = (1 << S) - 1;  // one pixel less one subpixel
   localparam integer X_LAST = WIDTH - 1;
   localparam integer Y_LAST = HEIGHT - 1;
-  localparam integer COUNT_BITS = $clog2(DIVIDER_BITS + 1);
-  localparam [COUNT_BITS-1:0] DIVIDE_CYCLES = DIVIDER_BITS[COUNT_BITS-1:0];
 
   localparam signed [BB-1:0] HALF_B = HALF[BB-1:0];
   localparam signed [BB-1:0] ONE_LESS_B = ONE_LESS[BB-1:0];
   localparam signed [BB-1:0] X_LAST_B = X_LAST[BB-1:0];
   localparam signed [BB-1:0] Y_LAST_B = Y_LAST[BB-1:0];
 
-  localparam [1:0] IDLE = 2'd0, FRONT = 2'd1, DIVIDE = 2'd2, OUT = 2'd3;
   localparam [1:0] DRAWN = 2'd0, DEGENERATE = 2'd1, CULLED = 2'd2, OFFSCREEN = 2'd3;
 
-  reg [1:0] state;
-  reg [COUNT_BITS-1:0] divide_left;
+  wire load_vertices;  // the accept cycle
 
   // Vertices as accepted.
   reg signed [CB-1:0] vx [0:2];
   reg signed [CB-1:0] vy [0:2];
   reg [Z_BITS-1:0]    vz [0:2];
   reg [23:0]          vrgb [0:2];
-
-  assign in_ready = state == IDLE;
-  assign out_valid = state == OUT;
-  assign busy = (state == IDLE && in_valid) || state == FRONT || state == DIVIDE || state == OUT;
 
   // ---- FRONT: area, facing, cull, bounding box (from the registered vertices) ----
   wire signed [DB-1:0] d10x = vx[1] - vx[0];
@@ -147,7 +146,6 @@ module triangle_setup #(
   wire offscreen = bx0 > bx1 || by0 > by1;
 
   wire [1:0] status = area2 == 0 ? DEGENERATE : culled ? CULLED : offscreen ? OFFSCREEN : DRAWN;
-  assign decided = state == FRONT;
   assign decided_status = status;
   assign decided_front_facing = area2 != 0 && front_facing;
   assign decided_area2 = area2;
@@ -229,9 +227,16 @@ module triangle_setup #(
     end
   endgenerate
 
-  // 12 plane numerators: plane p (0 depth, 1..3 r, g, b), term t (0 start, 1 step_x, 2 step_y).
-  wire signed [NB-1:0] numerator [0:11];
   generate
+  if (SETUP_INTERVAL == 0) begin : parallel
+    localparam integer COUNT_BITS = $clog2(DIVIDER_BITS + 1);
+    localparam [COUNT_BITS-1:0] DIVIDE_CYCLES = DIVIDER_BITS[COUNT_BITS-1:0];
+    localparam [1:0] IDLE = 2'd0, FRONT = 2'd1, DIVIDE = 2'd2, OUT = 2'd3;
+    reg [1:0] state;
+    reg [COUNT_BITS-1:0] divide_left;
+    wire unused_run = run;  // one triangle at a time: no slots
+    // 12 plane numerators: plane p (0 depth, 1..3 r, g, b), term t (0 start, 1 step_x, 2 step_y).
+    wire signed [NB-1:0] numerator [0:11];
     genvar p;
     for (p = 0; p < 4; p = p + 1) begin : planes
       wire [Z_BITS-1:0] v0 = p == 0 ? oz[0] : {{(Z_BITS-8){1'b0}}, orgb[0][(p == 0 ? 0 : 8*(3-p)) +: 8]};
@@ -241,11 +246,15 @@ module triangle_setup #(
       assign numerator[3*p + 1] = plane_numerator(v0, v1, v2, weight_x[0], weight_x[1], weight_x[2]);
       assign numerator[3*p + 2] = plane_numerator(v0, v1, v2, weight_y[0], weight_y[1], weight_y[2]);
     end
-  endgenerate
 
-  // ---- Dividers, all started at the end of FRONT for a drawn triangle ----
-  wire start_dividers = state == FRONT && status == DRAWN;
-  generate
+    // ---- Dividers, all started at the end of FRONT for a drawn triangle ----
+    wire start_dividers = state == FRONT && status == DRAWN;
+    assign load_vertices = state == IDLE && in_valid;
+    assign in_ready = state == IDLE;
+    assign free = state == IDLE;
+    assign out_valid = state == OUT;
+    assign decided = state == FRONT;
+    assign busy = (state == IDLE && in_valid) || state == FRONT || state == DIVIDE || state == OUT;
     genvar n;
     for (n = 0; n < 12; n = n + 1) begin : plane_dividers
       localparam integer QB = n < 3 ? ZRB : CRB;
@@ -262,24 +271,20 @@ module triangle_setup #(
         .dividend_magnitude(scaled[DIVIDER_BITS-1:0]), .divisor(area), .busy(unused_busy),
         .quotient(quotient), .remainder(unused_remainder));
     end
-  endgenerate
-  assign out_depth_start = plane_dividers[0].quotient;
-  assign out_depth_step_x = plane_dividers[1].quotient;
-  assign out_depth_step_y = plane_dividers[2].quotient;
-  generate
+    assign out_depth_start = plane_dividers[0].quotient;
+    assign out_depth_step_x = plane_dividers[1].quotient;
+    assign out_depth_step_y = plane_dividers[2].quotient;
     genvar c;
     for (c = 0; c < 3; c = c + 1) begin : color_out
       assign out_color_start[c*CRB +: CRB] = plane_dividers[3 + 3*c].quotient;
       assign out_color_step_x[c*CRB +: CRB] = plane_dividers[4 + 3*c].quotient;
       assign out_color_step_y[c*CRB +: CRB] = plane_dividers[5 + 3*c].quotient;
     end
-  endgenerate
 
-  // Span walker: start = quot * d + rem and step_y = step_quot * d + step_rem, d = |step_x|.
-  reg signed [EB-1:0]  rec_edge_start [0:2];
-  reg signed [SXB-1:0] rec_edge_step_x [0:2];
-  reg signed [SYB-1:0] rec_edge_step_y [0:2];
-  generate
+    // Span walker: start = quot * d + rem and step_y = step_quot * d + step_rem, d = |step_x|.
+    reg signed [EB-1:0]  rec_edge_start [0:2];
+    reg signed [SXB-1:0] rec_edge_step_x [0:2];
+    reg signed [SYB-1:0] rec_edge_step_y [0:2];
     for (k = 0; k < 3; k = k + 1) begin : span_dividers
       wire [SXB-1:0] divisor = edge_step_x[k] < 0 ? -edge_step_x[k] : edge_step_x[k];
       wire [EB-1:0] start_mag = edge_start[k] < 0 ? -edge_start[k] : edge_start[k];
@@ -309,50 +314,364 @@ module triangle_setup #(
       assign out_span_step_quot[k*SYB +: SYB] = horizontal ? {SYB{1'b0}} : step_quot;
       assign out_span_step_rem[k*RB +: RB] = horizontal ? {RB{1'b0}} : step_rem[RB-1:0];
     end
-  endgenerate
 
-  // ---- Control ----
-  integer i;
-  always @(posedge clk) begin
+    // ---- Control ----
+    always @(posedge clk) begin
     if (rst) begin
-      state <= IDLE;
-      divide_left <= {COUNT_BITS{1'b0}};
+        state <= IDLE;
+        divide_left <= {COUNT_BITS{1'b0}};
     end else begin
-      case (state)
-        IDLE: if (in_valid) state <= FRONT;
-        FRONT: begin
-          state <= status == DRAWN ? DIVIDE : IDLE;
-          divide_left <= DIVIDE_CYCLES;
-        end
-        DIVIDE: begin
-          divide_left <= divide_left - 1'b1;
-          if (divide_left == 1) state <= OUT;
-        end
-        default: state <= IDLE;  // OUT: the core takes the record
-      endcase
+        case (state)
+          IDLE: if (in_valid) state <= FRONT;
+          FRONT: begin
+            state <= status == DRAWN ? DIVIDE : IDLE;
+            divide_left <= DIVIDE_CYCLES;
+          end
+          DIVIDE: begin
+            divide_left <= divide_left - 1'b1;
+            if (divide_left == 1) state <= OUT;
+          end
+          default: state <= IDLE;  // OUT: the core takes the record
+        endcase
     end
-  end
+    end
 
-  // Datapath registers (no reset: loaded before use).
-  always @(posedge clk) begin
-    if (state == IDLE && in_valid) begin
-      for (i = 0; i < 3; i = i + 1) begin
-        vx[i] <= in_x[i*CB +: CB];
-        vy[i] <= in_y[i*CB +: CB];
-        vz[i] <= in_z[i*Z_BITS +: Z_BITS];
-        vrgb[i] <= in_rgb[i*24 +: 24];
+    reg [XB-1:0] x0_q, x1_q;
+    reg [YB-1:0] y0_q, y1_q;
+    reg [23:0] flat_rgb_q;
+    assign out_x0 = x0_q;
+    assign out_x1 = x1_q;
+    assign out_y0 = y0_q;
+    assign out_y1 = y1_q;
+    assign out_flat_rgb = flat_rgb_q;
+    integer i;
+    always @(posedge clk) begin
+    if (start_dividers) begin
+        x0_q <= bx0[XB-1:0];
+        x1_q <= bx1[XB-1:0];
+        y0_q <= by0[YB-1:0];
+        y1_q <= by1[YB-1:0];
+        flat_rgb_q <= vrgb[0];
+        for (i = 0; i < 3; i = i + 1) begin
+          rec_edge_start[i] <= edge_start[i];
+          rec_edge_step_x[i] <= edge_step_x[i];
+          rec_edge_step_y[i] <= edge_step_y[i];
+        end
+    end
+    end
+  end else begin : pipelined
+    // ---- Pipelined schedule (docs/cycle-model.md): slots of I cycles, one triangle per slot ----
+    localparam integer I = SETUP_INTERVAL;
+    localparam integer NUMER_STAGES = rs_setup_numer_stages(Z_BITS, I);
+    localparam integer NUMER_STEPS = (Z_BITS + I * NUMER_STAGES - 1) / (I * NUMER_STAGES);
+    localparam integer NUMER_SKIP = I * NUMER_STAGES * NUMER_STEPS - Z_BITS;  // leading no-op steps
+    localparam integer DIVIDE_STAGES = rs_setup_divide_stages(DIVIDER_BITS, I);
+    localparam integer DIVIDE_STEPS = (DIVIDER_BITS + I * DIVIDE_STAGES - 1) / (I * DIVIDE_STAGES);
+    localparam integer PLANE_SKIP = I * DIVIDE_STAGES * DIVIDE_STEPS - DIVIDER_BITS;
+    localparam integer SPAN_SKIP = I * DIVIDE_STAGES * DIVIDE_STEPS - EB;
+    localparam integer PHASE_BITS = rs_ubits32(I - 1);
+    localparam integer LAST_PHASE = I - 1;
+    // Numerator slot state: vertex values (plane p, vertex k at [(3p+k)*Z_BITS]), accumulators
+    // (numerator n = 3p + t at [n*NB], t: 0 start, 1 step x, 2 step y), weights (term t, edge k at
+    // [(3t+k)*EB]: E at the first candidate, edge_step_x, edge_step_y, widened).
+    localparam integer VALS = 12 * Z_BITS;
+    localparam integer ACCS = 12 * NB;
+    localparam integer WTS = 9 * EB;
+    // The record fields decided in FRONT, carried along: {x0, x1, y0, y1, edge_start[2:0],
+    // edge_step_x[2:0], edge_step_y[2:0], flat rgb, |area2|}.
+    localparam integer P_AREA = 0;
+    localparam integer P_RGB = P_AREA + AB;
+    localparam integer P_SY = P_RGB + 24;
+    localparam integer P_SX = P_SY + 3 * SYB;
+    localparam integer P_ES = P_SX + 3 * SXB;
+    localparam integer P_Y1 = P_ES + 3 * EB;
+    localparam integer P_Y0 = P_Y1 + YB;
+    localparam integer P_X1 = P_Y0 + YB;
+    localparam integer P_X0 = P_X1 + XB;
+    localparam integer PAY = P_X0 + XB;
+    // Divide slot state: plane division n {negative, partial remainder, dividend/quotient bits};
+    // span division m = 2k (edge start) or 2k+1 (edge step y) the same with |edge_step_x| widths.
+    localparam integer PLANE_W = 1 + AB + DIVIDER_BITS;
+    localparam integer SPAN_W = 1 + SXB + EB;
+    localparam integer PLANES = 12 * PLANE_W;
+    localparam integer SPANS = 6 * SPAN_W;
+
+    integer j, s, n;
+    reg [PHASE_BITS-1:0] phase_q;
+    wire slot_first = phase_q == {PHASE_BITS{1'b0}};
+    wire advance = run && phase_q == LAST_PHASE[PHASE_BITS-1:0];
+    reg front_q;  // a triangle is in its FRONT slot (after its accept cycle)
+    reg [NUMER_STAGES-1:0] numer_valid_q;
+    reg [DIVIDE_STAGES-1:0] divide_valid_q;
+    reg out_valid_q;
+    always @(posedge clk) begin
+      if (rst) begin
+        phase_q <= {PHASE_BITS{1'b0}};
+        front_q <= 1'b0;
+        numer_valid_q <= {NUMER_STAGES{1'b0}};
+        divide_valid_q <= {DIVIDE_STAGES{1'b0}};
+        out_valid_q <= 1'b0;
+      end else begin
+        if (run) phase_q <= advance ? {PHASE_BITS{1'b0}} : phase_q + 1'b1;
+        if (load_vertices) front_q <= 1'b1;
+        else if (advance) front_q <= 1'b0;
+        if (advance) begin
+          for (j = NUMER_STAGES - 1; j > 0; j = j - 1) numer_valid_q[j] <= numer_valid_q[j-1];
+          numer_valid_q[0] <= front_q && status == DRAWN;
+          for (j = DIVIDE_STAGES - 1; j > 0; j = j - 1) divide_valid_q[j] <= divide_valid_q[j-1];
+          divide_valid_q[0] <= numer_valid_q[NUMER_STAGES-1];
+          out_valid_q <= divide_valid_q[DIVIDE_STAGES-1];
+        end
       end
     end
-    if (start_dividers) begin
-      out_x0 <= bx0[XB-1:0];
-      out_x1 <= bx1[XB-1:0];
-      out_y0 <= by0[YB-1:0];
-      out_y1 <= by1[YB-1:0];
-      out_flat_rgb <= vrgb[0];
-      for (i = 0; i < 3; i = i + 1) begin
-        rec_edge_start[i] <= edge_start[i];
-        rec_edge_step_x[i] <= edge_step_x[i];
-        rec_edge_step_y[i] <= edge_step_y[i];
+    assign in_ready = slot_first;
+    assign load_vertices = in_valid && slot_first;
+    assign free = !front_q;
+    assign decided = front_q && phase_q == {{(PHASE_BITS-1){1'b0}}, 1'b1};
+    assign out_valid = out_valid_q && slot_first;
+    assign busy = load_vertices || (front_q && (decided || status == DRAWN)) || numer_valid_q != 0
+                  || divide_valid_q != 0 || out_valid;
+
+    // FRONT's results.
+    wire [VALS-1:0] front_vals;
+    wire [WTS-1:0] front_wts;
+    genvar fp, fk;
+    for (fp = 0; fp < 4; fp = fp + 1) begin : front_planes
+      for (fk = 0; fk < 3; fk = fk + 1) begin : front_vertices
+        assign front_vals[(3*fp + fk)*Z_BITS +: Z_BITS] =
+            fp == 0 ? oz[fk] : {{(Z_BITS-8){1'b0}}, orgb[fk][(fp == 0 ? 0 : 8*(3-fp)) +: 8]};
+        if (fp < 3) begin : weight
+          assign front_wts[(3*fp + fk)*EB +: EB] = fp == 0 ? unbiased[fk] : fp == 1 ? weight_x[fk] : weight_y[fk];
+        end
+      end
+    end
+    wire [PAY-1:0] front_pay = {bx0[XB-1:0], bx1[XB-1:0], by0[YB-1:0], by1[YB-1:0],
+                                edge_start[2], edge_start[1], edge_start[0],
+                                edge_step_x[2], edge_step_x[1], edge_step_x[0],
+                                edge_step_y[2], edge_step_y[1], edge_step_y[0], vrgb[0], area};
+
+    // ---- Numerator slots: acc = 2 acc + sum over vertices of (value bit ? weight : 0), MSB first ----
+    reg [NUMER_STAGES*VALS-1:0] numer_vals_q, numer_vals_next;
+    reg [NUMER_STAGES*ACCS-1:0] numer_acc_q, numer_acc_next;
+    reg [NUMER_STAGES*WTS-1:0] numer_wts_q;
+    reg [NUMER_STAGES*PAY-1:0] numer_pay_q;
+    reg [VALS-1:0] nv;
+    reg [ACCS-1:0] na;
+    reg [WTS-1:0] nw;
+    reg [EB-1:0] e0, e1, e2;
+    reg [NB-1:0] term;
+    // A stage's first steps may all be real ones (no leading no-op steps): the comparison is then
+    // constant.
+    /* verilator lint_off UNSIGNED */
+    always @* begin
+      e0 = {EB{1'b0}};
+      e1 = {EB{1'b0}};
+      e2 = {EB{1'b0}};
+      term = {NB{1'b0}};
+      for (j = 0; j < NUMER_STAGES; j = j + 1) begin
+        nv = numer_vals_q[j*VALS +: VALS];
+        na = numer_acc_q[j*ACCS +: ACCS];
+        nw = numer_wts_q[j*WTS +: WTS];
+        for (s = 0; s < NUMER_STEPS; s = s + 1) begin
+          if ((j * I + {{(32-PHASE_BITS){1'b0}}, phase_q}) * NUMER_STEPS + s >= NUMER_SKIP) begin
+            for (n = 0; n < 12; n = n + 1) begin
+              // numerator n = 3p + t: v0 e1 + v1 e2 + v2 e0 with the weights of term t
+              e0 = nw[(3*(n%3) + 0)*EB +: EB];
+              e1 = nw[(3*(n%3) + 1)*EB +: EB];
+              e2 = nw[(3*(n%3) + 2)*EB +: EB];
+              term = (nv[(3*(n/3) + 0)*Z_BITS + Z_BITS-1] ? {{(NB-EB){e1[EB-1]}}, e1} : {NB{1'b0}})
+                   + (nv[(3*(n/3) + 1)*Z_BITS + Z_BITS-1] ? {{(NB-EB){e2[EB-1]}}, e2} : {NB{1'b0}})
+                   + (nv[(3*(n/3) + 2)*Z_BITS + Z_BITS-1] ? {{(NB-EB){e0[EB-1]}}, e0} : {NB{1'b0}});
+              na[n*NB +: NB] = {na[n*NB +: NB-1], 1'b0} + term;
+            end
+            for (n = 0; n < 12; n = n + 1) nv[n*Z_BITS +: Z_BITS] = {nv[n*Z_BITS +: Z_BITS-1], 1'b0};
+          end
+        end
+        numer_vals_next[j*VALS +: VALS] = nv;
+        numer_acc_next[j*ACCS +: ACCS] = na;
+      end
+    end
+    always @(posedge clk) begin
+      if (advance) begin
+        numer_vals_q[0 +: VALS] <= front_vals;
+        numer_acc_q[0 +: ACCS] <= {ACCS{1'b0}};
+        numer_wts_q[0 +: WTS] <= front_wts;
+        numer_pay_q[0 +: PAY] <= front_pay;
+        for (j = 1; j < NUMER_STAGES; j = j + 1) begin
+          numer_vals_q[j*VALS +: VALS] <= numer_vals_next[(j-1)*VALS +: VALS];
+          numer_acc_q[j*ACCS +: ACCS] <= numer_acc_next[(j-1)*ACCS +: ACCS];
+          numer_wts_q[j*WTS +: WTS] <= numer_wts_q[(j-1)*WTS +: WTS];
+          numer_pay_q[j*PAY +: PAY] <= numer_pay_q[(j-1)*PAY +: PAY];
+        end
+      end else begin
+        numer_vals_q <= numer_vals_next;
+        numer_acc_q <= numer_acc_next;
+      end
+    end
+
+    // Division operands at the end of the last numerator slot: |numerator| 2^F by |area2|, and
+    // |edge start|, |edge_step_y| by |edge_step_x| (a horizontal edge's results are zeroed at the end).
+    wire [ACCS-1:0] numer_last = numer_acc_next[(NUMER_STAGES-1)*ACCS +: ACCS];
+    wire [PAY-1:0] numer_last_pay = numer_pay_q[(NUMER_STAGES-1)*PAY +: PAY];
+    wire [PLANES-1:0] divide_in_planes;
+    wire [SPANS-1:0] divide_in_spans;
+    genvar dn, dk;
+    for (dn = 0; dn < 12; dn = dn + 1) begin : divide_in_plane
+      wire [NB-1:0] num = numer_last[dn*NB +: NB];
+      wire [NB-1:0] magnitude = num[NB-1] ? -num : num;
+      // numerator * 2^F < 2^DIVIDER_BITS (docs/widths.md): the top bits are zero.
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire [NB+F-1:0] scaled = {magnitude, {F{1'b0}}};
+      /* verilator lint_on UNUSEDSIGNAL */
+      assign divide_in_planes[dn*PLANE_W +: PLANE_W] = {num[NB-1], {AB{1'b0}}, scaled[DIVIDER_BITS-1:0]};
+    end
+    for (dk = 0; dk < 3; dk = dk + 1) begin : divide_in_span
+      wire [EB-1:0] start = numer_last_pay[P_ES + dk*EB +: EB];
+      wire [SYB-1:0] step = numer_last_pay[P_SY + dk*SYB +: SYB];
+      wire [EB-1:0] start_mag = start[EB-1] ? -start : start;
+      wire [SYB-1:0] step_mag = step[SYB-1] ? -step : step;
+      assign divide_in_spans[(2*dk)*SPAN_W +: SPAN_W] = {start[EB-1], {SXB{1'b0}}, start_mag};
+      assign divide_in_spans[(2*dk+1)*SPAN_W +: SPAN_W] = {step[SYB-1], {SXB{1'b0}}, {(EB-SYB){1'b0}}, step_mag};
+    end
+
+    // ---- Divide slots: restoring steps, one quotient bit each, MSB first ----
+    reg [DIVIDE_STAGES*PLANES-1:0] divide_planes_q, divide_planes_next;
+    reg [DIVIDE_STAGES*SPANS-1:0] divide_spans_q, divide_spans_next;
+    reg [DIVIDE_STAGES*PAY-1:0] divide_pay_q;
+    reg [AB-1:0] plane_partial, plane_divisor;
+    reg [DIVIDER_BITS-1:0] plane_bits;
+    reg [AB:0] plane_shifted, plane_difference;
+    reg [SXB-1:0] span_partial, span_divisor, span_step_x;
+    reg [EB-1:0] span_bits;
+    reg [SXB:0] span_shifted, span_difference;
+    reg [31:0] step_index;
+    always @* begin
+      plane_shifted = {(AB+1){1'b0}};
+      plane_difference = {(AB+1){1'b0}};
+      span_shifted = {(SXB+1){1'b0}};
+      span_difference = {(SXB+1){1'b0}};
+      step_index = 32'd0;
+      for (j = 0; j < DIVIDE_STAGES; j = j + 1) begin
+        plane_divisor = divide_pay_q[j*PAY + P_AREA +: AB];
+        for (n = 0; n < 12; n = n + 1) begin
+          plane_partial = divide_planes_q[j*PLANES + n*PLANE_W + DIVIDER_BITS +: AB];
+          plane_bits = divide_planes_q[j*PLANES + n*PLANE_W +: DIVIDER_BITS];
+          for (s = 0; s < DIVIDE_STEPS; s = s + 1) begin
+            step_index = (j * I + {{(32-PHASE_BITS){1'b0}}, phase_q}) * DIVIDE_STEPS + s;
+            if (step_index >= PLANE_SKIP) begin
+              plane_shifted = {plane_partial, plane_bits[DIVIDER_BITS-1]};
+              plane_difference = plane_shifted - {1'b0, plane_divisor};
+              plane_partial = plane_difference[AB] ? plane_shifted[AB-1:0] : plane_difference[AB-1:0];
+              plane_bits = {plane_bits[DIVIDER_BITS-2:0], !plane_difference[AB]};
+            end
+          end
+          divide_planes_next[j*PLANES + n*PLANE_W +: PLANE_W] =
+              {divide_planes_q[j*PLANES + n*PLANE_W + PLANE_W - 1], plane_partial, plane_bits};
+        end
+        for (n = 0; n < 6; n = n + 1) begin
+          span_step_x = divide_pay_q[j*PAY + P_SX + (n/2)*SXB +: SXB];
+          span_divisor = span_step_x[SXB-1] ? -span_step_x : span_step_x;
+          span_partial = divide_spans_q[j*SPANS + n*SPAN_W + EB +: SXB];
+          span_bits = divide_spans_q[j*SPANS + n*SPAN_W +: EB];
+          for (s = 0; s < DIVIDE_STEPS; s = s + 1) begin
+            step_index = (j * I + {{(32-PHASE_BITS){1'b0}}, phase_q}) * DIVIDE_STEPS + s;
+            if (step_index >= SPAN_SKIP) begin
+              span_shifted = {span_partial, span_bits[EB-1]};
+              span_difference = span_shifted - {1'b0, span_divisor};
+              span_partial = span_difference[SXB] ? span_shifted[SXB-1:0] : span_difference[SXB-1:0];
+              span_bits = {span_bits[EB-2:0], !span_difference[SXB]};
+            end
+          end
+          divide_spans_next[j*SPANS + n*SPAN_W +: SPAN_W] =
+              {divide_spans_q[j*SPANS + n*SPAN_W + SPAN_W - 1], span_partial, span_bits};
+        end
+      end
+    end
+    /* verilator lint_on UNSIGNED */
+    reg [PLANES-1:0] out_planes_q;
+    reg [SPANS-1:0] out_spans_q;
+    // |area2| (the plane divisor) is not part of the record.
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [PAY-1:0] out_pay_q;
+    /* verilator lint_on UNUSEDSIGNAL */
+    always @(posedge clk) begin
+      if (advance) begin
+        divide_planes_q[0 +: PLANES] <= divide_in_planes;
+        divide_spans_q[0 +: SPANS] <= divide_in_spans;
+        divide_pay_q[0 +: PAY] <= numer_last_pay;
+        for (j = 1; j < DIVIDE_STAGES; j = j + 1) begin
+          divide_planes_q[j*PLANES +: PLANES] <= divide_planes_next[(j-1)*PLANES +: PLANES];
+          divide_spans_q[j*SPANS +: SPANS] <= divide_spans_next[(j-1)*SPANS +: SPANS];
+          divide_pay_q[j*PAY +: PAY] <= divide_pay_q[(j-1)*PAY +: PAY];
+        end
+        out_planes_q <= divide_planes_next[(DIVIDE_STAGES-1)*PLANES +: PLANES];
+        out_spans_q <= divide_spans_next[(DIVIDE_STAGES-1)*SPANS +: SPANS];
+        out_pay_q <= divide_pay_q[(DIVIDE_STAGES-1)*PAY +: PAY];
+      end else begin
+        divide_planes_q <= divide_planes_next;
+        divide_spans_q <= divide_spans_next;
+      end
+    end
+
+    // ---- Output register: floor for negative dividends (as divider.sv), the record fields ----
+    genvar on, ok;
+    for (on = 0; on < 12; on = on + 1) begin : out_plane
+      localparam integer QB = on < 3 ? ZRB : CRB;
+      wire negative = out_planes_q[on*PLANE_W + PLANE_W - 1];
+      wire remainder_nonzero = out_planes_q[on*PLANE_W + DIVIDER_BITS +: AB] != {AB{1'b0}};
+      wire [QB-1:0] magnitude = out_planes_q[on*PLANE_W +: QB];
+      wire [QB-1:0] quotient = !negative ? magnitude : remainder_nonzero ? ~magnitude : -magnitude;
+    end
+    assign out_depth_start = out_plane[0].quotient;
+    assign out_depth_step_x = out_plane[1].quotient;
+    assign out_depth_step_y = out_plane[2].quotient;
+    for (ok = 0; ok < 3; ok = ok + 1) begin : out_edge
+      assign out_color_start[ok*CRB +: CRB] = out_plane[3 + 3*ok].quotient;
+      assign out_color_step_x[ok*CRB +: CRB] = out_plane[4 + 3*ok].quotient;
+      assign out_color_step_y[ok*CRB +: CRB] = out_plane[5 + 3*ok].quotient;
+      wire [SXB-1:0] step_x = out_pay_q[P_SX + ok*SXB +: SXB];
+      wire [SXB-1:0] divisor = step_x[SXB-1] ? -step_x : step_x;
+      wire horizontal = step_x == {SXB{1'b0}};
+      wire [SPAN_W-1:0] start_div = out_spans_q[(2*ok)*SPAN_W +: SPAN_W];
+      wire [SPAN_W-1:0] step_div = out_spans_q[(2*ok+1)*SPAN_W +: SPAN_W];
+      wire start_negative = start_div[SPAN_W-1], step_negative = step_div[SPAN_W-1];
+      wire [SXB-1:0] start_partial = start_div[EB +: SXB], step_partial = step_div[EB +: SXB];
+      wire [EB-1:0] start_magnitude = start_div[EB-1:0];
+      wire [SYB-1:0] step_magnitude = step_div[SYB-1:0];
+      wire [EB-1:0] start_quot = !start_negative ? start_magnitude
+                               : start_partial != 0 ? ~start_magnitude : -start_magnitude;
+      wire [SYB-1:0] step_quot = !step_negative ? step_magnitude
+                               : step_partial != 0 ? ~step_magnitude : -step_magnitude;
+      // Remainders are < |step_x| < 2^RB: the top bit is zero.
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire [SXB-1:0] start_rem = (start_negative && start_partial != 0) ? divisor - start_partial : start_partial;
+      wire [SXB-1:0] step_rem = (step_negative && step_partial != 0) ? divisor - step_partial : step_partial;
+      /* verilator lint_on UNUSEDSIGNAL */
+      assign out_edge_start[ok*EB +: EB] = out_pay_q[P_ES + ok*EB +: EB];
+      assign out_edge_step_x[ok*SXB +: SXB] = step_x;
+      assign out_edge_step_y[ok*SYB +: SYB] = out_pay_q[P_SY + ok*SYB +: SYB];
+      assign out_span_quot[ok*EB +: EB] = horizontal ? {EB{1'b0}} : start_quot;
+      assign out_span_rem[ok*RB +: RB] = horizontal ? {RB{1'b0}} : start_rem[RB-1:0];
+      assign out_span_step_quot[ok*SYB +: SYB] = horizontal ? {SYB{1'b0}} : step_quot;
+      assign out_span_step_rem[ok*RB +: RB] = horizontal ? {RB{1'b0}} : step_rem[RB-1:0];
+    end
+    assign out_x0 = out_pay_q[P_X0 +: XB];
+    assign out_x1 = out_pay_q[P_X1 +: XB];
+    assign out_y0 = out_pay_q[P_Y0 +: YB];
+    assign out_y1 = out_pay_q[P_Y1 +: YB];
+    assign out_flat_rgb = out_pay_q[P_RGB +: 24];
+  end
+  endgenerate
+
+  // Vertices (no reset: loaded before use).
+  integer v;
+  always @(posedge clk) begin
+    if (load_vertices) begin
+      for (v = 0; v < 3; v = v + 1) begin
+        vx[v] <= in_x[v*CB +: CB];
+        vy[v] <= in_y[v*CB +: CB];
+        vz[v] <= in_z[v*Z_BITS +: Z_BITS];
+        vrgb[v] <= in_rgb[v*24 +: 24];
       end
     end
   end

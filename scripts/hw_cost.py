@@ -48,7 +48,7 @@ UNITS = {
     "rastersim_top": "TOP WITH FRAME MEMORY ON CHIP: rastersim_core + zbuffer_memory",
 }
 PROFILE_PARAMETERS = ["WIDTH", "HEIGHT", "SUBPIXEL_BITS", "Z_BITS", "Z_GUARD_BITS", "MAX_MEMORY_LATENCY",
-                      "MAX_SETUP_FIFO_DEPTH"]
+                      "MAX_SETUP_FIFO_DEPTH", "SETUP_INTERVAL"]
 DEVICES = {"hx8k": ("--hx8k", "ct256", 7680, 32), "up5k": ("--up5k", "sg48", 5280, 30), "hx1k": ("--hx1k", "tq144", 1280, 16)}
 BRAM_BITS = 4096  # SB_RAM40_4K
 MEMORY_UNITS = {"zbuffer_memory", "rastersim_top"}  # the units that hold the frame memory
@@ -337,7 +337,7 @@ def main():
     global RTL
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     defaults = {"WIDTH": 640, "HEIGHT": 480, "SUBPIXEL_BITS": 4, "Z_BITS": 24, "Z_GUARD_BITS": 0, "MAX_MEMORY_LATENCY": 64,
-                "MAX_SETUP_FIFO_DEPTH": 1}
+                "MAX_SETUP_FIFO_DEPTH": 1, "SETUP_INTERVAL": 0}
     for p in PROFILE_PARAMETERS:
         parser.add_argument("--" + p.lower().replace("_", "-"), type=int, default=defaults[p], dest=p)
     parser.add_argument("--device", choices=sorted(DEVICES), default="hx8k")

@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # Bug injection: copies rtl/ with one bug each, verilates the copy (64 x 48 profile) with
-# testbench/mutant_check.cpp and requires the co-simulation to catch the bug with a first-divergence
+# testbench/mutant_check.cpp (the setup_* mutants with the pipelined setup, SETUP_INTERVAL 2) and requires the co-simulation to catch the bug with a first-divergence
 # report. Usage: rtl-mutants.sh BUILD_DIR [mutant ...]  (BUILD_DIR holds librastersim_rtl.a).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(cd "${1:?usage: rtl-mutants.sh BUILD_DIR [mutant ...]}" && pwd)"
 shift
 mutants=("$@")
-[ ${#mutants[@]} -eq 0 ] && mutants=(edge_compare z_adder_carry hazard_stall divider_rounding)
+[ ${#mutants[@]} -eq 0 ] && mutants=(edge_compare z_adder_carry hazard_stall divider_rounding
+                                     setup_slot_counter setup_floor_correction setup_missing_step
+                                     setup_credit_count setup_fifo_empty)
 
-# name -> file, text to replace, replacement (fixed strings).
-declare -A file from to
+# name -> file, text to replace, replacement (fixed strings); params: extra verilator -G settings.
+declare -A file from to params
 file[edge_compare]=scanline_walker.sv
 from[edge_compare]='!edge_value[0][EB-1]'
 to[edge_compare]='(edge_value[0] > 0)'            # edge test E >= 0 becomes E > 0
@@ -23,6 +25,25 @@ to[hazard_stall]='wire can_accept = mem_clear_done;'  # read-after-write stall r
 file[divider_rounding]=divider.sv
 from[divider_rounding]=': remainder_nonzero ? ~quotient_mag'
 to[divider_rounding]=': 1'"'"'b0 ? ~quotient_mag'     # negative quotients truncate instead of floor
+# The pipelined setup unit and the record FIFO.
+for m in setup_slot_counter setup_floor_correction setup_missing_step setup_credit_count setup_fifo_empty; do
+  params[$m]="-GSETUP_INTERVAL=2"
+done
+file[setup_slot_counter]=triangle_setup.sv
+from[setup_slot_counter]='localparam integer LAST_PHASE = I - 1;'
+to[setup_slot_counter]='localparam integer LAST_PHASE = I;'  # the slot counter wraps one late
+file[setup_floor_correction]=triangle_setup.sv
+from[setup_floor_correction]='!negative ? magnitude : remainder_nonzero ? ~magnitude : -magnitude;'
+to[setup_floor_correction]='!negative ? magnitude : -magnitude;'  # no floor step for a remainder
+file[setup_missing_step]=triangle_setup.sv
+from[setup_missing_step]='NUMER_STEPS - Z_BITS;'
+to[setup_missing_step]='NUMER_STEPS - Z_BITS + 1;'  # one shift-add step of the numerators skipped
+file[setup_credit_count]=rastersim_core.sv
+from[setup_credit_count]='credits_held < setup_fifo_depth_q;'
+to[setup_credit_count]='credits_held <= setup_fifo_depth_q;'  # one record credit too many
+file[setup_fifo_empty]=setup_fifo.sv
+from[setup_fifo_empty]='assign empty = count == {COUNT_BITS{1'"'"'b0}};'
+to[setup_fifo_empty]='assign empty = count <= {{(COUNT_BITS-1){1'"'"'b0}}, 1'"'"'b1};'  # one record looks like none
 
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
@@ -43,7 +64,7 @@ PY
   echo "mutant $m: ${file[$m]}: '${from[$m]}' -> '${to[$m]}'"
   if ! verilator --cc --exe --build -j 2 -Wno-fatal -Wno-lint -Wno-style --x-assign unique --x-initial unique \
       -I"$dir/rtl" "$dir"/rtl/*.sv --top-module rastersim_top --prefix Vmutant -Mdir "$dir/obj" \
-      -GWIDTH=64 -GHEIGHT=48 -GSUBPIXEL_BITS=4 -GZ_BITS=24 -GMAX_MEMORY_LATENCY=8 --trace-fst \
+      -GWIDTH=64 -GHEIGHT=48 -GSUBPIXEL_BITS=4 -GZ_BITS=24 -GMAX_MEMORY_LATENCY=8 ${params[$m]:-} --trace-fst \
       "$root/testbench/mutant_check.cpp" -o mutant_check \
       -CFLAGS "-std=gnu++17 -O1 -I$root -isystem $build/testbench" \
       -LDFLAGS "$build/testbench/librastersim_rtl.a $build/librastersim_model.a" > "$dir/build.log" 2>&1; then

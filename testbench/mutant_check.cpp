@@ -20,10 +20,12 @@ int main(int argc, char** argv) {
   p.height = int(Core::P_HEIGHT);
   p.subpixel_bits = int(Core::P_SUBPIXEL_BITS);
   p.z_bits = int(Core::P_Z_BITS);
+  p.setup_interval = int(Core::P_SETUP_INTERVAL);
   for (Traversal traversal : {Traversal::BBox, Traversal::Span}) {
     for (int latency : {2, 4}) {
       p.traversal = traversal;
       p.memory_latency = latency;
+      p.setup_fifo_depth = latency == 2 ? 1 : 4;  // one record at a time, and a FIFO that fills
       std::vector<CosimCase> cases = directed_cases(p);
       for (uint64_t seed = 1; seed <= 3; ++seed) cases.push_back(random_case(p, seed, 40));
       for (const CosimCase& c : cases) {

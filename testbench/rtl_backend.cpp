@@ -17,7 +17,7 @@ std::vector<std::string> built_configurations() {
     std::ostringstream s;
     s << c.name << ": " << c.width << "x" << c.height << " subpixel_bits " << c.subpixel_bits << " z_bits "
       << c.z_bits << " z_guard_bits " << (c.z_guard_bits ? std::to_string(c.z_guard_bits) : "auto")
-      << " memory_latency 1.." << c.max_memory_latency;
+      << " memory_latency 1.." << c.max_memory_latency << " setup_interval " << c.setup_interval;
     out.push_back(s.str());
   }
   return out;
@@ -30,7 +30,7 @@ const BuiltConfiguration* find_configuration(const Profile& p) {
   for (const BuiltConfiguration& c : built_configuration_table()) {
     const int built_guard = derive_widths(c.width, c.height, c.subpixel_bits, c.z_bits, c.z_guard_bits).guard_bits;
     if (c.width == p.width && c.height == p.height && c.subpixel_bits == p.subpixel_bits && c.z_bits == p.z_bits &&
-        built_guard == guard)
+        built_guard == guard && c.setup_interval == p.setup_interval)
       return &c;
   }
   return nullptr;
@@ -51,10 +51,11 @@ std::string configuration_error(const Profile& p) {
     std::string message = "no RTL is built for width " + std::to_string(p.width) + ", height " +
                           std::to_string(p.height) + ", subpixel_bits " + std::to_string(p.subpixel_bits) +
                           ", z_bits " + std::to_string(p.z_bits) + ", guard bits " +
-                          std::to_string(derive_widths(p).guard_bits) + "; built:";
+                          std::to_string(derive_widths(p).guard_bits) + ", setup_interval " +
+                          std::to_string(p.setup_interval) + "; built:";
     for (const std::string& b : built_configurations()) message += " [" + b + "]";
     return message + ". To build it, add an entry to RASTERSIM_RTL_CONFIGS in testbench/CMakeLists.txt "
-                     "(name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency) and rebuild.";
+                     "(name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency:setup_interval) and rebuild.";
   }
   if (p.memory_latency > c->max_memory_latency)
     return "memory_latency " + std::to_string(p.memory_latency) + " exceeds the built RTL's maximum " +

@@ -9,7 +9,7 @@ namespace rastersim::rtl {
 
 struct BuiltConfiguration {
   const char* name;
-  int width, height, subpixel_bits, z_bits, z_guard_bits, max_memory_latency;
+  int width, height, subpixel_bits, z_bits, z_guard_bits, max_memory_latency, setup_interval;
   RtlResult (*run)(const Profile&, const std::vector<SnappedTriangle>&, const RtlOptions&);
 };
 

@@ -28,7 +28,8 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
   if (p.setup_fifo_depth > int(Core::P_MAX_SETUP_FIFO_DEPTH))
     throw std::invalid_argument("setup_fifo_depth " + std::to_string(p.setup_fifo_depth) +
                                 " exceeds the RTL's MAX_SETUP_FIFO_DEPTH " + std::to_string(int(Core::P_MAX_SETUP_FIFO_DEPTH)));
-  const int coord_bits = Core::COORD_BITS, setup_cycles = Core::SETUP_CYCLES;
+  const int coord_bits = Core::COORD_BITS;
+  const int setup_cycles = std::max(int(Core::SETUP_CYCLES), int(Core::SETUP_DRAWN_LATENCY) + 1);
   auto context = std::make_unique<VerilatedContext>();
   context->randReset(2);
   context->randSeed(int(options.seed % 2147483647u) + 1);

@@ -100,7 +100,8 @@ TEST(Docs, ArithmeticWorkedExample) {
   }
 }
 
-TEST(Docs, CycleModelWorkedExample) {
+// Runs the keys of one example-timeline block: a profile key sets it, `traversal` (re)runs the frame.
+void check_timeline(const std::string& block) {
   Profile p = worked_profile();
   std::vector<TriangleRecord> records;
   FrameStats stats;
@@ -111,13 +112,16 @@ TEST(Docs, CycleModelWorkedExample) {
     for (const SnappedTriangle& t : worked_triangles(p)) pipe.submit(t);
     stats = pipe.stats();
   };
-  for (const auto& [key, value] : doc_block("cycle-model.md", "example-timeline")) {
+  for (const auto& [key, value] : doc_block("cycle-model.md", block)) {
     SCOPED_TRACE(key + " = " + value);
     if (key == "traversal") {
       p.traversal = *parse_traversal(value);
       run();
+    } else if (key == "setup_interval" || key == "setup_fifo_depth") {
+      EXPECT_EQ(set_profile_key(p, key, value), "");
     } else if (key == "divider_bits") EXPECT_EQ(std::to_string(derive_widths(p).divider_bits), value);
     else if (key == "setup_cycles") EXPECT_EQ(std::to_string(derive_widths(p).setup_cycles), value);
+    else if (key == "setup_latency") EXPECT_EQ(std::to_string(setup_timing(p).drawn_latency), value);
     else if (key.rfind("tri", 0) == 0) {
       const TriangleRecord& r = records.at(size_t(key[3] - '0'));
       EXPECT_EQ("setup_accept " + std::to_string(r.setup_accept) + " setup_done " + std::to_string(r.setup_done) +
@@ -130,6 +134,9 @@ TEST(Docs, CycleModelWorkedExample) {
     else ADD_FAILURE() << "unknown key";
   }
 }
+
+TEST(Docs, CycleModelWorkedExample) { check_timeline("example-timeline"); }
+TEST(Docs, CycleModelPipelinedSetupWorkedExample) { check_timeline("example-timeline-pipelined"); }
 
 TEST(Docs, WidthsTable) {
   for (const auto& [key, value] : doc_block("widths.md", "example-widths")) {

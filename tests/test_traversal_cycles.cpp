@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
 #include <limits>
 #include <map>
 #include <tuple>
@@ -198,6 +199,73 @@ TEST_P(CycleModel, OneTriangleCostsWhatTheRulesSay) {
     EXPECT_EQ(stats.cycles, std::max(r.walker_end, last_write) + 1);
   }
   EXPECT_GT(drawn, 250);
+}
+
+// The pipelined setup unit (setup_interval I >= 2, docs/cycle-model.md): accepts only in the first
+// cycle of a slot of I cycles, at most one per slot, with a free credit (found by brute force as
+// above); a drawn record in the output register I (1 + numerator slots + divide slots) cycles after
+// its accept, the slot counts re-derived here from the page's formulas; busy counted cycle by cycle.
+TEST_P(CycleModel, HandOffChainPipelinedSetup) {
+  for (int interval : {2, 3, 4, 16, 64}) {
+    for (int depth : {1, 4, 16}) {
+      Profile p = test::make_profile(80, 60, 4, GetParam(), 24);
+      p.memory_latency = 1;
+      p.setup_fifo_depth = depth;
+      p.setup_interval = interval;
+      const uint64_t seed = 11 + uint64_t(GetParam());
+      SCOPED_TRACE(::testing::Message() << describe(p) << " seed " << seed << " setup_fifo_depth " << depth
+                                        << " setup_interval " << interval);
+      TriangleGen gen(p, seed);
+      Pipeline pipe(p);
+      const Widths& w = pipe.widths();
+      std::vector<TriangleRecord> records;
+      pipe.set_triangle_log(&records);
+      std::vector<SnappedTriangle> scene;
+      for (int n = 0; n < 200; ++n) scene.push_back(random_scene_triangle(gen, n));
+      for (const SnappedTriangle& t : scene) pipe.submit(t);
+      const FrameStats& stats = pipe.stats();
+      ASSERT_EQ(records.size(), scene.size());
+      auto up = [](int a, int b) { return (a + b - 1) / b; };
+      const int numer_slots = up(p.z_bits, 4 * interval);
+      const int divide_slots = up(w.divider_bits, 4 * interval);
+      const int64_t latency = int64_t(interval) * (1 + numer_slots + divide_slots);
+      std::vector<std::pair<int64_t, int64_t>> credits;
+      std::set<int64_t> busy_cycles;
+      int64_t setup_free = 0, walker_end_prev = -1, last_busy = -1, setup_stall = 0;
+      for (size_t n = 0; n < scene.size(); ++n) {
+        const TriangleRecord& r = records[n];
+        const SnappedTriangle& t = scene[n];
+        SCOPED_TRACE(::testing::Message() << "triangle " << n << " " << describe(t));
+        auto held = [&](int64_t c) {
+          return std::count_if(credits.begin(), credits.end(), [c](auto h) { return h.first <= c && c <= h.second; });
+        };
+        int64_t accept = setup_free;
+        while (accept % interval != 0 || held(accept) >= depth) ++accept;
+        ASSERT_EQ(r.setup_accept, accept);
+        setup_stall += accept - setup_free;
+        setup_free = accept + interval;
+        const bool drawn = reference::twice_area(t) != 0 && !reference::bounding_box(t, p).empty();
+        ASSERT_EQ(r.status == SetupStatus::Drawn, drawn);
+        const int64_t done = drawn ? accept + latency : accept + 1;
+        ASSERT_EQ(r.setup_done, done);
+        for (int64_t c = accept; c <= done; ++c) busy_cycles.insert(c);
+        last_busy = std::max(last_busy, done);
+        if (!drawn) {
+          credits.push_back({accept + 1, accept + 1});
+          continue;
+        }
+        const int64_t load = std::max(done, walker_end_prev + 1);
+        ASSERT_EQ(r.walker_load, load);
+        ASSERT_EQ(r.walker_end, load + expected_walker_cycles(t, p, w) - 1);
+        walker_end_prev = r.walker_end;
+        last_busy = std::max({last_busy, r.walker_end, r.last_write});
+        credits.push_back({accept + 1, load});
+      }
+      EXPECT_EQ(stats.setup.busy, int64_t(busy_cycles.size()));
+      EXPECT_EQ(stats.setup.stall, setup_stall);
+      EXPECT_EQ(stats.cycles, last_busy + 1);
+    }
+  }
 }
 
 // Many triangles with L = 1, where no hazard can occur (consecutive triangles' fragments are at

@@ -47,6 +47,9 @@ std::string RastersimSystem::configuration_error(const Profile& p) {
   if (p.memory_latency > max_memory_latency())
     return "memory_latency " + std::to_string(p.memory_latency) + " exceeds the SystemC core's maximum " +
            std::to_string(max_memory_latency());
+  if (p.setup_interval != int(Core::P_SETUP_INTERVAL))
+    return "setup_interval " + std::to_string(p.setup_interval) + ": the SystemC core is built with setup_interval " +
+           std::to_string(int(Core::P_SETUP_INTERVAL));
   if (p.setup_fifo_depth > int(Core::P_MAX_SETUP_FIFO_DEPTH))
     return "setup_fifo_depth " + std::to_string(p.setup_fifo_depth) + " exceeds the SystemC core's maximum " +
            std::to_string(int(Core::P_MAX_SETUP_FIFO_DEPTH));

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <climits>
 #include <filesystem>
 #include <tuple>
 
@@ -106,6 +107,44 @@ INSTANTIATE_TEST_SUITE_P(BothTraversals, SmallDirected,
                                             ::testing::Values(1, 2, 8)),
                          [](const auto& info) {
                            return std::string(to_string(std::get<0>(info.param))) + "_latency" +
+                                  std::to_string(std::get<1>(info.param));
+                         });
+
+// ---- the pipelined setup unit (configuration small_i2: setup_interval 2) ----
+
+class PipelinedSetup : public ::testing::TestWithParam<std::tuple<Traversal, int>> {};
+
+TEST_P(PipelinedSetup, MatchesModelEveryCycle) {
+  Profile p = small_profile();
+  p.setup_interval = 2;
+  std::tie(p.traversal, p.setup_fifo_depth) = GetParam();
+  ASSERT_EQ(configuration_error(p), "");
+  int64_t closest = INT64_MAX, stall = 0;
+  auto check = [&](const CosimCase& c, uint64_t seed) {
+    const CosimReport r = check_frame(p, c, seed);
+    const std::vector<TriangleRecord>& t = r.rtl.triangles;
+    for (size_t i = 1; i < t.size(); ++i) closest = std::min(closest, t[i].setup_accept - t[i - 1].setup_accept);
+    stall += r.rtl.stats.setup.stall;
+    return r.passed;
+  };
+  for (const CosimCase& c : directed_cases(p))
+    if (!check(c, 7)) return;
+  for (uint64_t seed = 1; seed <= 6; ++seed) {
+    p.memory_latency = int(1 + seed % 8);
+    p.shading = seed % 3 == 0 ? Shading::Flat : Shading::Gouraud;
+    p.cull = CullMode(seed % 3);
+    if (!check(random_case(p, seed * 104729, 60), seed)) return;
+  }
+  // Triangles do enter every interval, and the credits do hold some back.
+  EXPECT_EQ(closest, 2);
+  EXPECT_GT(stall, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(TraversalsAndFifoDepths, PipelinedSetup,
+                         ::testing::Combine(::testing::Values(Traversal::BBox, Traversal::Span),
+                                            ::testing::Values(1, 4, 16)),
+                         [](const auto& info) {
+                           return std::string(to_string(std::get<0>(info.param))) + "_fifo" +
                                   std::to_string(std::get<1>(info.param));
                          });
 

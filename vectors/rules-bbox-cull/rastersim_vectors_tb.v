@@ -26,6 +26,7 @@ module rastersim_vectors_tb;
   localparam integer ADDR_BITS = 11;
   localparam integer LATENCY_BITS = 1;
   localparam integer SETUP_FIFO_DEPTH = 1;  // cfg_setup_fifo_depth and MAX_SETUP_FIFO_DEPTH
+  localparam integer SETUP_INTERVAL = 0;  // 0: parallel-divider setup; I: pipelined
   // The vectors.
   localparam integer TRIANGLES = 138;  // commands.hex, triangles.hex
   localparam integer DRAWN = 62;  // setup.hex
@@ -70,7 +71,7 @@ module rastersim_vectors_tb;
   rastersim_top #(
     .WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
     .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MEMORY_LATENCY),
-    .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH)
+    .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL)
   ) dut (
     .clk(clk), .rst(rst),
     // The profile's run-time keys, sampled while rst is high.
