@@ -40,11 +40,11 @@ struct Profile {
   // Setup records that may be on their way to the walker: accepted by the setup unit (and not
   // rejected) but not yet loaded by the walker, 1..16. 1: the walker must take a record before the
   // setup unit accepts the next triangle. docs/cycle-model.md.
-  int setup_fifo_depth = 1;
+  int setup_fifo_depth = 8;
   // Initiation interval of the setup unit: 0 = the parallel-divider unit (one triangle at a time,
   // divider_bits + 3 cycles per drawn triangle); 2..64 = the pipelined unit, which accepts a
   // triangle every I cycles at best. docs/cycle-model.md.
-  int setup_interval = 0;
+  int setup_interval = 4;
 
   uint32_t depth_max() const { return uint32_t((uint64_t(1) << z_bits) - 1); }
   uint32_t depth_clear_value() const { return depth_clear < 0 ? depth_max() : uint32_t(depth_clear); }

@@ -45,6 +45,7 @@ TEST(ProfileValidate, EachKeyJustOutsideItsRangeIsRejectedByName) {
       {"memory_latency", [](Profile& p, int64_t v) { p.memory_latency = int(v); }, 1, 64},
       {"memory_stall_percent", [](Profile& p, int64_t v) { p.memory_stall_percent = int(v); }, 0, 90},
       {"setup_fifo_depth", [](Profile& p, int64_t v) { p.setup_fifo_depth = int(v); }, 1, 16},
+      {"setup_interval", [](Profile& p, int64_t v) { p.setup_interval = int(v); }, 2, 64},
   };
   for (const RangeKey& k : keys) {
     for (int64_t ok : {k.lo, k.hi}) {
@@ -61,6 +62,10 @@ TEST(ProfileValidate, EachKeyJustOutsideItsRangeIsRejectedByName) {
       EXPECT_TRUE(mentions(errors[0], std::to_string(bad))) << errors[0];
     }
   }
+  // setup_interval 0: the parallel-divider unit, below the pipelined unit's range.
+  Profile parallel;
+  parallel.setup_interval = 0;
+  EXPECT_TRUE(validate(parallel).empty());
   // memory_stall_seed: any non-negative int.
   Profile seeded;
   seeded.memory_stall_seed = INT32_MAX;

@@ -144,6 +144,7 @@ class CycleModel : public ::testing::TestWithParam<Traversal> {};
 
 TEST_P(CycleModel, OneTriangleCostsWhatTheRulesSay) {
   Profile p = test::make_profile(80, 60, 4, GetParam(), 20);
+  p.setup_interval = 0;  // the parallel-divider setup's timing (the pipelined one: HandOffChainPipelinedSetup)
   const uint64_t seed = 99 + uint64_t(GetParam());
   SCOPED_TRACE(::testing::Message() << describe(p) << " seed " << seed);
   TriangleGen gen(p, seed);
@@ -278,6 +279,7 @@ TEST_P(CycleModel, HandOffChainOverAScene) {
     Profile p = test::make_profile(80, 60, 4, GetParam(), 24);
     p.memory_latency = 1;
     p.setup_fifo_depth = depth;
+    p.setup_interval = 0;  // the parallel-divider setup's timing
     const uint64_t seed = 7 + uint64_t(GetParam());
     SCOPED_TRACE(::testing::Message() << describe(p) << " seed " << seed << " setup_fifo_depth " << depth);
     TriangleGen gen(p, seed);
@@ -414,6 +416,7 @@ class ZBufferHazard : public ::testing::TestWithParam<Traversal> {};
 
 TEST_P(ZBufferHazard, SameAddressWaitsLPlusOneOthersNever) {
   Profile p = test::make_profile(16, 16, 4, GetParam(), 16);
+  p.setup_interval = 0;  // the parallel-divider setup's timing (the pipelined one: HandOffChainPipelinedSetup)
   const int S = p.subpixel_bits;
   const Widths w = derive_widths(p);
   const int64_t setup_cycles = 2 + w.divider_bits + 1;

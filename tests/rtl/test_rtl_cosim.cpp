@@ -176,6 +176,8 @@ INSTANTIATE_TEST_SUITE_P(DefaultAndHires, BuiltProfiles,
 TEST(RtlCycles, WorkedExampleOfTheCycleModel) {
   Profile p = small_profile();
   p.memory_latency = 4;
+  p.setup_interval = 0;  // the parallel-divider unit, one record at a time (configuration small_parallel)
+  p.setup_fifo_depth = 1;
   // Not the 16 x 12 profile of the page (no RTL is built for it): the same rules on the small
   // screen give the same event cycles apart from divider_bits, checked against the model here.
   SnappedTriangle tiny;
@@ -194,6 +196,34 @@ TEST(RtlCycles, WorkedExampleOfTheCycleModel) {
   EXPECT_EQ(r.rtl.triangles[1].setup_accept, setup_cycles);
   EXPECT_EQ(r.rtl.triangles[1].setup_done, 2 * setup_cycles - 1);
   EXPECT_EQ(r.rtl.fragments[1].cycle, 2 * setup_cycles + 1);  // no hazard: long after the write
+  EXPECT_EQ(r.rtl.stats.cycles, r.rtl.fragments[1].cycle + p.memory_latency + 1);
+}
+
+// The pipelined unit's worked example (docs/cycle-model.md) on the small screen, setup_interval 4:
+// the second copy enters one slot after the first and its fragment meets the first one's write.
+TEST(RtlCycles, PipelinedSetupWorkedExample) {
+  Profile p = small_profile();
+  p.memory_latency = 4;
+  p.setup_interval = 4;
+  p.setup_fifo_depth = 2;
+  SnappedTriangle tiny;
+  for (int k = 0; k < 3; ++k) tiny.v[k].z = 100;
+  tiny.v[0].x = 5 * 16 + 2, tiny.v[0].y = 9 * 16 + 2;
+  tiny.v[1].x = 5 * 16 + 14, tiny.v[1].y = 9 * 16 + 8;
+  tiny.v[2].x = 5 * 16 + 4, tiny.v[2].y = 9 * 16 + 14;
+  const CosimReport r = cosim(p, {tiny, tiny});
+  ASSERT_TRUE(r.passed) << r.message();
+  // Slots: 1 FRONT, ceil(24 / 16) = 2 numerator, ceil(divider_bits / 16) divide.
+  const int64_t latency = 4 * (1 + 2 + (derive_widths(p).divider_bits + 15) / 16);
+  ASSERT_EQ(r.rtl.fragments.size(), 2u);
+  EXPECT_EQ(r.rtl.triangles[0].setup_done, latency);
+  EXPECT_EQ(r.rtl.fragments[0].cycle, latency + 2);  // load, row cycle, pixel
+  EXPECT_EQ(r.rtl.triangles[1].setup_accept, 4);
+  EXPECT_EQ(r.rtl.triangles[1].setup_done, 4 + latency);
+  // The walker is free after latency + 2; the record comes one slot after the first one's.
+  EXPECT_EQ(r.rtl.triangles[1].walker_load, 4 + latency);
+  // Presented in latency + 6 (load, row cycle), held by the hazard until L + 1 after the first.
+  EXPECT_EQ(r.rtl.fragments[1].cycle, latency + 2 + p.memory_latency + 1);
   EXPECT_EQ(r.rtl.stats.cycles, r.rtl.fragments[1].cycle + p.memory_latency + 1);
 }
 

@@ -25,15 +25,15 @@ module rastersim_vectors_tb;
   localparam integer Y_BITS = 6;
   localparam integer ADDR_BITS = 12;
   localparam integer LATENCY_BITS = 2;
-  localparam integer SETUP_FIFO_DEPTH = 1;  // cfg_setup_fifo_depth and MAX_SETUP_FIFO_DEPTH
-  localparam integer SETUP_INTERVAL = 0;  // 0: parallel-divider setup; I: pipelined
+  localparam integer SETUP_FIFO_DEPTH = 8;  // cfg_setup_fifo_depth and MAX_SETUP_FIFO_DEPTH
+  localparam integer SETUP_INTERVAL = 4;  // 0: parallel-divider setup; I: pipelined
   // The vectors.
   localparam integer TRIANGLES = 5719;  // commands.hex, triangles.hex
   localparam integer DRAWN = 1691;  // setup.hex
   localparam integer FRAGMENTS = 2354;  // fragments.hex
   localparam integer WORDS = 3072;  // depth.hex, color.hex: WIDTH * HEIGHT
-  localparam integer CYCLES = 109516;  // the frame's expected cycles (frame.hex)
-  localparam integer CYCLE_BOUND = 439064;  // the frame is abandoned after 4 CYCLES + 1000
+  localparam integer CYCLES = 24878;  // the frame's expected cycles (frame.hex)
+  localparam integer CYCLE_BOUND = 100512;  // the frame is abandoned after 4 CYCLES + 1000
   localparam integer CLEAR_BOUND = WORDS + 16;  // cycles the memory clear after reset may take
   localparam integer SHOWN = 20;  // mismatches printed
   localparam integer TRIANGLE_SLOTS = 5719;  // array sizes, at least 1
@@ -83,7 +83,7 @@ module rastersim_vectors_tb;
     .cfg_traversal(1'd1),  // span
     .cfg_shading(1'd1),  // gouraud
     .cfg_memory_latency(2'd2),
-    .cfg_setup_fifo_depth(1'd1),
+    .cfg_setup_fifo_depth(4'd8),
     .frame_ready(frame_ready),
     .cmd_valid(cmd_valid), .cmd_ready(cmd_ready),
     .cmd_x0(cmd_x0), .cmd_y0(cmd_y0), .cmd_x1(cmd_x1), .cmd_y1(cmd_y1), .cmd_x2(cmd_x2), .cmd_y2(cmd_y2),
