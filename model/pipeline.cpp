@@ -1,6 +1,6 @@
 #include "pipeline.h"
 
-#include "zbuffer_avx512.h"
+#include "fast/fast_walk.h"
 
 #include <algorithm>
 
@@ -14,10 +14,7 @@ Pipeline::Pipeline(const Profile& profile)
       adders_(setup_.widths(), profile.z_bits, profile.shading == Shading::Gouraud),
       zbuffer_(profile),
       credit_release_(size_t(profile.setup_fifo_depth), -1) {
-#ifdef RASTERSIM_HAVE_AVX512_KERNEL
-  // The selected run kernel is the inline one, and it holds this profile's colour registers.
-  avx512_walk_ = zbuffer_.selected_run_kernel() == "avx512-masked" && avx512_masked_fits(adders_.run());
-#endif
+  avx512_walk_ = FastWalk::avx512_applies(*this);
 }
 
 void Pipeline::reset() {
@@ -32,65 +29,20 @@ void Pipeline::reset() {
   last_busy_ = -1;
 }
 
-// The walker's fragment output, wired to the z-buffer's input.
-template <bool Trace, bool Avx512>
-struct Pipeline::Glue {
+// One fragment at a time, each reported to the sink: the specification's walk, which the
+// co-simulation compares with the RTL.
+struct Pipeline::TracedSink {
   Pipeline& p;
   TriangleRecord& record;
   int64_t fragment(int x, int y, const ZAdder& adders, int64_t cycle) {
-    const uint32_t address = uint32_t(y) * uint32_t(p.profile_.width) + uint32_t(x);
-    const int64_t accepted = p.zbuffer_.accept(address, cycle);
-    const uint32_t z = adders.depth();
-    const Rgb color = adders.color();
-    const bool pass = p.zbuffer_.test_and_write(address, z, color);
-    ++record.fragments;
-    record.depth_pass += pass;
-    if (Trace) p.sink_->on_fragment(Fragment{record.index, x, y, z, color, pass, accepted});
-    return accepted;
-  }
-  // Without a trace, once no hazard can stall them, a run of fragments is accepted one per cycle:
-  // the z-buffer's timing at once, then each fragment's depth test and write in order.
-  bool run(int x, int y, int64_t n, ZAdder& adders, int64_t cycle) {
-    if (Trace || !p.zbuffer_.settled()) return false;
-    const uint32_t address = uint32_t(y) * uint32_t(p.profile_.width) + uint32_t(x);
-    p.zbuffer_.accept_run(address, cycle, n);
-    int64_t passes;
-    p.zbuffer_.prefetch_rows_below(address, n, 2);
-#ifdef RASTERSIM_HAVE_AVX512_KERNEL
-    if (Avx512) {  // every run, inlined
-      record.depth_pass += p.zbuffer_.test_and_write_run(address, n, adders.run(), run_avx512_masked);
-      adders.step_x(n);
-      record.fragments += n;
-      return true;
-    }
-#endif
-    if (n < p.zbuffer_.short_run_limit()) {
-      const ZAdder values = adders;  // a local copy the compiler keeps in machine registers
-      passes = p.zbuffer_.test_and_write_short_run(address, n, values);
-    } else {
-      passes = p.zbuffer_.test_and_write_run(address, n, adders.run());
-    }
-    adders.step_x(n);
-    record.fragments += n;
-    record.depth_pass += passes;
-    return true;
+    return p.take_fragment<true>(x, y, adders, cycle, record);
   }
 };
 
-template <bool Trace>
-int64_t Pipeline::walk(const SetupResult& s, int64_t load_cycle, TriangleRecord& record) {
-  Glue<Trace, false> glue{*this, record};
-  return walker_.walk(s, adders_, load_cycle, glue, walker_counters_);
+int64_t Pipeline::walk_traced(const SetupResult& s, int64_t load_cycle, TriangleRecord& record) {
+  TracedSink sink{*this, record};
+  return walker_.walk(s, adders_, load_cycle, sink, walker_counters_);
 }
-
-#ifdef RASTERSIM_HAVE_AVX512_KERNEL
-// The untraced walk compiled for AVX-512 with the run kernel inlined (flatten): no call per row.
-RASTERSIM_AVX512 __attribute__((flatten)) int64_t Pipeline::walk_avx512(const SetupResult& s, int64_t load_cycle,
-                                                                         TriangleRecord& record) {
-  Glue<false, true> glue{*this, record};
-  return walker_.walk(s, adders_, load_cycle, glue, walker_counters_);
-}
-#endif
 
 void Pipeline::submit(const SnappedTriangle& tri) {
   TriangleRecord record;
@@ -127,11 +79,8 @@ void Pipeline::submit(const SnappedTriangle& tri) {
     record.walker_load = std::max(record.setup_done, walker_free_);
     credit_release_[size_t(drawn_++ % int64_t(credit_release_.size()))] = record.walker_load;
     zbuffer_.begin_triangle(record.walker_load);  // the walker presents fragments after loading
-    if (sink_) record.walker_end = walk<true>(s, record.walker_load, record);
-#ifdef RASTERSIM_HAVE_AVX512_KERNEL
-    else if (avx512_walk_) record.walker_end = walk_avx512(s, record.walker_load, record);
-#endif
-    else record.walker_end = walk<false>(s, record.walker_load, record);
+    record.walker_end = sink_ ? walk_traced(s, record.walker_load, record)
+                              : FastWalk::walk(*this, s, record.walker_load, record);
     walker_free_ = record.walker_end + 1;
     if (record.fragments > 0) record.last_write = zbuffer_.last_busy_cycle();
     last_busy_ = std::max({last_busy_, record.setup_done, record.walker_end, zbuffer_.last_busy_cycle()});

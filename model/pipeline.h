@@ -83,12 +83,26 @@ class Pipeline {
   const SetupResult& last_setup() const { return last_setup_; }
 
  private:
-  template <bool Trace, bool Avx512>
-  struct Glue;
-  int64_t walk_avx512(const SetupResult& s, int64_t load_cycle, TriangleRecord& record);
-  bool avx512_walk_ = false;  // untraced triangles take walk_avx512
+  // Without a fragment sink the walk takes the fast path (fast/fast_walk.h): the same results.
+  friend struct FastWalk;
+  struct TracedSink;
+  int64_t walk_traced(const SetupResult& s, int64_t load_cycle, TriangleRecord& record);
+  bool avx512_walk_ = false;  // the fast path's choice, made once (FastWalk::avx512_applies)
+
+  // The walker's fragment output, wired to the z-buffer's input: its accept cycle, depth test and
+  // write; with Trace, reported to the sink.
   template <bool Trace>
-  int64_t walk(const SetupResult& s, int64_t load_cycle, TriangleRecord& record);
+  int64_t take_fragment(int x, int y, const ZAdder& adders, int64_t cycle, TriangleRecord& record) {
+    const uint32_t address = uint32_t(y) * uint32_t(profile_.width) + uint32_t(x);
+    const int64_t accepted = zbuffer_.accept(address, cycle);
+    const uint32_t z = adders.depth();
+    const Rgb color = adders.color();
+    const bool pass = zbuffer_.test_and_write(address, z, color);
+    ++record.fragments;
+    record.depth_pass += pass;
+    if (Trace) sink_->on_fragment(Fragment{record.index, x, y, z, color, pass, accepted});
+    return accepted;
+  }
 
   Profile profile_;
   TriangleSetup setup_;

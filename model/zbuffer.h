@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "fast/run_kernels.h"
 #include "profile.h"
 #include "triangle.h"
 #include "z_adder.h"
@@ -24,13 +25,6 @@ struct ZBufferCounters {
   int64_t depth_pass = 0;
   int64_t depth_fail = 0;
 };
-
-// test_and_write_run()'s loop exists in several versions (x86-64: avx512-masked, avx512, avx2,
-// generic); the best the CPU has is used. Every version gives the same results; tests run each.
-std::vector<std::string> run_kernel_versions();  // those this CPU can run, best first
-void select_run_kernel(const std::string& name);  // throws std::invalid_argument if not available
-using RunKernel = int64_t (*)(uint32_t* depth, uint32_t* color, int64_t n, unsigned pass_mask, bool depth_write,
-                              const ZAdder::Run& planes);
 
 class ZBuffer {
  public:
@@ -119,7 +113,7 @@ class ZBuffer {
   }
   int64_t short_run_limit() const { return short_run_limit_; }
   // The same with a kernel the caller names (inlined into the caller), for example the selected
-  // one's inline form (zbuffer_avx512.h) when selected_run_kernel() names it.
+  // one's inline form (fast/zbuffer_avx512.h) when selected_run_kernel() names it.
   template <class Kernel>
   int64_t test_and_write_run(uint32_t address, int64_t n, const ZAdder::Run& planes, Kernel kernel) {
     const int64_t passes = kernel(memory_.depth_words() + address, memory_.color_words() + address, n, pass_mask_,

@@ -1,12 +1,12 @@
 // The z-buffer's run kernel for AVX-512 (see ZBuffer::test_and_write_run), in a header so that the
-// pipeline's untraced walk can be compiled for AVX-512 with it inlined (model/pipeline.cpp).
+// untraced walk can be compiled for AVX-512 with it inlined (fast/fast_walk.cpp).
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
 
-#include "z_adder.h"
-#include "zbuffer.h"
+#include "model/z_adder.h"
+#include "model/zbuffer.h"
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
