@@ -129,7 +129,11 @@ CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
 
 int run_cosim(const CosimOptions& o) {
   const Profile profile = resolve_profile(o.profile);
-  if (o.count < 0) throw InputError("--count must not be negative");
+  // Frame indices must not overflow (a huge count once ran nothing and passed).
+  constexpr int64_t kMaxCount = 1000000000;
+  if (o.count < 0 || o.count > kMaxCount)
+    throw InputError("--count " + std::to_string(o.count) + " is outside 0.." + std::to_string(kMaxCount) +
+                     " (random frames; split a longer run with --shard and several seeds)");
   if (o.triangles < 1 || o.triangles > 100000) throw InputError("--triangles must be in 1..100000");
   const Shard shard = parse_shard(o.shard);
 #ifndef RASTERSIM_HAVE_RTL

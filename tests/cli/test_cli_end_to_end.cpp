@@ -344,6 +344,17 @@ TEST(CliRtl, CosimRejectsABadShardAndWritesNothing) {
   EXPECT_TRUE(dir.listing().empty());
 }
 
+// A count whose frame indices overflow once ran no frame and reported "0 passed, 0 failed", exit 0.
+TEST(CliRtl, CosimRefusesACountItCannotRun) {
+  ScratchDir dir;
+  for (const char* count : {"9223372036854775807", "1000000001", "-1"}) {
+    const RunResult r = run_rastersim(dir, {"cosim", "--count", count, "--width", "64", "--height", "48"});
+    EXPECT_EQ(r.exit_code, 2) << count;
+    EXPECT_TRUE(contains(r.err, "--count")) << r.err;
+    EXPECT_FALSE(contains(r.out, "passed")) << r.out;
+  }
+}
+
 TEST(CliRtl, CosimRefusesAProfileThatIsNotBuilt) {
   ScratchDir dir;
   const RunResult r = run_rastersim(dir, {"cosim", "--count", "1", "--width", "100"});
