@@ -39,7 +39,8 @@ int line_before_byte(const std::string& text, std::size_t byte) {
 // A recursive walk over valid JSON that records where each value starts.
 class Walker {
  public:
-  Walker(const std::string& text, std::map<std::string, int>& lines) : s_(text), lines_(lines) {}
+  Walker(const std::string& text, std::map<std::string, int>& lines, std::map<std::string, int>& repeated)
+      : s_(text), lines_(lines), repeated_(repeated) {}
   void run() {
     skip_space();
     value("", 0);
@@ -110,7 +111,7 @@ class Walker {
         const int key_line = line_;
         const std::string key = string_token();
         const std::string member = JsonLines::child(pointer, key);
-        lines_.emplace(member, key_line);
+        if (!lines_.emplace(member, key_line).second) repeated_.emplace(member, key_line);
         skip_space();
         ++at_;  // ':'
         skip_space();
@@ -144,6 +145,7 @@ class Walker {
 
   const std::string& s_;
   std::map<std::string, int>& lines_;
+  std::map<std::string, int>& repeated_;
   size_t at_ = 0;
   int line_ = 1;
 };
@@ -162,7 +164,12 @@ nlohmann::json parse_json_document(const std::string& text, const std::string& f
   }
 }
 
-JsonLines::JsonLines(const std::string& text) { Walker(text, lines_).run(); }
+JsonLines::JsonLines(const std::string& text) { Walker(text, lines_, repeated_).run(); }
+
+int JsonLines::repeated_line(const std::string& pointer) const {
+  const auto it = repeated_.find(pointer);
+  return it == repeated_.end() ? 0 : it->second;
+}
 
 int JsonLines::line(const std::string& pointer) const {
   std::string p = pointer;

@@ -22,12 +22,17 @@ class JsonLines {
   // 1 for the root.
   int line(const std::string& pointer) const;
 
+  // The line of the member's second occurrence when its object names it twice (the parser keeps the
+  // last value), else 0.
+  int repeated_line(const std::string& pointer) const;
+
   // "/a/b" + "c" with the JSON pointer escapes (~0, ~1).
   static std::string child(const std::string& pointer, const std::string& key);
   static std::string child(const std::string& pointer, size_t index) { return pointer + "/" + std::to_string(index); }
 
  private:
   std::map<std::string, int> lines_;
+  std::map<std::string, int> repeated_;
 };
 
 }  // namespace rastersim

@@ -1,8 +1,10 @@
 #include "profile.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -114,7 +116,12 @@ std::string set_profile_key(Profile& p, const std::string& key, const std::strin
   if (key == "height") return integer(p.height);
   if (key == "subpixel_bits") return integer(p.subpixel_bits);
   if (key == "z_bits") return integer(p.z_bits);
-  if (key == "z_guard_bits") return value == "auto" ? (p.z_guard_bits = 0, "") : integer(p.z_guard_bits);
+  if (key == "z_guard_bits") {
+    if (value == "auto") return p.z_guard_bits = 0, "";
+    // 0 is how the profile holds 'auto'; written as a number it is out of range.
+    if (parse_int(value, n) && n == 0) return "z_guard_bits is 0; it must be in 1..24, or auto";
+    return integer(p.z_guard_bits);
+  }
   if (key == "memory_latency") return integer(p.memory_latency);
   if (key == "memory_stall_percent") return integer(p.memory_stall_percent);
   if (key == "memory_stall_seed") return integer(p.memory_stall_seed);
@@ -150,16 +157,43 @@ void load_profile_text(Profile& profile, const std::string& text, const std::str
   const nlohmann::json doc = parse_json_document(text, file_name);
   if (!doc.is_object()) throw InputError(file_name, 1, "a profile must be a JSON object");
   const JsonLines lines(text);
+  // JSON types as docs/formats.md gives them: numbers for the integer keys (z_guard_bits also
+  // "auto", depth_clear also "max"), true/false for depth_write, strings for the others.
+  auto type_error = [](const std::string& key, const nlohmann::json& v) -> std::string {
+    static const std::set<std::string> integers = {"width", "height", "subpixel_bits", "z_bits", "memory_latency",
+                                                   "memory_stall_percent", "memory_stall_seed", "setup_fifo_depth",
+                                                   "setup_interval"};
+    const bool is_integer = v.is_number_integer() || v.is_number_unsigned();
+    if (integers.count(key)) return is_integer ? "" : key + " must be a JSON integer, not " + v.dump();
+    if (key == "z_guard_bits" || key == "depth_clear") {
+      const char* word = key == "z_guard_bits" ? "\"auto\"" : "\"max\"";
+      return is_integer || v.is_string() ? "" : key + " must be a JSON integer or " + word + ", not " + v.dump();
+    }
+    if (key == "depth_write") return v.is_boolean() ? "" : key + " must be true or false, not " + v.dump();
+    return v.is_string() ? "" : key + " must be a JSON string, not " + v.dump();
+  };
   for (auto it = doc.begin(); it != doc.end(); ++it) {
-    const int line = lines.line(JsonLines::child("", it.key()));
+    const std::string pointer = JsonLines::child("", it.key());
+    const int line = lines.line(pointer);
+    if (const int again = lines.repeated_line(pointer))
+      throw InputError(file_name, again, "profile key '" + it.key() + "' is given twice (first on line " +
+                                             std::to_string(line) + ")");
     std::string value;
     if (it->is_string()) value = it->get<std::string>();
     else if (it->is_boolean()) value = it->get<bool>() ? "true" : "false";
     else if (it->is_number_unsigned()) value = std::to_string(it->get<uint64_t>());  // above INT64_MAX too
     else if (it->is_number_integer()) value = std::to_string(it->get<int64_t>());
     else throw InputError(file_name, line, "profile key '" + it.key() + "' must be a string, integer or boolean");
-    const std::string error = set_profile_key(profile, it.key(), value);
+    std::string error = set_profile_key(profile, it.key(), value);
+    if (error.empty() && (it->is_string() || it->is_boolean() || it->is_number()) &&
+        std::count(profile_keys().begin(), profile_keys().end(), it.key()))
+      error = type_error(it.key(), *it);
     if (!error.empty()) throw InputError(file_name, line, error);
+  }
+  // Ranges (and depth_clear against z_bits) at the line of the key each error names.
+  for (const std::string& error : validate(profile)) {
+    const std::string key = error.substr(0, error.find(' '));
+    if (doc.contains(key)) throw InputError(file_name, lines.line(JsonLines::child("", key)), error);
   }
 }
 

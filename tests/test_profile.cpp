@@ -226,6 +226,18 @@ TEST(ProfileFile, ErrorsNameFileLineAndProblem) {
       {"unsigned.json", "{\n  \"depth_clear\": 18446744073709551615\n}\n", 2, "not '18446744073709551615'"},
       // Nesting deeper than any stack: the line finder steps over it (it recursed once per level).
       {"deep.json", deep_json.c_str(), 3, "profile key 'deep' must be a string, integer or boolean"},
+      // Ranges at the key's line (they were reported without file and line).
+      {"range.json", "{\n  \"width\": 64,\n  \"subpixel_bits\": 9\n}\n", 3, "subpixel_bits is 9"},
+      {"clear.json", "{\n  \"z_bits\": 16,\n  \"depth_clear\": 70000\n}\n", 3, "depth_clear is 70000"},
+      // JSON types as documented (a quoted number and a number for a boolean were taken).
+      {"quoted.json", "{\n  \"width\": \"64\"\n}\n", 2, "width must be a JSON integer"},
+      {"bool.json", "{\n  \"height\": 48,\n  \"depth_write\": 1\n}\n", 3, "depth_write must be true or false"},
+      {"enum_number.json", "{\n  \"cull\": 1\n}\n", 2, "cull"},
+      // 0 is not in 1..24 (it was taken as auto).
+      {"guard.json", "{\n  \"z_guard_bits\": 0\n}\n", 2, "z_guard_bits is 0"},
+      // A key given twice (the last one silently won).
+      {"twice.json", "{\n  \"width\": 64,\n  \"height\": 48,\n  \"width\": 32\n}\n", 4,
+       "'width' is given twice (first on line 2)"},
   };
   for (const Bad& c : cases) {
     const std::string error = load_error(c.name, c.text);
