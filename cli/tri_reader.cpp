@@ -18,6 +18,44 @@ const char* const kCoordinateNames[9] = {"x0", "y0", "z0", "x1", "y1", "z1", "x2
 const char* const kFlatColorNames[3] = {"r", "g", "b"};
 const char* const kVertexColorNames[9] = {"r0", "g0", "b0", "r1", "g1", "b1", "r2", "g2", "b2"};
 
+// A token as an error message shows it: bytes that would not print (a NUL cut the message) as \xNN.
+std::string shown(const std::string& token) {
+  std::string out;
+  for (unsigned char c : token) {
+    if (c >= 0x20 && c != 0x7f) {
+      out += char(c);
+    } else {
+      static const char hex[] = "0123456789abcdef";
+      out += "\\x";
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    }
+  }
+  return out;
+}
+
+// The next line of `in` without its end: a line ends at "\n", "\r\n" or a lone "\r" (old Mac
+// files: their second line was read as the colours of the first). False at the end of the input.
+bool next_line(std::istream& in, std::string& line) {
+  line.clear();
+  std::streambuf* buffer = in.rdbuf();
+  bool any = false;
+  for (;;) {
+    const int c = buffer->sbumpc();
+    if (c == std::char_traits<char>::eof()) {
+      if (!any) in.setstate(std::ios::eofbit);
+      return any;
+    }
+    any = true;
+    if (c == '\n') return true;
+    if (c == '\r') {
+      if (buffer->sgetc() == '\n') buffer->sbumpc();
+      return true;
+    }
+    line += char(c);
+  }
+}
+
 std::vector<std::string> split_tokens(const std::string& text) {
   std::vector<std::string> tokens;
   size_t i = 0;
@@ -39,8 +77,8 @@ std::string parse_real(const std::string& token, const char* field, double& out)
   errno = 0;
   const double value = std::strtod(begin, &end);
   if (end == begin || end != begin + token.size())
-    return std::string(field) + " '" + token + "' is not a number";
-  if (!std::isfinite(value)) return std::string(field) + " '" + token + "' is not a finite number";
+    return std::string(field) + " '" + shown(token) + "' is not a number";
+  if (!std::isfinite(value)) return std::string(field) + " '" + shown(token) + "' is not a finite number";
   out = value;
   return "";
 }
@@ -95,8 +133,10 @@ std::vector<ScreenTriangle> read_tri(std::istream& in, const std::string& file_n
   std::vector<ScreenTriangle> triangles;
   std::string line;
   int line_number = 0;
-  while (std::getline(in, line)) {
+  while (next_line(in, line)) {
     ++line_number;
+    // A UTF-8 byte-order mark before the first line is not part of it (it made x0 not a number).
+    if (line_number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
     const size_t comment = line.find('#');
     if (comment != std::string::npos) line.resize(comment);
     const std::vector<std::string> tokens = split_tokens(line);

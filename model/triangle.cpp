@@ -1,6 +1,8 @@
 #include "triangle.h"
 
+#include <charconv>
 #include <cmath>
+#include <system_error>
 
 #include "fixed.h"
 
@@ -26,6 +28,18 @@ uint32_t quantize_depth(double z, int z_bits) {
   return uint32_t((2 * m * i128(scale) + (i128(1) << k)) >> (k + 1));
 }
 
+namespace {
+
+// The shortest text that reads back as v: -640.00000001 stays that (it printed as -640.000000, which
+// looks inside the guard band).
+std::string exact_text(double v) {
+  char text[64];
+  const auto [end, error] = std::to_chars(text, text + sizeof text, v);
+  return error == std::errc() ? std::string(text, end) : std::to_string(v);
+}
+
+}  // namespace
+
 std::string check_screen_triangle(const ScreenTriangle& tri, const Profile& p) {
   static const char* const kVertex[] = {"first", "second", "third"};
   for (int k = 0; k < 3; ++k) {
@@ -33,14 +47,14 @@ std::string check_screen_triangle(const ScreenTriangle& tri, const Profile& p) {
     const std::string who = std::string(kVertex[k]) + " vertex ";
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
       return who + "has a coordinate that is not a finite number";
-    if (v.z < 0.0 || v.z > 1.0) return who + "depth " + std::to_string(v.z) + " is outside [0, 1]";
+    if (v.z < 0.0 || v.z > 1.0) return who + "depth " + exact_text(v.z) + " is outside [0, 1]";
     // The guard band of PRODUCT.md, on the coordinate as given: x in [-W, 2W), y in [-H, 2H).
     // Snapping may then reach 2W * 2^S exactly; the width analysis covers the closed range.
     if (!(v.x >= -p.width && v.x < 2.0 * p.width))
-      return who + "x " + std::to_string(v.x) + " is outside the guard band [" + std::to_string(-p.width) +
+      return who + "x " + exact_text(v.x) + " is outside the guard band [" + std::to_string(-p.width) +
              ", " + std::to_string(2 * p.width) + ")";
     if (!(v.y >= -p.height && v.y < 2.0 * p.height))
-      return who + "y " + std::to_string(v.y) + " is outside the guard band [" + std::to_string(-p.height) +
+      return who + "y " + exact_text(v.y) + " is outside the guard band [" + std::to_string(-p.height) +
              ", " + std::to_string(2 * p.height) + ")";
   }
   return "";

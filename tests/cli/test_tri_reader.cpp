@@ -2,11 +2,13 @@
 // file:line and the reason), and exact round trips through the writer.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <random>
 #include <sstream>
+#include <string>
 
 #include "model/input_error.h"
 #include "tri_reader.h"
@@ -80,6 +82,25 @@ TEST(TriReader, SkipsCommentsBlankLinesAndCarriageReturns) {
   EXPECT_EQ(tris[1].v[2].color, (Rgb{9, 8, 7}));
 }
 
+// Lines may end in a lone CR (the second line's coordinates were read as colours of the first).
+TEST(TriReader, ALoneCarriageReturnEndsALine) {
+  const auto tris = read_text("0 0 0.1 10 0 0.1 0 10 0.1\r1 1 0.2 11 1 0.2 1 11 0.2\r\r2 2 0.3 12 2 0.3 2 12 0.3");
+  ASSERT_EQ(tris.size(), 3u);
+  EXPECT_EQ(tris[0].v[0].color, (Rgb{255, 255, 255}));
+  EXPECT_EQ(tris[1].v[0].x, 1.0);
+  EXPECT_EQ(tris[2].v[2].y, 12.0);
+  EXPECT_EQ(error_of("0 0 0.1 10 0 0.1 0 10 0.1\r\r1 1 0.2 11 1 0.2 1 11"), "scene.tri:3: expected 9 numbers "
+            "'x0 y0 z0 x1 y1 z1 x2 y2 z2', optionally followed by 3 colour values 'r g b' or 9 "
+            "'r0 g0 b0 r1 g1 b1 r2 g2 b2', but the line has 8 values");
+}
+
+// A UTF-8 byte-order mark before the first line is skipped (x0 was '\xEF\xBB\xBF10', "not a number").
+TEST(TriReader, SkipsAByteOrderMark) {
+  const auto tris = read_text("\xEF\xBB\xBF" "10 0 0.1 20 0 0.1 10 10 0.1\n");
+  ASSERT_EQ(tris.size(), 1u);
+  EXPECT_EQ(tris[0].v[0].x, 10.0);
+}
+
 TEST(TriReader, EmptyInputHasNoTriangles) {
   EXPECT_TRUE(read_text("").empty());
   EXPECT_TRUE(read_text("# nothing\n\n").empty());
@@ -95,7 +116,7 @@ TEST(TriReader, GuardBandIsHalfOpen) {
 
 struct BadLine {
   const char* name;
-  const char* line;
+  std::string line;  // may hold a NUL byte
   const char* reason;  // must appear in the message
 };
 
@@ -136,7 +157,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadLine{"ColourNegative", "0 0 0.5 10 0 0.5 0 10 0.5 -1 0 0", "r -1 is outside the colour range 0..255"},
         BadLine{"ColourFraction", "0 0 0.5 10 0 0.5 0 10 0.5 0 0 1.5", "b '1.5' is not an integer colour value"},
         BadLine{"VertexColourNaN", "0 0 0.5 10 0 0.5 0 10 0.5 0 0 0 1 1 1 2 nan 2", "g2 'nan' is not a finite number"},
-        BadLine{"VertexColourWord", "0 0 0.5 10 0 0.5 0 10 0.5 0 0 0 red 1 1 2 2 2", "r1 'red' is not a number"}),
+        BadLine{"VertexColourWord", "0 0 0.5 10 0 0.5 0 10 0.5 0 0 0 red 1 1 2 2 2", "r1 'red' is not a number"},
+        // Shown as written: it printed as -32.000000, which reads as inside the guard band.
+        BadLine{"JustBelowGuardBand", "0 0 0.5 10 0 0.5 -32.00000001 10 0.5", "third vertex x -32.00000001 is outside"},
+        // A NUL byte shown, not the end of the message.
+        BadLine{"NulInToken", std::string("0 0 0.5 1") + '\0' + "0 0 0.5 0 10 0.5", "x1 '1\\x000' is not a number"}),
     [](const ::testing::TestParamInfo<BadLine>& info) { return info.param.name; });
 
 TEST(TriReader, RandomGarbageIsReadOrRejectedNeverAnythingElse) {
@@ -152,7 +177,12 @@ TEST(TriReader, RandomGarbageIsReadOrRejectedNeverAnythingElse) {
     try {
       read_text(line + "\n");
     } catch (const InputError& e) {
-      EXPECT_EQ(std::string(e.what()).rfind("scene.tri:1: ", 0), 0u) << e.what();
+      // A lone "\r" ends a line: the error is on one of the lines the CRs make.
+      const std::string message = e.what();
+      const int lines = 1 + int(std::count(line.begin(), line.end(), '\r'));
+      bool named = false;
+      for (int k = 1; k <= lines; ++k) named |= message.rfind("scene.tri:" + std::to_string(k) + ": ", 0) == 0;
+      EXPECT_TRUE(named) << message;
     }
   }
 }
