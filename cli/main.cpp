@@ -8,6 +8,7 @@
 #include "bench_command.h"
 #include "cosim_command.h"
 #include "model/input_error.h"
+#include "outputs.h"
 #include "render_command.h"
 #include "sweep_command.h"
 #include "vectors_command.h"
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
   CLI::App app{"rastersim: bit-accurate fixed-point triangle rasterizer model (exit 0 ok, 1 check failed, 2 bad usage or input)",
                "rastersim"};
   app.require_subcommand(1);
+  remove_temporaries_on_signals();  // an interrupted run leaves no hidden temporary
   RenderOptions render_options;
   BenchOptions bench_options;
   CosimOptions cosim_options;

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cerrno>
 #include <charconv>
+#include <csignal>
 #include <cstring>
 #include <cstdio>
 #include <filesystem>
@@ -27,9 +28,19 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
+}  // namespace
+
+// Standard output (an output named `-`) is appended to: truncating it would empty the file a shell
+// redirected it to after what was already written there.
+std::ios::openmode output_mode(const std::string& path) {
+  return path == "/dev/stdout" ? std::ios::binary | std::ios::app : std::ios::binary | std::ios::trunc;
+}
+
+namespace {
+
 // Writes bytes to `path`; errors name `shown_path` (the final path the user asked for).
 void write_bytes(const std::string& path, const std::string& shown_path, const char* data, size_t size) {
-  std::ofstream out(path, std::ios::binary);
+  std::ofstream out(path, output_mode(path));
   out.write(data, std::streamsize(size));
   out.close();
   if (!out) throw std::runtime_error(shown_path + ": write error (" + std::strerror(errno) + ")");
@@ -59,37 +70,105 @@ void write_image(const std::string& final_path, const std::string& temp_path, in
 OutputFiles::~OutputFiles() {
   if (committed_) return;
   for (const Entry& e : entries_) {
+    if (e.direct) continue;  // never remove what the user named
     std::error_code ec;
     fs::remove(e.temp_path, ec);
+    forget_temporary(e.temp_path);
   }
+}
+
+void OutputFiles::protect(const std::string& input_path) {
+  if (!input_path.empty()) protected_.push_back(input_path);
 }
 
 std::string OutputFiles::add(const std::string& final_path, const std::string& what) {
   if (final_path.empty()) throw InputError(what + " needs a file name");
-  const fs::path path(final_path);
-  const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
   std::error_code ec;
+  // `-` and a path that is standard output: written as a stream.
+  if (final_path == "-") {
+    for (const Entry& e : entries_)
+      if (e.final_path == "-") throw InputError(final_path, 0, "named by two outputs");
+    writes_stdout_ = true;
+    entries_.push_back({final_path, "/dev/stdout", "/dev/stdout", true});
+    return entries_.back().temp_path;
+  }
+  // A symlink (or a chain of them) is followed: its target is what gets written.
+  const fs::path path(final_path);
+  const fs::path target = fs::is_symlink(fs::symlink_status(path, ec)) ? fs::weakly_canonical(path, ec) : path;
+  const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   if (!fs::is_directory(folder, ec))
     throw InputError(final_path, 0, "cannot write " + what + ": folder '" + folder.string() + "' does not exist");
-  if (fs::is_directory(path, ec)) throw InputError(final_path, 0, "cannot write " + what + ": it is a folder");
-  if (!path.has_filename()) throw InputError(final_path, 0, "cannot write " + what + ": no file name");
-  for (const Entry& e : entries_) {
-    if (fs::weakly_canonical(e.final_path, ec) == fs::weakly_canonical(path, ec))
-      throw InputError(final_path, 0, "named by two outputs");
+  const fs::file_status status = fs::status(target, ec);
+  if (fs::is_directory(status)) throw InputError(final_path, 0, "cannot write " + what + ": it is a folder");
+  if (!target.has_filename()) throw InputError(final_path, 0, "cannot write " + what + ": no file name");
+  const bool exists = fs::exists(status);
+  for (const std::string& input : protected_) {
+    if (exists && fs::equivalent(target, input, ec))
+      throw InputError(final_path, 0, "cannot write " + what + ": it is an input of this run (" + input + ")");
   }
-  const std::string temp_name = "." + path.stem().string() + ".tmp" + std::to_string(getpid()) + "-" +
-                                std::to_string(entries_.size()) + path.extension().string();
-  entries_.push_back({final_path, (folder / temp_name).string()});
+  for (const Entry& e : entries_) {
+    const bool same = exists && fs::exists(e.target, ec) ? fs::equivalent(e.target, target, ec)
+                                                         : fs::weakly_canonical(e.target, ec) == fs::weakly_canonical(target, ec);
+    if (same) throw InputError(final_path, 0, "named by two outputs");
+  }
+  // Devices, FIFOs and sockets are written directly (replacing one by a regular file is the damage
+  // this avoids); so is a file with other hard links, which must stay one file.
+  const bool direct =
+      exists && (!fs::is_regular_file(status) || fs::hard_link_count(target, ec) > 1);
+  if (direct) {
+    entries_.push_back({final_path, target.string(), target.string(), true});
+    return entries_.back().temp_path;
+  }
+  const std::string temp_name = "." + target.stem().string() + ".tmp" + std::to_string(getpid()) + "-" +
+                                std::to_string(entries_.size()) + target.extension().string();
+  entries_.push_back({final_path, target.string(), (folder / temp_name).string(), false});
+  remember_temporary(entries_.back().temp_path);
   return entries_.back().temp_path;
 }
 
 void OutputFiles::commit() {
   for (const Entry& e : entries_) {
+    if (e.direct) continue;
     std::error_code ec;
-    fs::rename(e.temp_path, e.final_path, ec);
+    fs::rename(e.temp_path, e.target, ec);
     if (ec) throw std::runtime_error(e.final_path + ": cannot move the finished file into place: " + ec.message());
+    forget_temporary(e.temp_path);
   }
   committed_ = true;
+}
+
+// Temporaries to remove when SIGINT or SIGTERM ends the process: fixed storage, so that the
+// handler only reads memory and calls unlink (async-signal-safe).
+namespace {
+constexpr int kMaxTemporaries = 16;
+char temporaries[kMaxTemporaries][4096];
+volatile sig_atomic_t temporary_used[kMaxTemporaries];
+
+void remove_temporaries_and_reraise(int signal_number) {
+  for (int i = 0; i < kMaxTemporaries; ++i)
+    if (temporary_used[i]) unlink(temporaries[i]);
+  ::signal(signal_number, SIG_DFL);
+  ::raise(signal_number);
+}
+}  // namespace
+
+void remember_temporary(const std::string& path) {
+  if (path.size() >= sizeof temporaries[0]) return;
+  for (int i = 0; i < kMaxTemporaries; ++i) {
+    if (temporary_used[i]) continue;
+    std::memcpy(temporaries[i], path.c_str(), path.size() + 1);
+    temporary_used[i] = 1;
+    return;
+  }
+}
+
+void forget_temporary(const std::string& path) {
+  for (int i = 0; i < kMaxTemporaries; ++i)
+    if (temporary_used[i] && path == temporaries[i]) temporary_used[i] = 0;
+}
+
+void remove_temporaries_on_signals() {
+  for (int s : {SIGINT, SIGTERM, SIGHUP}) ::signal(s, remove_temporaries_and_reraise);
 }
 
 void check_image_format(const std::string& path, const std::string& what) {
@@ -133,7 +212,7 @@ void write_depth_image(const std::string& final_path, const std::string& temp_pa
 }
 
 FragmentCsvWriter::FragmentCsvWriter(const std::string& path, const std::string& shown_path)
-    : shown_path_(shown_path), out_(path, std::ios::binary) {
+    : shown_path_(shown_path), out_(path, output_mode(path)) {
   if (!out_) throw std::runtime_error(shown_path + ": cannot create the fragment trace (" + std::strerror(errno) + ")");
   buffer_.reserve(1 << 16);
   buffer_ = "tri,x,y,z,pass,r,g,b,cycle\n";

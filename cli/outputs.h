@@ -1,6 +1,8 @@
 // The outputs of `rastersim render`: images through OpenImageIO, the fragment trace CSV, the stats
-// JSON and the human summary. Every file is written to a temporary beside its final path and
-// renamed into place only when all of them are complete, so a failed run leaves no partial file.
+// JSON and the human summary. Every regular file is written to a temporary beside its final path
+// and renamed into place only when all of them are complete, so a failed run leaves no partial file.
+// A symlink is followed (its target is replaced, the link stays); a device, a FIFO, a file with
+// other hard links, and `-` (standard output) are written directly, never replaced.
 #pragma once
 
 #include <cstdint>
@@ -32,20 +34,39 @@ class OutputFiles {
   OutputFiles& operator=(const OutputFiles&) = delete;
   ~OutputFiles();  // removes every temporary that was not committed
 
+  // An input of this run: no output may resolve to it.
+  void protect(const std::string& input_path);
   // Checks that the final path can be written (its folder exists, it is not a folder, no other
-  // output names it) and returns the temporary path to write instead. Throws InputError naming the
-  // option (`what`, e.g. "-o") and the path. Creates nothing.
+  // output names it, it is not an input) and returns the path to write: a temporary, or the target
+  // itself when it is written directly. Throws InputError naming the option (`what`, e.g. "-o")
+  // and the path. Creates nothing.
   std::string add(const std::string& final_path, const std::string& what);
+  // True when an output is `-`: the human summary then goes to standard error.
+  bool writes_stdout() const { return writes_stdout_; }
   // Renames every temporary into place.
   void commit();
 
  private:
   struct Entry {
-    std::string final_path, temp_path;
+    std::string final_path;  // as given
+    std::string target;      // where it ends up: the symlink's target, or the path itself
+    std::string temp_path;   // what is written: a temporary beside the target, or the target (direct)
+    bool direct;
   };
   std::vector<Entry> entries_;
+  std::vector<std::string> protected_;
   bool committed_ = false;
+  bool writes_stdout_ = false;
 };
+
+// How an output path is opened: appended to when it is standard output, else truncated.
+std::ios::openmode output_mode(const std::string& path);
+
+// Temporaries that SIGINT, SIGTERM or SIGHUP remove before the process ends (OutputFiles registers
+// its own); install the handlers once, in main.
+void remember_temporary(const std::string& path);
+void forget_temporary(const std::string& path);
+void remove_temporaries_on_signals();
 
 // Throws InputError when OpenImageIO has no writer for the path's extension.
 void check_image_format(const std::string& path, const std::string& what);

@@ -128,6 +128,8 @@ int run_render(const RenderOptions& o) {
   check_backend_profile(backend, profile);
 
   OutputFiles outputs;
+  outputs.protect(o.input);
+  outputs.protect(o.profile.profile_file);
   std::string color_temp, depth_temp, fragments_temp, stats_temp;
   if (!o.color_out.empty()) {
     check_image_format(o.color_out, "-o");
@@ -157,9 +159,11 @@ int run_render(const RenderOptions& o) {
   const RenderResult result = render_triangles(
       backend, profile, snapped, csv.get(), [&](size_t done) { progress.update(done); }, backend_options);
   progress.finish();
+  // With an output on standard output (`-`), the human summary goes to standard error.
+  std::ostream& info = outputs.writes_stdout() ? std::cerr : std::cout;
   if (result.check_failed) {
     // A divergence writes no output: the temporaries are removed when `outputs` goes out of scope.
-    std::cout << "cosim: model and RTL diverge\n" << result.report << "\n";
+    info << "cosim: model and RTL diverge\n" << result.report << "\n";
     return 1;
   }
 
@@ -178,13 +182,12 @@ int run_render(const RenderOptions& o) {
   const std::string through = backend == Backend::Cosim     ? "the model and the RTL in lockstep"
                               : backend == Backend::Systemc ? "the SystemC system (verilated core, command FIFO, memory model)"
                                                             : "the " + o.backend;
-  std::cout << "rendered " << source << " through " << through << ", " << profile.width << "x" << profile.height
-            << ", " << to_string(profile.traversal) << " traversal\n";
-  if (backend == Backend::Cosim)
-    std::cout << "cosim: every setup record, fragment, memory word and cycle count agrees\n";
-  print_summary(std::cout, result.stats);
+  info << "rendered " << source << " through " << through << ", " << profile.width << "x" << profile.height
+       << ", " << to_string(profile.traversal) << " traversal\n";
+  if (backend == Backend::Cosim) info << "cosim: every setup record, fragment, memory word and cycle count agrees\n";
+  print_summary(info, result.stats);
   for (const std::string* path : {&o.color_out, &o.depth_out, &o.fragments_out, &o.stats_out, &o.dump_tri_out})
-    if (!path->empty()) std::cout << "wrote " << *path << "\n";
+    if (!path->empty()) info << "wrote " << (*path == "-" ? "standard output" : *path) << "\n";
   return 0;
 }
 

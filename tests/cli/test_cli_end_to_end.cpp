@@ -1,7 +1,12 @@
 // The rastersim binary end to end, run in a scratch folder: outputs on good input, their mutual
 // consistency (image = the trace's last passing fragments), and exit 2 with file:line and no output
 // file at all for every kind of bad input.
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <csignal>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -121,6 +126,111 @@ TEST(CliRender, SmallTriWritesConsistentOutputs) {
     ASSERT_EQ(color.pixels8[3 * a + 2], rgb[a][2]) << "pixel " << a % 32 << "," << a / 32;
     ASSERT_EQ(depth_image.pixels[a], float(double(depth[a]) / depth_max)) << "pixel " << a % 32 << "," << a / 32;
   }
+}
+
+// ---- outputs that are not plain files (each was replaced by a regular file, or overwritten) ----
+
+// A symlink is followed: its target gets the output and the link stays a link.
+TEST(CliOutputs, ASymlinkIsFollowed) {
+  ScratchDir dir;
+  dir.write("small.tri", kSmallTri);
+  dir.write("target.json", "old");
+  fs::create_symlink("target.json", dir.path("link.json"));
+  const RunResult r = run_rastersim(dir, with({"render", "small.tri", "--stats", "link.json"}, kSmallProfile));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir.path("link.json"))));
+  EXPECT_EQ(read_json(dir.path("target.json"))["fragments"], read_json(dir.path("link.json"))["fragments"]);
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"small.tri", "target.json", "link.json"}));
+}
+
+// A FIFO is written into, not replaced: a reader on the other end gets the stats.
+TEST(CliOutputs, AFifoIsWrittenDirectly) {
+  ScratchDir dir;
+  dir.write("small.tri", kSmallTri);
+  const fs::path fifo = dir.path("stats.fifo");
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  // Held open at both ends here, so the writer never waits and the stats (1 kB) fit the pipe's buffer.
+  const int fd = open(fifo.c_str(), O_RDWR | O_NONBLOCK);
+  ASSERT_GE(fd, 0);
+  const RunResult r = run_rastersim(dir, with({"render", "small.tri", "--stats", "stats.fifo"}, kSmallProfile));
+  std::string received;
+  char buffer[4096];
+  for (ssize_t n; (n = read(fd, buffer, sizeof buffer)) > 0;) received.append(buffer, size_t(n));
+  close(fd);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  EXPECT_TRUE(contains(received, "\"fragments\"")) << received;
+}
+
+// `-` is standard output; the summary then goes to standard error.
+TEST(CliOutputs, DashIsStandardOutput) {
+  ScratchDir dir;
+  dir.write("small.tri", kSmallTri);
+  const RunResult r = run_rastersim(dir, with({"render", "small.tri", "--stats", "-"}, kSmallProfile));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["triangles"], 4) << r.out;
+  EXPECT_TRUE(contains(r.err, "wrote standard output")) << r.err;
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"small.tri"}));
+}
+
+// A file with another hard link stays one file: both names show the output.
+TEST(CliOutputs, AHardLinkStaysLinked) {
+  ScratchDir dir;
+  dir.write("small.tri", kSmallTri);
+  dir.write("stats.json", "old");
+  fs::create_hard_link(dir.path("stats.json"), dir.path("other-name.json"));
+  const RunResult r = run_rastersim(dir, with({"render", "small.tri", "--stats", "stats.json"}, kSmallProfile));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::equivalent(dir.path("stats.json"), dir.path("other-name.json")));
+  EXPECT_EQ(read_text(dir.path("other-name.json")), read_text(dir.path("stats.json")));
+  EXPECT_EQ(read_json(dir.path("other-name.json"))["triangles"], 4);
+}
+
+// An output that is the input (or the profile) is refused and the input is left as it was.
+TEST(CliOutputs, AnOutputThatIsAnInputIsRefused) {
+  ScratchDir dir;
+  dir.write("small.tri", kSmallTri);
+  dir.write("p.json", "{\"width\": 32, \"height\": 24}\n");
+  fs::create_symlink("small.tri", dir.path("alias.tri"));
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"render", "small.tri", "--fragments", "small.tri", "--profile", "p.json"},
+        std::vector<std::string>{"render", "small.tri", "--fragments", "./alias.tri", "--profile", "p.json"},
+        std::vector<std::string>{"render", "small.tri", "--stats", "p.json", "--profile", "p.json"}}) {
+    const RunResult r = run_rastersim(dir, args);
+    EXPECT_EQ(r.exit_code, 2) << args[3];
+    EXPECT_TRUE(contains(r.err, "is an input of this run")) << r.err;
+  }
+  EXPECT_EQ(read_text(dir.path("small.tri")), kSmallTri);
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"small.tri", "p.json", "alias.tri"}));
+}
+
+// SIGTERM while the fragment trace is being written: the hidden temporary goes with the process
+// (an interrupted render left a 614 MB one).
+TEST(CliOutputs, ATerminatedRenderLeavesNoTemporary) {
+  ScratchDir dir;
+  std::string exe = RASTERSIM_EXE;
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (chdir(dir.work().c_str()) != 0) _exit(126);
+    const int null = open("/dev/null", O_RDWR);
+    dup2(null, 0), dup2(null, 1), dup2(null, 2);
+    // Large enough to run for seconds: the default scene at 4096 x 4096 through the traced model.
+    execl(exe.c_str(), exe.c_str(), "render", "--scene", "default", "--width", "4096", "--height", "4096",
+          "--fragments", "frags.csv", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  ASSERT_GT(pid, 0);
+  bool seen = false;
+  for (int i = 0; i < 600 && !seen; ++i) {  // up to a minute for the temporary to appear
+    for (const std::string& name : dir.listing()) seen |= name.rfind(".frags.tmp", 0) == 0;
+    if (!seen) usleep(100000);
+  }
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(seen) << "the temporary never appeared";
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+  EXPECT_TRUE(dir.listing().empty()) << *dir.listing().begin();
 }
 
 TEST(CliRender, DepthPngIsSixteenBitScaled) {
