@@ -202,6 +202,25 @@ TEST_P(CycleModel, OneTriangleCostsWhatTheRulesSay) {
   EXPECT_GT(drawn, 250);
 }
 
+// `count` random scene triangles through one pipeline: the triangles, their records and the stats.
+struct SceneRun {
+  Widths widths;
+  std::vector<SnappedTriangle> scene;
+  std::vector<TriangleRecord> records;
+  FrameStats stats;
+};
+SceneRun run_random_scene(const Profile& p, uint64_t seed, int count) {
+  TriangleGen gen(p, seed);
+  Pipeline pipe(p);
+  SceneRun run{pipe.widths(), {}, {}, {}};
+  pipe.set_triangle_log(&run.records);
+  for (int n = 0; n < count; ++n) run.scene.push_back(random_scene_triangle(gen, n));
+  for (const SnappedTriangle& t : run.scene) pipe.submit(t);
+  run.stats = pipe.stats();
+  EXPECT_EQ(run.records.size(), run.scene.size());
+  return run;
+}
+
 // The pipelined setup unit (setup_interval I >= 2, docs/cycle-model.md): accepts only in the first
 // cycle of a slot of I cycles, at most one per slot, with a free credit (found by brute force as
 // above); a drawn record in the output register I (1 + numerator slots + divide slots) cycles after
@@ -216,16 +235,11 @@ TEST_P(CycleModel, HandOffChainPipelinedSetup) {
       const uint64_t seed = 11 + uint64_t(GetParam());
       SCOPED_TRACE(::testing::Message() << describe(p) << " seed " << seed << " setup_fifo_depth " << depth
                                         << " setup_interval " << interval);
-      TriangleGen gen(p, seed);
-      Pipeline pipe(p);
-      const Widths& w = pipe.widths();
-      std::vector<TriangleRecord> records;
-      pipe.set_triangle_log(&records);
-      std::vector<SnappedTriangle> scene;
-      for (int n = 0; n < 200; ++n) scene.push_back(random_scene_triangle(gen, n));
-      for (const SnappedTriangle& t : scene) pipe.submit(t);
-      const FrameStats& stats = pipe.stats();
-      ASSERT_EQ(records.size(), scene.size());
+      const SceneRun run = run_random_scene(p, seed, 200);
+      const Widths& w = run.widths;
+      const std::vector<TriangleRecord>& records = run.records;
+      const std::vector<SnappedTriangle>& scene = run.scene;
+      const FrameStats& stats = run.stats;
       auto up = [](int a, int b) { return (a + b - 1) / b; };
       const int numer_slots = up(p.z_bits, 4 * interval);
       const int divide_slots = up(w.divider_bits, 4 * interval);
@@ -282,16 +296,11 @@ TEST_P(CycleModel, HandOffChainOverAScene) {
     p.setup_interval = 0;  // the parallel-divider setup's timing
     const uint64_t seed = 7 + uint64_t(GetParam());
     SCOPED_TRACE(::testing::Message() << describe(p) << " seed " << seed << " setup_fifo_depth " << depth);
-    TriangleGen gen(p, seed);
-    Pipeline pipe(p);
-    const Widths& w = pipe.widths();
-    std::vector<TriangleRecord> records;
-    pipe.set_triangle_log(&records);
-    std::vector<SnappedTriangle> scene;
-    for (int n = 0; n < 300; ++n) scene.push_back(random_scene_triangle(gen, n));
-    for (const SnappedTriangle& t : scene) pipe.submit(t);
-    const FrameStats& stats = pipe.stats();
-    ASSERT_EQ(records.size(), scene.size());
+    const SceneRun run = run_random_scene(p, seed, 300);
+    const Widths& w = run.widths;
+    const std::vector<TriangleRecord>& records = run.records;
+    const std::vector<SnappedTriangle>& scene = run.scene;
+    const FrameStats& stats = run.stats;
     const int64_t setup_cycles = 2 + w.divider_bits + 1;
     std::vector<std::pair<int64_t, int64_t>> credits;  // [first, last] cycle each triangle holds one
     int64_t setup_free = 0, walker_end_prev = -1, last_busy = -1, setup_busy = 0, setup_stall = 0, walker_busy = 0;
