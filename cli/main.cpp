@@ -1,4 +1,4 @@
-// rastersim: one executable, subcommands (PRODUCT.md "Command line").
+// rastersim: one executable, subcommands (README.md, `rastersim COMMAND --help`).
 // Exit codes: 0 success, 1 a check failed, 2 bad usage or bad input.
 #include <exception>
 #include <iostream>

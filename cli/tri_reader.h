@@ -1,4 +1,4 @@
-// The .tri screen-space triangle list (PRODUCT.md "File formats"): reader and writer.
+// The .tri screen-space triangle list (docs/formats.md): reader and writer.
 // One triangle a line: x0 y0 z0 x1 y1 z1 x2 y2 z2 (pixels, y down; depth in [0, 1]), optionally
 // followed by r g b (flat, integers 0..255) or r0 g0 b0 r1 g1 b1 r2 g2 b2 (per vertex). No colour:
 // white. '#' starts a comment, blank lines are ignored.

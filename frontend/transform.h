@@ -38,7 +38,7 @@ Mat4 perspective(double fov_y_degrees, double aspect, double near, double far);
 // z_ndc = -1 at eye depth near, +1 at far.
 Mat4 orthographic(double half_width, double half_height, double near, double far);
 
-// Viewport of a width x height y-down screen (PRODUCT.md): NDC x = -1 is the left screen edge
+// Viewport of a width x height y-down screen (docs/frontend.md): NDC x = -1 is the left screen edge
 // (pixel x 0), x = +1 the right edge (x = width); NDC y = +1 is the top edge (pixel y 0), y = -1 the
 // bottom edge (y = height). Depth: NDC z in [-1, 1] to [0, 1], 0 near.
 struct ScreenPoint {

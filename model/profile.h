@@ -1,4 +1,4 @@
-// The hardware profile: the one source of truth for model, RTL and vectors (PRODUCT.md).
+// The hardware profile: the one source of truth for model, RTL and vectors (docs/formats.md "Profile").
 #pragma once
 
 #include <cstdint>

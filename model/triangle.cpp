@@ -48,7 +48,7 @@ std::string check_screen_triangle(const ScreenTriangle& tri, const Profile& p) {
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
       return who + "has a coordinate that is not a finite number";
     if (v.z < 0.0 || v.z > 1.0) return who + "depth " + exact_text(v.z) + " is outside [0, 1]";
-    // The guard band of PRODUCT.md, on the coordinate as given: x in [-W, 2W), y in [-H, 2H).
+    // The guard band of docs/formats.md, on the coordinate as given: x in [-W, 2W), y in [-H, 2H).
     // Snapping may then reach 2W * 2^S exactly; the width analysis covers the closed range.
     if (!(v.x >= -p.width && v.x < 2.0 * p.width))
       return who + "x " + exact_text(v.x) + " is outside the guard band [" + std::to_string(-p.width) +

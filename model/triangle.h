@@ -36,10 +36,10 @@ struct SnappedTriangle {
 
 // Why a screen triangle is not acceptable to the setup unit, or an empty string.
 // Checks: finite numbers, z in [0, 1], and every coordinate inside the guard band x in [-W, 2W),
-// y in [-H, 2H) (PRODUCT.md); snapped, that is within [-W*2^S, 2W*2^S].
+// y in [-H, 2H) (docs/formats.md); snapped, that is within [-W*2^S, 2W*2^S].
 std::string check_screen_triangle(const ScreenTriangle& tri, const Profile& profile);
 
-// Snaps a checked triangle to the fixed-point grid of PRODUCT.md.
+// Snaps a checked triangle to the fixed-point grid of docs/arithmetic.md section 1.
 SnappedTriangle snap(const ScreenTriangle& tri, const Profile& profile);
 
 int64_t snap_coordinate(double v, int subpixel_bits);

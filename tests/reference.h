@@ -1,4 +1,4 @@
-// Independent brute-force reference for the rasterization rules of PRODUCT.md, written from the
+// Independent brute-force reference for the rasterization rules of docs/arithmetic.md, written from the
 // rules rather than from the model: per pixel centre, exact integer cross products; top and left
 // edges classified geometrically from the third vertex; depth as an exact rational.
 #pragma once
@@ -35,7 +35,7 @@ bool within_one_lsb(int64_t integer, const Rational& exact);
 // Twice the signed area of the snapped triangle (subpixels squared); 0 means degenerate.
 __int128 twice_area(const SnappedTriangle& tri);
 
-// The candidate pixels of PRODUCT.md: those whose centre lies within the vertices' extent (closed),
+// The candidate pixels of docs/arithmetic.md: those whose centre lies within the vertices' extent (closed),
 // on screen. Found by testing every column and row centre, not by a formula.
 struct PixelRect {
   int x0, y0, x1, y1;  // inclusive; empty when x0 > x1 or y0 > y1

@@ -1,4 +1,4 @@
-// Coverage is the exact top-left rule of PRODUCT.md, pixel for pixel and in walker order (row by
+// Coverage is the exact top-left rule of docs/arithmetic.md, pixel for pixel and in walker order (row by
 // row, left to right), checked against the independent brute-force reference (tests/reference.h)
 // on random and directed triangle families, for both traversals and several subpixel precisions.
 #include <gtest/gtest.h>
@@ -151,7 +151,7 @@ TEST(CoverageDirected, TopLeftRuleByHand) {
   }
 }
 
-// PRODUCT.md: front faces are counter-clockwise as the viewer sees the screen (y down), unless
+// docs/arithmetic.md: front faces are counter-clockwise as the viewer sees the screen (y down), unless
 // front_face says cw; cull removes back or front faces, which then produce nothing.
 TEST(CoverageDirected, CullingFollowsTheScreenWinding) {
   SnappedTriangle clockwise;  // (1, 1) -> (9, 1) -> (1, 9) in pixels: clockwise on a y-down screen

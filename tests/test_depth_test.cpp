@@ -1,4 +1,4 @@
-// The depth test (PRODUCT.md, docs/arithmetic.md section 5): for every compare function, depth
+// The depth test (docs/arithmetic.md section 5): for every compare function, depth
 // write on and off and several clear values, the pass flag of every fragment and the final depth
 // and colour buffers equal a brute-force z-buffer computed here from the reference coverage, the
 // fragments' z values and the provoking vertex's flat colour.
@@ -16,7 +16,7 @@ namespace {
 
 using test::describe;
 
-// The compare functions as PRODUCT.md names them: the fragment's z against the stored z.
+// The compare functions as docs/formats.md names them: the fragment's z against the stored z.
 bool passes(DepthFunc f, uint32_t z, uint32_t stored) {
   switch (f) {
     case DepthFunc::Never: return false;

@@ -1,4 +1,4 @@
-// The profile (PRODUCT.md "Hardware profile") and the host-side snapping:
+// The profile (docs/formats.md "Profile") and the host-side snapping:
 // - validate() rejects each key just outside its range, naming the key, and accepts its limits;
 // - set_profile_key() parses every key and rejects bad text with a sentence naming the key;
 // - load_profile_file() reports malformed JSON, unknown keys and bad values as file:line: problem;

@@ -65,7 +65,7 @@ TEST(CliSweep, EveryCombinationIsARowEqualToRenderAndPlotted) {
     EXPECT_NEAR(std::stod(row.at("fragments_per_clock")), double(fragments) / double(cycles), 1e-5);
     EXPECT_NEAR(std::stod(row.at("setup_share")), s["units"]["setup"]["busy"].get<double>() / double(cycles), 1e-5);
     EXPECT_NEAR(std::stod(row.at("stall_share")), s["units"]["zbuffer"]["stall"].get<double>() / double(cycles), 1e-5);
-    // Derived guard bits keep every fragment within 1 LSB of the exact plane (PRODUCT.md).
+    // Derived guard bits keep every fragment within 1 LSB of the exact plane (docs/arithmetic.md section 4).
     EXPECT_LT(std::stod(row.at("max_depth_error")), 1.0);
     EXPECT_GT(fragments, 1000);
   }

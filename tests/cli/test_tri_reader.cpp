@@ -107,7 +107,7 @@ TEST(TriReader, EmptyInputHasNoTriangles) {
 }
 
 TEST(TriReader, GuardBandIsHalfOpen) {
-  // Guard band for 32x24: x in [-32, 64), y in [-24, 48) (PRODUCT.md, check_screen_triangle).
+  // Guard band for 32x24: x in [-32, 64), y in [-24, 48) (docs/formats.md, check_screen_triangle).
   EXPECT_EQ(read_text("-32 -24 0 63.999 -24 0 -32 47.999 1\n").size(), 1u);
   EXPECT_NE(error_of("-32 -24 0 64 -24 0 -32 47 1\n").find("scene.tri:1: second vertex x 64"), std::string::npos);
   EXPECT_NE(error_of("-32 -24 0 63 -24 0 -32 48 1\n").find("scene.tri:1: third vertex y 48"), std::string::npos);
