@@ -164,6 +164,8 @@ int run_cosim(const CosimOptions& o) {
   const int64_t in_shard = total / shard.count + (shard.index < total % shard.count ? 1 : 0);
   std::vector<FrameResult> results;
   int64_t passed = 0, failed = 0, directed_run = 0;
+  // With the JUnit XML on standard output (`--junit -`), the report goes to standard error.
+  std::ostream& info = outputs.writes_stdout() ? std::cerr : std::cout;
   for (int64_t k = shard.index; k < total; k += shard.count) {
     const uint64_t frame_seed = o.seed + uint64_t(k);
     rtl::CosimCase c;
@@ -192,7 +194,7 @@ int run_cosim(const CosimOptions& o) {
     }
     ++failed;
     if (tty) std::fprintf(stderr, "\r\033[K");
-    std::cout << "frame " << k << " (" << c.name << ", " << c.triangles.size() << " triangles, power-on seed "
+    info << "frame " << k << " (" << c.name << ", " << c.triangles.size() << " triangles, power-on seed "
               << frame_seed << "): " << report.message() << "\n";
     if (!o.keep_going) break;
   }
@@ -201,14 +203,14 @@ int run_cosim(const CosimOptions& o) {
     write_text_file(junit_temp, o.junit_out, junit_xml(results, profile, o));
     outputs.commit();
   }
-  std::cout << "profile " << profile_summary(profile) << ", " << settings_summary(profile) << "; shard " << o.shard
-            << ": " << directed_run << " directed and " << (passed + failed - directed_run) << " random frames of "
-            << o.triangles << " triangles";
+  info << "profile " << profile_summary(profile) << ", " << settings_summary(profile) << "; shard " << o.shard
+       << ": " << directed_run << " directed and " << (passed + failed - directed_run) << " random frames of "
+       << o.triangles << " triangles";
   if (!varied.empty()) {
-    std::cout << "; random frames draw";
-    for (const std::string& key : varied) std::cout << " " << key;
+    info << "; random frames draw";
+    for (const std::string& key : varied) info << " " << key;
   }
-  std::cout << "\n" << passed << " passed, " << failed << " failed\n";
+  info << "\n" << passed << " passed, " << failed << " failed\n";
   return failed == 0 ? 0 : 1;
 #endif
 }

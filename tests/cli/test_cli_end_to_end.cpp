@@ -454,6 +454,18 @@ TEST(CliRtl, CosimRejectsABadShardAndWritesNothing) {
   EXPECT_TRUE(dir.listing().empty());
 }
 
+// `--junit -`: the XML alone on standard output, the report on standard error.
+TEST(CliRtl, CosimJunitOnStandardOutput) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"cosim", "--count", "1", "--no-directed", "--width", "64", "--height", "48",
+                                          "--junit", "-"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("<?xml", 0), 0u) << r.out;
+  EXPECT_FALSE(contains(r.out, "passed,")) << r.out;
+  EXPECT_TRUE(contains(r.err, "1 passed, 0 failed")) << r.err;
+  EXPECT_TRUE(dir.listing().empty());
+}
+
 // A count whose frame indices overflow once ran no frame and reported "0 passed, 0 failed", exit 0.
 TEST(CliRtl, CosimRefusesACountItCannotRun) {
   ScratchDir dir;
