@@ -34,27 +34,32 @@ std::string shown(const std::string& token) {
   return out;
 }
 
-// The next line of `in` without its end: a line ends at "\n", "\r\n" or a lone "\r" (old Mac
-// files: their second line was read as the colours of the first). False at the end of the input.
-bool next_line(std::istream& in, std::string& line) {
-  line.clear();
-  std::streambuf* buffer = in.rdbuf();
-  bool any = false;
-  for (;;) {
-    const int c = buffer->sbumpc();
-    if (c == std::char_traits<char>::eof()) {
-      if (!any) in.setstate(std::ios::eofbit);
-      return any;
+// Lines of `in` without their ends: a line ends at "\n", "\r\n" or a lone "\r" (old Mac files:
+// their second line was read as the colours of the first). Reads with getline and splits at CRs.
+class LineReader {
+ public:
+  explicit LineReader(std::istream& in) : in_(in) {}
+  bool next(std::string& line) {
+    if (at_ == std::string::npos) {
+      if (!std::getline(in_, text_)) return false;
+      at_ = 0;
     }
-    any = true;
-    if (c == '\n') return true;
-    if (c == '\r') {
-      if (buffer->sgetc() == '\n') buffer->sbumpc();
-      return true;
+    const size_t cr = text_.find('\r', at_);
+    if (cr == std::string::npos) {
+      line.assign(text_, at_, std::string::npos);
+      at_ = std::string::npos;
+    } else {
+      line.assign(text_, at_, cr - at_);
+      at_ = cr + 1 == text_.size() ? std::string::npos : cr + 1;  // "\r\n" ends one line
     }
-    line += char(c);
+    return true;
   }
-}
+
+ private:
+  std::istream& in_;
+  std::string text_;
+  size_t at_ = std::string::npos;  // where the next line starts in text_; npos: read another
+};
 
 std::vector<std::string> split_tokens(const std::string& text) {
   std::vector<std::string> tokens;
@@ -133,7 +138,8 @@ std::vector<ScreenTriangle> read_tri(std::istream& in, const std::string& file_n
   std::vector<ScreenTriangle> triangles;
   std::string line;
   int line_number = 0;
-  while (next_line(in, line)) {
+  LineReader lines(in);
+  while (lines.next(line)) {
     ++line_number;
     // A UTF-8 byte-order mark before the first line is not part of it (it made x0 not a number).
     if (line_number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
