@@ -173,6 +173,16 @@ INSTANTIATE_TEST_SUITE_P(DefaultAndHires, BuiltProfiles,
                          });
 
 // The worked example of docs/cycle-model.md, whose numbers were computed by hand.
+// The worked examples' tiny triangle (docs/cycle-model.md): it covers pixel (5, 9) only (S = 4).
+SnappedTriangle one_pixel_triangle() {
+  SnappedTriangle tiny;
+  for (int k = 0; k < 3; ++k) tiny.v[k].z = 100;
+  tiny.v[0].x = 5 * 16 + 2, tiny.v[0].y = 9 * 16 + 2;
+  tiny.v[1].x = 5 * 16 + 14, tiny.v[1].y = 9 * 16 + 8;
+  tiny.v[2].x = 5 * 16 + 4, tiny.v[2].y = 9 * 16 + 14;
+  return tiny;
+}
+
 TEST(RtlCycles, WorkedExampleOfTheCycleModel) {
   Profile p = small_profile();
   p.memory_latency = 4;
@@ -180,11 +190,7 @@ TEST(RtlCycles, WorkedExampleOfTheCycleModel) {
   p.setup_fifo_depth = 1;
   // Not the 16 x 12 profile of the page (no RTL is built for it): the same rules on the small
   // screen give the same event cycles apart from divider_bits, checked against the model here.
-  SnappedTriangle tiny;
-  for (int k = 0; k < 3; ++k) tiny.v[k].z = 100;
-  tiny.v[0].x = 5 * 16 + 2, tiny.v[0].y = 9 * 16 + 2;
-  tiny.v[1].x = 5 * 16 + 14, tiny.v[1].y = 9 * 16 + 8;
-  tiny.v[2].x = 5 * 16 + 4, tiny.v[2].y = 9 * 16 + 14;
+  const SnappedTriangle tiny = one_pixel_triangle();
   const std::vector<SnappedTriangle> tris = {tiny, tiny};
   const CosimReport r = cosim(p, tris);
   ASSERT_TRUE(r.passed) << r.message();
@@ -206,11 +212,7 @@ TEST(RtlCycles, PipelinedSetupWorkedExample) {
   p.memory_latency = 4;
   p.setup_interval = 4;
   p.setup_fifo_depth = 2;
-  SnappedTriangle tiny;
-  for (int k = 0; k < 3; ++k) tiny.v[k].z = 100;
-  tiny.v[0].x = 5 * 16 + 2, tiny.v[0].y = 9 * 16 + 2;
-  tiny.v[1].x = 5 * 16 + 14, tiny.v[1].y = 9 * 16 + 8;
-  tiny.v[2].x = 5 * 16 + 4, tiny.v[2].y = 9 * 16 + 14;
+  const SnappedTriangle tiny = one_pixel_triangle();
   const CosimReport r = cosim(p, {tiny, tiny});
   ASSERT_TRUE(r.passed) << r.message();
   // Slots: 1 FRONT, ceil(24 / 16) = 2 numerator, ceil(divider_bits / 16) divide.
