@@ -230,7 +230,7 @@ int run_bench(const BenchOptions& o) {
   std::printf("cycles      %lld (%.3f fragments per clock, %.4g simulated cycles per second)\n", (long long)stats.cycles,
               stats.cycles > 0 ? double(stats.fragments) / double(stats.cycles) : 0.0, double(stats.cycles) / best.seconds);
   // The hardware's view (cycles are the model's, which the RTL equals): where the clocks went.
-  const Widths widths = derive_widths(profile);
+  const SetupTiming setup = setup_timing(profile);
   const double cycles = double(std::max<int64_t>(stats.cycles, 1));
   const int64_t walker_idle = stats.cycles - stats.walker.busy - stats.walker.stall;
   std::printf("throughput  %.3f fragments per clock (bound 1), %.1f cycles per triangle\n", fragments / cycles,
@@ -239,7 +239,7 @@ int run_bench(const BenchOptions& o) {
               100.0 * double(stats.walker.busy) / cycles, 100.0 * double(stats.walker.stall) / cycles,
               100.0 * double(walker_idle) / cycles);
   std::printf("setup       latency %d cycles per drawn triangle, %d per rejected; busy %.1f%% of cycles\n",
-              widths.setup_cycles, widths.setup_front_cycles, 100.0 * double(stats.setup.busy) / cycles);
+              setup.drawn_latency + 1, setup.rejected_latency + 1, 100.0 * double(stats.setup.busy) / cycles);
   std::printf("verified    counters, triangle records and buffers equal a traced render's\n");
   return 0;
 }

@@ -37,7 +37,7 @@ std::string key_help(const std::string& key) {
       {"memory_stall_percent", "z-buffer memory back-pressure: share of cycles refusing reads, 0..90 (0 on chip)"},
       {"memory_stall_seed", "seed of the memory's stall pattern, 0..2^31-1"},
       {"setup_fifo_depth", "setup records on their way to the walker (the record FIFO's depth), 1..16"},
-      {"setup_interval", "setup initiation interval: 0 (parallel dividers) or 2..64 (pipelined, a triangle every I cycles)"},
+      {"setup_interval", "setup initiation interval: 0 (serial, the smallest unit) or 2..64 (pipelined, a triangle every I cycles)"},
   };
   auto it = help.find(key);
   return it == help.end() ? "profile key " + key : it->second;

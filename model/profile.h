@@ -41,8 +41,8 @@ struct Profile {
   // rejected) but not yet loaded by the walker, 1..16. 1: the walker must take a record before the
   // setup unit accepts the next triangle. docs/cycle-model.md.
   int setup_fifo_depth = 8;
-  // Initiation interval of the setup unit: 0 = the parallel-divider unit (one triangle at a time,
-  // divider_bits + 3 cycles per drawn triangle); 2..64 = the pipelined unit, which accepts a
+  // Initiation interval of the setup unit: 0 = the serial unit (one triangle at a time through one
+  // shared datapath, about 1,500 cycles per drawn triangle); 2..64 = the pipelined unit, which accepts a
   // triangle every I cycles at best. docs/cycle-model.md.
   int setup_interval = 4;
 

@@ -25,9 +25,7 @@ struct Widths {
   int x_bits;            // pixel x counter, u
   int y_bits;            // pixel y counter, u
   int addr_bits;         // z-buffer word address y * W + x
-  // Cycle-model constants (docs/cycle-model.md).
-  int setup_front_cycles;   // accept -> area, cull and bounding-box decision
-  int setup_cycles;         // accept -> output register valid (front + divider + 1)
+  // Cycle-model constants (docs/cycle-model.md); the setup unit's are in SetupTiming below.
   int walker_load_cycles;   // cycles to load a setup record
   int span_row_cycles;      // per-row span computation (span traversal only)
 };
@@ -64,8 +62,6 @@ constexpr Widths derive_widths(int width, int height, int subpixel_bits, int z_b
   w.x_bits = unsigned_bits(W - 1);
   w.y_bits = unsigned_bits(H - 1);
   w.addr_bits = unsigned_bits(W * H - 1);
-  w.setup_front_cycles = 2;
-  w.setup_cycles = w.setup_front_cycles + w.divider_bits + 1;
   w.walker_load_cycles = 1;
   w.span_row_cycles = 1;
   return w;
@@ -75,35 +71,58 @@ inline Widths derive_widths(const Profile& p) {
   return derive_widths(p.width, p.height, p.subpixel_bits, p.z_bits, p.z_guard_bits);
 }
 
-// When the setup unit handles a triangle (docs/cycle-model.md). `setup_interval` 0 is the
-// parallel-divider unit (one triangle at a time, `setup_cycles` per drawn triangle); I >= 2 is the
-// pipelined unit: one triangle per slot of I cycles through a FRONT slot, the numerator slots and
-// the divide slots, every multiply and divide digit-serial with at most kSetupStepsPerCycle steps
-// chained in a cycle.
+// When the setup unit handles a triangle (docs/cycle-model.md). `setup_interval` 0 is the serial
+// unit: one shared shift-and-add / restoring-divide datapath runs a fixed program of operations for
+// one triangle at a time. I >= 2 is the pipelined unit: one triangle per slot of I cycles through a
+// FRONT slot, the numerator slots and the divide slots, every multiply and divide digit-serial with
+// at most kSetupStepsPerCycle steps chained in a cycle.
 constexpr int kSetupStepsPerCycle = 4;
 
 struct SetupTiming {
-  int interval;        // I: cycles between two accepts at best (0: parallel dividers)
+  int interval;        // I: cycles between two accepts at best (0: the serial unit)
   int numer_stages;    // slots of the plane numerators (Horner over the vertex values' z_bits bits)
   int numer_steps;     // shift-add steps per cycle in a numerator slot
   int divide_stages;   // slots of the 18 restoring divisions (divider_bits steps)
   int divide_steps;    // restoring steps per cycle in a divide slot
   int drawn_latency;   // accept -> record in the output register (setup_done - setup_accept)
   int rejected_latency;  // accept -> decision
-  int free_after;      // accept -> first cycle the unit may accept again
+  int free_after;      // accept -> first cycle the unit may accept again (0: after setup_done)
 };
 
 constexpr int ceil_div(int a, int b) { return (a + b - 1) / b; }
 
-constexpr SetupTiming setup_timing(const Widths& w, int z_bits, int interval) {
+// The serial unit's datapath: H = edge_bits + 3 bits of accumulator above the multiplier bits, enough
+// for the sum of three products of edge values (docs/cycle-model.md).
+constexpr int serial_setup_datapath_bits(const Widths& w) { return w.edge_bits + 3; }
+
+// The serial unit's program, operation by operation as docs/cycle-model.md tables it: every operation
+// takes one load cycle and its steps; operation 0 starts the cycle after the accept.
+constexpr int serial_setup_drawn_latency(const Widths& w, int subpixel_bits, int z_bits) {
+  const int D = w.delta_bits, C = w.coord_bits, H = serial_setup_datapath_bits(w), F = w.guard_bits;
+  const int S = subpixel_bits;
+  int cycles = 1;                                 // the accept cycle
+  cycles += 1 + 2 * D;                            // AREA
+  cycles += 1;                                    // DECIDE
+  cycles += 3 * (1 + 2 * (C + 1));                // EDGE 0..2
+  cycles += 3 * (1 + H + 1) + 3 * (1 + H + S + 1);  // SPAN START and SPAN STEP 0..2
+  for (int m : {z_bits, 8, 8, 8}) {               // depth, red, green, blue
+    cycles += 3 * (1 + 3 * m);                    // numerators of start, step x, step y
+    cycles += (1 + H + m + F) + 2 * (1 + H + m + F + S);  // their divisions
+  }
+  cycles += 1;                                    // FINAL
+  return cycles;
+}
+
+constexpr SetupTiming setup_timing(const Widths& w, int subpixel_bits, int z_bits, int interval) {
   SetupTiming t{};
   t.interval = interval;
-  t.rejected_latency = w.setup_front_cycles - 1;
   if (interval == 0) {
-    t.drawn_latency = w.setup_cycles - 1;
+    t.rejected_latency = 2 + 2 * w.delta_bits;  // the DECIDE cycle
+    t.drawn_latency = serial_setup_drawn_latency(w, subpixel_bits, z_bits);
     t.free_after = 0;  // the unit is free after its output (or decision) cycle
     return t;
   }
+  t.rejected_latency = 1;
   t.numer_stages = ceil_div(z_bits, interval * kSetupStepsPerCycle);
   t.numer_steps = ceil_div(z_bits, interval * t.numer_stages);
   t.divide_stages = ceil_div(w.divider_bits, interval * kSetupStepsPerCycle);
@@ -114,8 +133,12 @@ constexpr SetupTiming setup_timing(const Widths& w, int z_bits, int interval) {
 }
 
 inline SetupTiming setup_timing(const Profile& p) {
-  return setup_timing(derive_widths(p), p.z_bits, p.setup_interval);
+  return setup_timing(derive_widths(p), p.subpixel_bits, p.z_bits, p.setup_interval);
 }
+
+// The docs' worked example and the default profile (docs/cycle-model.md).
+static_assert(serial_setup_drawn_latency(derive_widths(16, 12, 4, 16, 0), 4, 16) == 1165);
+static_assert(serial_setup_drawn_latency(derive_widths(640, 480, 4, 24, 0), 4, 24) == 1553);
 
 // The largest profile must fit the model's storage: plane registers and edge values in int64_t,
 // dividends in i128.

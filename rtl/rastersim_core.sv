@@ -15,7 +15,7 @@ module rastersim_core #(
   parameter integer Z_GUARD_BITS = 0,      // 0: derived (proven minimum)
   parameter integer MAX_MEMORY_LATENCY = 64,
   parameter integer MAX_SETUP_FIFO_DEPTH = 16,  // record FIFO entries; cfg_setup_fifo_depth <= this
-  parameter integer SETUP_INTERVAL = 0         // 0: parallel-divider setup; 2..64: pipelined (profile setup_interval)
+  parameter integer SETUP_INTERVAL = 0         // 0: serial setup; 2..64: pipelined (profile setup_interval)
 ) (
   input  wire clk,
   input  wire rst,
@@ -87,10 +87,10 @@ module rastersim_core #(
   localparam integer X_BITS /*verilator public*/ = rs_ubits32(WIDTH - 1);
   localparam integer Y_BITS /*verilator public*/ = rs_ubits32(HEIGHT - 1);
   localparam integer ADDR_BITS /*verilator public*/ = rs_ubits32(WIDTH * HEIGHT - 1);
-  localparam integer SETUP_FRONT_CYCLES /*verilator public*/ = 2;
-  localparam integer SETUP_CYCLES /*verilator public*/ = SETUP_FRONT_CYCLES + DIVIDER_BITS + 1;
   localparam integer SETUP_DRAWN_LATENCY /*verilator public*/ =
       rs_setup_drawn_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS, SETUP_INTERVAL);
+  localparam integer SETUP_REJECTED_LATENCY /*verilator public*/ =
+      rs_setup_rejected_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, SETUP_INTERVAL);
   localparam integer WALKER_LOAD_CYCLES /*verilator public*/ = 1;
   localparam integer SPAN_ROW_CYCLES /*verilator public*/ = 1;
   // The profile parameters themselves, for the harness.

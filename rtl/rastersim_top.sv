@@ -11,7 +11,7 @@ module rastersim_top #(
   parameter integer Z_GUARD_BITS = 0,      // 0: derived (proven minimum)
   parameter integer MAX_MEMORY_LATENCY = 64,
   parameter integer MAX_SETUP_FIFO_DEPTH = 16,  // record FIFO entries; cfg_setup_fifo_depth <= this
-  parameter integer SETUP_INTERVAL = 0         // 0: parallel-divider setup; 2..64: pipelined
+  parameter integer SETUP_INTERVAL = 0         // 0: serial setup; 2..64: pipelined
 ) (
   input  wire clk,
   input  wire rst,

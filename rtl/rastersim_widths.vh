@@ -141,11 +141,37 @@ function automatic integer rs_setup_divide_stages(input integer divider_bits, in
   rs_setup_divide_stages = (divider_bits + interval * 4 - 1) / (interval * 4);
 endfunction
 
-// Accept -> the record in the output register, for a drawn triangle.
+// The serial setup unit (SETUP_INTERVAL 0; model/widths.h serial_setup_drawn_latency): its
+// accumulator width above the multiplier bits, and its program of operations, each a load cycle and
+// its steps (docs/cycle-model.md tables them).
+function automatic integer rs_setup_serial_bits(input integer w, input integer h, input integer s);
+  rs_setup_serial_bits = rs_edge_bits(w, h, s) + 3;
+endfunction
+
+function automatic integer rs_setup_serial_latency(input integer w, input integer h, input integer s,
+                                                   input integer z_bits, input integer z_guard_bits);
+  integer d, c, hb, f;
+  begin
+    d = rs_delta_bits(w, h, s);
+    c = rs_coord_bits(w, h, s);
+    hb = rs_setup_serial_bits(w, h, s);
+    f = rs_guard_bits(w, h, z_guard_bits);
+    rs_setup_serial_latency = 1 + (1 + 2 * d) + 1 + 3 * (1 + 2 * (c + 1)) + 3 * (1 + hb + 1) + 3 * (1 + hb + s + 1)
+        + 3 * (1 + 3 * z_bits) + (1 + hb + z_bits + f) + 2 * (1 + hb + z_bits + f + s)
+        + 3 * (3 * (1 + 3 * 8) + (1 + hb + 8 + f) + 2 * (1 + hb + 8 + f + s)) + 1;
+  end
+endfunction
+
+// Accept -> the record in the output register, for a drawn triangle; accept -> the decision.
 function automatic integer rs_setup_drawn_latency(input integer w, input integer h, input integer s,
                                                   input integer z_bits, input integer z_guard_bits,
                                                   input integer interval);
-  rs_setup_drawn_latency = interval == 0 ? rs_divider_bits(w, h, s, z_bits, z_guard_bits) + 2
+  rs_setup_drawn_latency = interval == 0 ? rs_setup_serial_latency(w, h, s, z_bits, z_guard_bits)
       : interval * (1 + rs_setup_numer_stages(z_bits, interval)
                     + rs_setup_divide_stages(rs_divider_bits(w, h, s, z_bits, z_guard_bits), interval));
+endfunction
+
+function automatic integer rs_setup_rejected_latency(input integer w, input integer h, input integer s,
+                                                     input integer interval);
+  rs_setup_rejected_latency = interval == 0 ? 2 + 2 * rs_delta_bits(w, h, s) : 1;
 endfunction

@@ -3,11 +3,11 @@
 // span-walker quotients, and the depth and colour planes from exact floor divisions.
 //
 // Two schedules of the same arithmetic (docs/cycle-model.md), chosen by SETUP_INTERVAL:
-// - 0, parallel dividers: accept in cycle a (IDLE, in_valid & in_ready); FRONT in a+1 decides (a
-//   rejected triangle ends there); a drawn one starts every divider at the end of a+1, the dividers
-//   run DIVIDER_BITS cycles (a+2 .. a+DIVIDER_BITS+1), and the output is valid from
-//   a+DIVIDER_BITS+2 = a + setup_cycles - 1 (setup_done) for that one cycle, in which the core
-//   passes it to the walker or into the record FIFO (rastersim_core.sv); the unit is free after it.
+// - 0, serial: accept in cycle a (in_valid & in_ready while idle); one shared shift-add / restoring
+//   datapath runs the program of operations from a+1; DECIDE in a+2+2 DELTA_BITS decides (a rejected
+//   triangle ends there); the output is valid one cycle after FINAL (setup_done, a +
+//   rs_setup_serial_latency) for that one cycle, in which the core passes it to the walker or into
+//   the record FIFO (rastersim_core.sv); the unit is free after it.
 // - I = 2..64, pipelined: slots of I cycles counted from the first cycle of `run`; accept only in
 //   a slot's first cycle; FRONT slot (decision in a+1), NUMER_STAGES numerator slots, DIVIDE_STAGES
 //   divide slots, then the output register, valid in a + I (1 + NUMER_STAGES + DIVIDE_STAGES).
@@ -17,7 +17,7 @@ module triangle_setup #(
   parameter integer SUBPIXEL_BITS = 4,
   parameter integer Z_BITS = 24,
   parameter integer Z_GUARD_BITS = 0,
-  parameter integer SETUP_INTERVAL = 0  // 0: parallel dividers; 2..64: pipelined, initiation interval
+  parameter integer SETUP_INTERVAL = 0  // 0: serial (one shared datapath); 2..64: pipelined, initiation interval
 ) (
   input  wire clk,
   input  wire rst,
@@ -93,6 +93,7 @@ module triangle_setup #(
   localparam [1:0] DRAWN = 2'd0, DEGENERATE = 2'd1, CULLED = 2'd2, OFFSCREEN = 2'd3;
 
   wire load_vertices;  // the accept cycle
+  wire swap_vertices;  // order the vertices so that area2 > 0 (v1 and v2 trade places)
 
   // Vertices as accepted.
   reg signed [CB-1:0] vx [0:2];
@@ -101,18 +102,9 @@ module triangle_setup #(
   reg [23:0]          vrgb [0:2];
 
   // ---- FRONT: area, facing, cull, bounding box (from the registered vertices) ----
-  wire signed [DB-1:0] d10x = vx[1] - vx[0];
-  wire signed [DB-1:0] d10y = vy[1] - vy[0];
-  wire signed [DB-1:0] d20x = vx[2] - vx[0];
-  wire signed [DB-1:0] d20y = vy[2] - vy[0];
-  wire signed [2*DB:0] cross_a = $signed({{(DB+1){d10x[DB-1]}}, d10x}) * $signed({{(DB+1){d20y[DB-1]}}, d20y});
-  wire signed [2*DB:0] cross_b = $signed({{(DB+1){d20x[DB-1]}}, d20x}) * $signed({{(DB+1){d10y[DB-1]}}, d10y});
-  // |area2| <= 9 W H M^2 fits AB bits (docs/widths.md): the top bits are sign copies.
-  /* verilator lint_off UNUSEDSIGNAL */
-  wire signed [2*DB:0] area2_wide = cross_a - cross_b;
-  /* verilator lint_on UNUSEDSIGNAL */
-  wire signed [AB-1:0] area2 = area2_wide[AB-1:0];
-  wire [AB-1:0] area = area2[AB-1] ? -area2 : area2;
+  // Twice the signed area of the vertices as accepted, s.2S: combinational in the pipelined unit's
+  // FRONT cycle, the AREA operation's result in the serial unit's DECIDE cycle.
+  wire signed [AB-1:0] area2;
   // y points down: area2 > 0 is clockwise as the viewer sees the screen.
   wire front_facing = cfg_front_face == 1'b0 ? area2[AB-1] : (area2 != 0 && !area2[AB-1]);
   wire culled = (cfg_cull == 2'd1 && !front_facing) || (cfg_cull == 2'd2 && front_facing);
@@ -150,216 +142,334 @@ module triangle_setup #(
   assign decided_front_facing = area2 != 0 && front_facing;
   assign decided_area2 = area2;
 
-  // ---- Edge functions at the first candidate's centre (ordered vertices) ----
-  wire signed [CB-1:0] ox [0:2];
-  wire signed [CB-1:0] oy [0:2];
-  wire [Z_BITS-1:0]    oz [0:2];
-  wire [23:0]          orgb [0:2];
-  assign ox[0] = vx[0];
-  assign oy[0] = vy[0];
-  assign oz[0] = vz[0];
-  assign orgb[0] = vrgb[0];
-  assign ox[1] = swap ? vx[2] : vx[1];
-  assign oy[1] = swap ? vy[2] : vy[1];
-  assign oz[1] = swap ? vz[2] : vz[1];
-  assign orgb[1] = swap ? vrgb[2] : vrgb[1];
-  assign ox[2] = swap ? vx[1] : vx[2];
-  assign oy[2] = swap ? vy[1] : vy[2];
-  assign oz[2] = swap ? vz[1] : vz[2];
-  assign orgb[2] = swap ? vrgb[1] : vrgb[2];
-
-  wire signed [BB-1:0] centre_x = (bx0 <<< S) + HALF_B;
-  wire signed [BB-1:0] centre_y = (by0 <<< S) + HALF_B;
-
-  wire signed [EB-1:0]  unbiased [0:2];  // E at the first candidate, s.2S
-  wire signed [EB-1:0]  edge_start [0:2];
-  wire signed [SXB-1:0] edge_step_x [0:2];
-  wire signed [SYB-1:0] edge_step_y [0:2];
-  genvar k;
   generate
-    for (k = 0; k < 3; k = k + 1) begin : edges
-      wire signed [CB-1:0] bx = ox[(k + 1) % 3];
-      wire signed [CB-1:0] by = oy[(k + 1) % 3];
-      wire signed [CB-1:0] ax = ox[k];
-      wire signed [CB-1:0] ay = oy[k];
-      wire signed [PB-1:0] dx = $signed({{(PB-CB){bx[CB-1]}}, bx}) - $signed({{(PB-CB){ax[CB-1]}}, ax});
-      wire signed [PB-1:0] dy = $signed({{(PB-CB){by[CB-1]}}, by}) - $signed({{(PB-CB){ay[CB-1]}}, ay});
-      wire signed [PB-1:0] rel_x = $signed({{(PB-BB){centre_x[BB-1]}}, centre_x}) - $signed({{(PB-CB){ax[CB-1]}}, ax});
-      wire signed [PB-1:0] rel_y = $signed({{(PB-BB){centre_y[BB-1]}}, centre_y}) - $signed({{(PB-CB){ay[CB-1]}}, ay});
-      // Only the low bits are kept: |E| < 2^(EB-1), |step| within SXB / SYB (docs/widths.md).
-      /* verilator lint_off UNUSEDSIGNAL */
-      wire signed [PB-1:0] value = dx * rel_y - dy * rel_x;
+  if (SETUP_INTERVAL == 0) begin : serial
+    // ---- Serial schedule (docs/cycle-model.md): one shared datapath runs a program of operations ----
+    // An operation is a load cycle (operands in, the previous operation's result into the record)
+    // and its steps. Multiplies shift and add least significant bit first into ACC = {HI, LO}: HI is
+    // H bits, LO holds the product's low bits; the terms of a sum of products take turns on one
+    // adder, one bit of each per step. Divisions are restoring, dividend bits leaving ACC at the top
+    // and quotient bits entering at the bottom; a negative dividend n is divided as ~n = -n - 1 and
+    // its quotient inverted, floor(n / d) = ~floor(~n / d).
+    localparam integer H = rs_setup_serial_bits(WIDTH, HEIGHT, S);
+    localparam integer MB = (DB > CB + 1 ? (DB > Z_BITS ? DB : Z_BITS) : (CB + 1 > Z_BITS ? CB + 1 : Z_BITS));
+    localparam integer ACC_BITS = H + MB;
+    localparam integer SB = 7;  // step counters: at most H + N + F + S + 1 < 128 steps
+    // Operations: AREA, DECIDE, EDGE k, SPAN START k / SPAN STEP k, plane n = 3p + c (p: depth, r,
+    // g, b; c: start, step x, step y) numerator and division, FINAL.
+    localparam [5:0] OP_AREA = 6'd0, OP_DECIDE = 6'd1, OP_EDGE = 6'd2, OP_SPAN = 6'd5, OP_PLANE = 6'd11,
+                     OP_FINAL = 6'd35;
+
+    reg active_q;                   // a triangle is in the unit, from the cycle after its accept
+    reg out_q;                      // the record is in the output register (setup_done)
+    reg load_q;                     // the current operation's load cycle
+    reg [5:0] op_q;
+    reg [SB-1:0] left_q;            // steps left in the operation
+    reg [SB-1:0] data_left_q;       // dividend bits left before the appended zeros
+    reg [1:0] term_q;               // which product of the sum takes this step
+    reg sign_q;                     // the dividend is negative: divide ~n, invert the quotient
+    reg signed [ACC_BITS-1:0] acc_q;
+    reg [AB-1:0] rem_q;             // restoring remainder, < |divisor| <= 2^(AB-1)
+    reg [MB-1:0] mq_q [0:2];        // multipliers, consumed from bit 0
+    reg signed [AB-1:0] area_q;     // twice the signed area (the plane divisor)
+    // The record's computed fields (the others come from the vertex registers).
+    reg signed [EB-1:0] start_q [0:2];
+    reg [EB-1:0]  span_quot_q [0:2];
+    reg [RB-1:0]  span_rem_q [0:2];
+    reg [SYB-1:0] span_step_quot_q [0:2];
+    reg [RB-1:0]  span_step_rem_q [0:2];
+    reg [ZRB-1:0] depth_q [0:2];
+    reg [CRB-1:0] color_q [0:8];
+
+    // Ordered edge deltas (the vertices are swapped in DECIDE when area2 < 0): dx = b.x - a.x and
+    // ndy = a.y - b.y, so edge_step_x = ndy 2^S and edge_step_y = dx 2^S.
+    wire signed [DB-1:0] dx [0:2];
+    wire signed [DB-1:0] ndy [0:2];
+    wire [2:0] bias;                // 1 unless the edge is top or left
+    genvar k;
+    for (k = 0; k < 3; k = k + 1) begin : deltas
+      assign dx[k] = DB'(vx[(k + 1) % 3]) - DB'(vx[k]);
+      assign ndy[k] = DB'(vy[k]) - DB'(vy[(k + 1) % 3]);
       // Interior to the right (dy < 0) is a left edge; horizontal with interior below is top.
-      wire top_left = dy < 0 || (dy == 0 && dx > 0);
-      wire signed [PB-1:0] step_x = -(dy <<< S);
-      wire signed [PB-1:0] step_y = dx <<< S;
-      /* verilator lint_on UNUSEDSIGNAL */
-      assign unbiased[k] = value[EB-1:0];
-      assign edge_start[k] = unbiased[k] - (top_left ? 0 : 1);
-      assign edge_step_x[k] = step_x[SXB-1:0];
-      assign edge_step_y[k] = step_y[SYB-1:0];
+      assign bias[k] = !(ndy[k] > 0 || (ndy[k] == 0 && dx[k] > 0));
+      assign out_edge_step_x[k*SXB +: SXB] = SXB'({ndy[k], {S{1'b0}}});
+      assign out_edge_step_y[k*SYB +: SYB] = SYB'({dx[k], {S{1'b0}}});
     end
-  endgenerate
 
-  // sum_k v_k e_(k+1): the plane numerator with the weights of edge k opposite vertex k+2.
-  function automatic signed [NB-1:0] plane_numerator(input [Z_BITS-1:0] v0, input [Z_BITS-1:0] v1,
-                                                     input [Z_BITS-1:0] v2, input signed [EB-1:0] e0,
-                                                     input signed [EB-1:0] e1, input signed [EB-1:0] e2);
-    reg signed [NB-1:0] a0, a1, a2, w0, w1, w2;
-    begin
-      a0 = $signed({{(NB-Z_BITS){1'b0}}, v0});
-      a1 = $signed({{(NB-Z_BITS){1'b0}}, v1});
-      a2 = $signed({{(NB-Z_BITS){1'b0}}, v2});
-      w0 = $signed({{(NB-EB){e0[EB-1]}}, e0});
-      w1 = $signed({{(NB-EB){e1[EB-1]}}, e1});
-      w2 = $signed({{(NB-EB){e2[EB-1]}}, e2});
-      plane_numerator = a0 * w1 + a1 * w2 + a2 * w0;
+    // The operation's shape.
+    wire is_area = op_q == OP_AREA;
+    wire is_edge = op_q >= OP_EDGE && op_q < OP_SPAN;
+    wire is_span = op_q >= OP_SPAN && op_q < OP_PLANE;
+    wire is_plane = op_q >= OP_PLANE && op_q < OP_FINAL;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [5:0] edge_op = op_q - OP_EDGE;
+    wire [5:0] span_op = op_q - OP_SPAN;
+    wire [5:0] plane_op = op_q - OP_PLANE;
+    wire [1:0] edge_k = edge_op[1:0];
+    wire [1:0] span_k = span_op[2:1];
+    wire span_step = span_op[0];                  // SPAN STEP (else SPAN START)
+    wire plane_div = plane_op[0];                 // the division (else the numerator)
+    wire [3:0] plane_n = plane_op[4:1];
+    wire [1:0] plane_p = plane_n < 3 ? 2'd0 : plane_n < 6 ? 2'd1 : plane_n < 9 ? 2'd2 : 2'd3;
+    wire [3:0] plane_c_wide = plane_n - 4'(3 * plane_p);
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [1:0] plane_c = plane_c_wide[1:0];
+    wire is_mul = is_area || is_edge || (is_plane && !plane_div);
+    wire is_div = is_span || (is_plane && plane_div);
+    wire [SB-1:0] plane_bits = plane_p == 2'd0 ? SB'(Z_BITS) : SB'(8);  // m: the vertex values' bits
+    wire [SB-1:0] steps = is_area ? SB'(2 * DB)
+                        : is_edge ? SB'(2 * (CB + 1))
+                        : is_span ? (span_step ? SB'(H + S + 1) : SB'(H + 1))
+                        : is_plane ? (!plane_div ? SB'(3) * plane_bits
+                                                 : SB'(H + F) + plane_bits + (plane_c != 0 ? SB'(S) : SB'(0)))
+                        : {SB{1'b0}};
+    wire [1:0] last_term = is_plane ? 2'd2 : 2'd1;
+    wire signed_multiplier = is_area || is_edge;
+    wire last_bit = left_q <= SB'(last_term) + 1'b1;
+
+    // ---- Multiply step: HI += +-(bit ? B : 0) (+ the edge's bias as carry for start numerators) ----
+    wire [1:0] weight_k = is_area ? (term_q == 2'd0 ? 2'd0 : 2'd2)
+                        : is_edge ? edge_k
+                        : (term_q == 2'd2 ? 2'd0 : term_q + 1'b1);  // numerators: v_t e_(t+1)
+    wire use_start = is_plane && plane_c == 2'd0;
+    wire use_ndy = (is_edge && term_q == 2'd1) || (is_plane && plane_c == 2'd1);
+    wire signed [H-1:0] multiplicand = use_start ? H'(start_q[weight_k])
+                                     : use_ndy ? H'(ndy[weight_k]) : H'(dx[weight_k]);
+    wire bit_now = mq_q[term_q][0];
+    wire subtract = bit_now && ((is_area && term_q == 2'd1) ^ (signed_multiplier && last_bit));
+    wire signed [H-1:0] addend = bit_now ? multiplicand : {H{1'b0}};
+    wire signed [H-1:0] hi = acc_q[ACC_BITS-1 -: H];
+    wire signed [H-1:0] sum = hi + (subtract ? ~addend : addend)
+                              + H'(subtract || (bit_now && use_start && bias[weight_k]));
+
+    // ---- Divide step: {rem, next bit} - |divisor|, or the remainder correction rem - |divisor| ----
+    wire signed [AB:0] divisor = is_span ? (AB+1)'($signed({ndy[span_k], {S{1'b0}}})) : (AB+1)'(area_q);
+    wire divisor_nonzero = !is_span || ndy[span_k] != 0;
+    wire correction = is_span && left_q == SB'(1);
+    wire next_bit = (data_left_q != 0 && acc_q[ACC_BITS-1]) ^ sign_q;
+    wire [AB-1:0] shifted = {rem_q[AB-2:0], next_bit};
+    wire [AB:0] trial = {1'b0, correction ? rem_q : shifted}
+                        + (divisor[AB] ? divisor : ~divisor) + (AB+1)'(!divisor[AB]);
+    wire fits = !trial[AB];
+    wire quotient_bit = (fits && divisor_nonzero) ^ sign_q;
+
+    // ---- Operands of the load cycle ----
+    wire signed [BB-1:0] centre_x = (bx0 <<< S) + HALF_B;
+    wire signed [BB-1:0] centre_y = (by0 <<< S) + HALF_B;
+    wire signed [BB-1:0] rel_x = centre_x - BB'(vx[edge_k]);
+    wire signed [BB-1:0] rel_y = centre_y - BB'(vy[edge_k]);
+    wire [Z_BITS-1:0] value [0:2];  // plane p's vertex values
+    genvar v;
+    for (v = 0; v < 3; v = v + 1) begin : values
+      wire [7:0] color = plane_p == 2'd1 ? vrgb[v][23:16] : plane_p == 2'd2 ? vrgb[v][15:8] : vrgb[v][7:0];
+      assign value[v] = plane_p == 2'd0 ? vz[v] : Z_BITS'(color);
     end
-  endfunction
+    wire signed [DB-1:0] span_dividend_small = dx[span_k];
+    wire signed [H-1:0] span_dividend = span_step ? H'(span_dividend_small) : H'(start_q[span_k]);
 
-  // The edge steps widened to EB bits (sign extension) as weights of the step numerators.
-  wire signed [EB-1:0] weight_x [0:2];
-  wire signed [EB-1:0] weight_y [0:2];
-  generate
-    for (k = 0; k < 3; k = k + 1) begin : weights
-      assign weight_x[k] = $signed({{(EB-SXB){edge_step_x[k][SXB-1]}}, edge_step_x[k]});
-      assign weight_y[k] = $signed({{(EB-SYB){edge_step_y[k][SYB-1]}}, edge_step_y[k]});
-    end
-  endgenerate
+    // ---- Decision (DECIDE, the AREA result in ACC) ----
+    assign area2 = acc_q[MB-DB +: AB];
+    wire deciding = active_q && load_q && op_q == OP_DECIDE;
+    assign decided = deciding;
+    assign swap_vertices = deciding && status == DRAWN && swap;
 
-  generate
-  if (SETUP_INTERVAL == 0) begin : parallel
-    localparam integer COUNT_BITS = $clog2(DIVIDER_BITS + 1);
-    localparam [COUNT_BITS-1:0] DIVIDE_CYCLES = DIVIDER_BITS[COUNT_BITS-1:0];
-    localparam [1:0] IDLE = 2'd0, FRONT = 2'd1, DIVIDE = 2'd2, OUT = 2'd3;
-    reg [1:0] state;
-    reg [COUNT_BITS-1:0] divide_left;
+    assign load_vertices = !active_q && !out_q && in_valid;
+    assign in_ready = !active_q && !out_q;
+    assign free = in_ready;
+    assign busy = load_vertices || active_q || out_q;
+    assign out_valid = out_q;
     wire unused_run = run;  // one triangle at a time: no slots
-    // 12 plane numerators: plane p (0 depth, 1..3 r, g, b), term t (0 start, 1 step_x, 2 step_y).
-    wire signed [NB-1:0] numerator [0:11];
-    genvar p;
-    for (p = 0; p < 4; p = p + 1) begin : planes
-      wire [Z_BITS-1:0] v0 = p == 0 ? oz[0] : {{(Z_BITS-8){1'b0}}, orgb[0][(p == 0 ? 0 : 8*(3-p)) +: 8]};
-      wire [Z_BITS-1:0] v1 = p == 0 ? oz[1] : {{(Z_BITS-8){1'b0}}, orgb[1][(p == 0 ? 0 : 8*(3-p)) +: 8]};
-      wire [Z_BITS-1:0] v2 = p == 0 ? oz[2] : {{(Z_BITS-8){1'b0}}, orgb[2][(p == 0 ? 0 : 8*(3-p)) +: 8]};
-      assign numerator[3*p + 0] = plane_numerator(v0, v1, v2, unbiased[0], unbiased[1], unbiased[2]);
-      assign numerator[3*p + 1] = plane_numerator(v0, v1, v2, weight_x[0], weight_x[1], weight_x[2]);
-      assign numerator[3*p + 2] = plane_numerator(v0, v1, v2, weight_y[0], weight_y[1], weight_y[2]);
-    end
 
-    // ---- Dividers, all started at the end of FRONT for a drawn triangle ----
-    wire start_dividers = state == FRONT && status == DRAWN;
-    assign load_vertices = state == IDLE && in_valid;
-    assign in_ready = state == IDLE;
-    assign free = state == IDLE;
-    assign out_valid = state == OUT;
-    assign decided = state == FRONT;
-    assign busy = (state == IDLE && in_valid) || state == FRONT || state == DIVIDE || state == OUT;
-    genvar n;
-    for (n = 0; n < 12; n = n + 1) begin : plane_dividers
-      localparam integer QB = n < 3 ? ZRB : CRB;
-      wire [NB-1:0] magnitude = numerator[n] < 0 ? -numerator[n] : numerator[n];
-      // numerator * 2^F < 2^DIVIDER_BITS (docs/widths.md): the top bits are zero.
-      /* verilator lint_off UNUSEDSIGNAL */
-      wire [NB+F-1:0] scaled = {magnitude, {F{1'b0}}};
-      /* verilator lint_on UNUSEDSIGNAL */
-      wire signed [QB-1:0] quotient;
-      wire [AB-1:0] unused_remainder;
-      wire unused_busy;
-      divider #(.DIVIDEND_BITS(DIVIDER_BITS), .DIVISOR_BITS(AB), .QUOTIENT_BITS(QB)) div (
-        .clk(clk), .start(start_dividers), .dividend_negative(numerator[n] < 0),
-        .dividend_magnitude(scaled[DIVIDER_BITS-1:0]), .divisor(area), .busy(unused_busy),
-        .quotient(quotient), .remainder(unused_remainder));
-    end
-    assign out_depth_start = plane_dividers[0].quotient;
-    assign out_depth_step_x = plane_dividers[1].quotient;
-    assign out_depth_step_y = plane_dividers[2].quotient;
-    genvar c;
-    for (c = 0; c < 3; c = c + 1) begin : color_out
-      assign out_color_start[c*CRB +: CRB] = plane_dividers[3 + 3*c].quotient;
-      assign out_color_step_x[c*CRB +: CRB] = plane_dividers[4 + 3*c].quotient;
-      assign out_color_step_y[c*CRB +: CRB] = plane_dividers[5 + 3*c].quotient;
-    end
-
-    // Span walker: start = quot * d + rem and step_y = step_quot * d + step_rem, d = |step_x|.
-    reg signed [EB-1:0]  rec_edge_start [0:2];
-    reg signed [SXB-1:0] rec_edge_step_x [0:2];
-    reg signed [SYB-1:0] rec_edge_step_y [0:2];
-    for (k = 0; k < 3; k = k + 1) begin : span_dividers
-      wire [SXB-1:0] divisor = edge_step_x[k] < 0 ? -edge_step_x[k] : edge_step_x[k];
-      wire [EB-1:0] start_mag = edge_start[k] < 0 ? -edge_start[k] : edge_start[k];
-      wire [SYB-1:0] step_mag = edge_step_y[k] < 0 ? -edge_step_y[k] : edge_step_y[k];
-      wire signed [EB-1:0] start_quot;
-      wire signed [SYB-1:0] step_quot;
-      // Remainders are < |step_x| < 2^RB: the top bit is zero.
-      /* verilator lint_off UNUSEDSIGNAL */
-      wire [SXB-1:0] start_rem, step_rem;
-      /* verilator lint_on UNUSEDSIGNAL */
-      wire unused_busy_start, unused_busy_step;
-      divider #(.DIVIDEND_BITS(EB), .DIVISOR_BITS(SXB), .QUOTIENT_BITS(EB)) div_start (
-        .clk(clk), .start(start_dividers), .dividend_negative(edge_start[k] < 0),
-        .dividend_magnitude(start_mag), .divisor(divisor), .busy(unused_busy_start),
-        .quotient(start_quot), .remainder(start_rem));
-      divider #(.DIVIDEND_BITS(SYB), .DIVISOR_BITS(SXB), .QUOTIENT_BITS(SYB)) div_step (
-        .clk(clk), .start(start_dividers), .dividend_negative(edge_step_y[k] < 0),
-        .dividend_magnitude(step_mag), .divisor(divisor), .busy(unused_busy_step),
-        .quotient(step_quot), .remainder(step_rem));
-      // A horizontal edge (step_x == 0) has no span quotients: the model sets them to 0.
-      wire horizontal = rec_edge_step_x[k] == 0;
-      assign out_edge_start[k*EB +: EB] = rec_edge_start[k];
-      assign out_edge_step_x[k*SXB +: SXB] = rec_edge_step_x[k];
-      assign out_edge_step_y[k*SYB +: SYB] = rec_edge_step_y[k];
-      assign out_span_quot[k*EB +: EB] = horizontal ? {EB{1'b0}} : start_quot;
-      assign out_span_rem[k*RB +: RB] = horizontal ? {RB{1'b0}} : start_rem[RB-1:0];
-      assign out_span_step_quot[k*SYB +: SYB] = horizontal ? {SYB{1'b0}} : step_quot;
-      assign out_span_step_rem[k*RB +: RB] = horizontal ? {RB{1'b0}} : step_rem[RB-1:0];
-    end
-
-    // ---- Control ----
+    integer t;
     always @(posedge clk) begin
-    if (rst) begin
-        state <= IDLE;
-        divide_left <= {COUNT_BITS{1'b0}};
-    end else begin
-        case (state)
-          IDLE: if (in_valid) state <= FRONT;
-          FRONT: begin
-            state <= status == DRAWN ? DIVIDE : IDLE;
-            divide_left <= DIVIDE_CYCLES;
+      if (rst) begin
+        active_q <= 1'b0;
+        out_q <= 1'b0;
+        load_q <= 1'b0;
+        op_q <= OP_AREA;
+      end else begin
+        out_q <= 1'b0;
+        if (load_vertices) begin
+          active_q <= 1'b1;
+          load_q <= 1'b1;
+          op_q <= OP_AREA;
+        end else if (active_q && load_q) begin
+          if (op_q == OP_FINAL) begin
+            active_q <= 1'b0;
+            out_q <= 1'b1;
+          end else if (deciding && status != DRAWN) begin
+            active_q <= 1'b0;
+          end else if (steps == 0) begin
+            op_q <= op_q + 1'b1;
+          end else begin
+            load_q <= 1'b0;
           end
-          DIVIDE: begin
-            divide_left <= divide_left - 1'b1;
-            if (divide_left == 1) state <= OUT;
-          end
-          default: state <= IDLE;  // OUT: the core takes the record
-        endcase
-    end
-    end
-
-    reg [XB-1:0] x0_q, x1_q;
-    reg [YB-1:0] y0_q, y1_q;
-    reg [23:0] flat_rgb_q;
-    assign out_x0 = x0_q;
-    assign out_x1 = x1_q;
-    assign out_y0 = y0_q;
-    assign out_y1 = y1_q;
-    assign out_flat_rgb = flat_rgb_q;
-    integer i;
-    always @(posedge clk) begin
-    if (start_dividers) begin
-        x0_q <= bx0[XB-1:0];
-        x1_q <= bx1[XB-1:0];
-        y0_q <= by0[YB-1:0];
-        y1_q <= by1[YB-1:0];
-        flat_rgb_q <= vrgb[0];
-        for (i = 0; i < 3; i = i + 1) begin
-          rec_edge_start[i] <= edge_start[i];
-          rec_edge_step_x[i] <= edge_step_x[i];
-          rec_edge_step_y[i] <= edge_step_y[i];
+        end else if (active_q && left_q == SB'(1)) begin
+          load_q <= 1'b1;
+          op_q <= op_q + 1'b1;
         end
+      end
     end
+
+    // Datapath (no reset: every operation loads what it uses).
+    always @(posedge clk) begin
+      if (active_q && load_q) begin
+        left_q <= steps;
+        term_q <= 2'd0;
+        rem_q <= {AB{1'b0}};
+        if (is_area) begin
+          acc_q <= {ACC_BITS{1'b0}};
+          mq_q[0] <= MB'(ndy[2]);
+          mq_q[1] <= MB'(ndy[0]);
+        end else if (is_edge) begin
+          acc_q <= {{H{bias[edge_k]}}, {MB{1'b0}}};  // HI = -bias: the product comes out biased
+          mq_q[0] <= MB'(rel_y);
+          mq_q[1] <= MB'(rel_x);
+        end else if (is_span) begin
+          acc_q <= divisor_nonzero ? {span_dividend, {MB{1'b0}}} : {ACC_BITS{1'b0}};
+          sign_q <= divisor_nonzero && span_dividend[H-1];
+          data_left_q <= SB'(H);
+        end else if (is_plane && !plane_div) begin
+          acc_q <= {ACC_BITS{1'b0}};
+          for (t = 0; t < 3; t = t + 1) mq_q[t] <= MB'(value[t]);
+        end else if (is_plane) begin
+          sign_q <= acc_q[ACC_BITS-1];
+          data_left_q <= SB'(H) + plane_bits;
+        end
+      end else if (active_q && is_mul) begin
+        left_q <= left_q - 1'b1;
+        if (term_q == last_term) begin
+          term_q <= 2'd0;
+          acc_q <= {sum[H-1], sum, acc_q[MB-1:1]};
+          for (t = 0; t < 3; t = t + 1) mq_q[t] <= mq_q[t] >> 1;
+        end else begin
+          term_q <= term_q + 1'b1;
+          acc_q[ACC_BITS-1 -: H] <= sum;
+        end
+      end else if (active_q && is_div) begin
+        left_q <= left_q - 1'b1;
+        if (correction) begin
+          if (sign_q) rem_q <= ~trial[AB-1:0];  // |d| - 1 - r: the remainder of n from that of ~n
+        end else begin
+          if (data_left_q != 0) data_left_q <= data_left_q - 1'b1;
+          rem_q <= fits ? trial[AB-1:0] : shifted;
+          acc_q <= {acc_q[ACC_BITS-2:0], quotient_bit};
+        end
+      end
     end
+
+    // ---- Record: each result stored in the next operation's load cycle ----
+    integer r;
+    always @(posedge clk) begin
+      if (active_q && load_q) begin
+        if (op_q == OP_DECIDE) area_q <= area2;
+        for (r = 0; r < 3; r = r + 1) begin
+          if (op_q == OP_EDGE + 6'(r) + 6'd1) start_q[r] <= acc_q[MB-(CB+1) +: EB];
+          if (op_q == OP_SPAN + 6'(2 * r) + 6'd1) begin
+            span_quot_q[r] <= acc_q[EB-1:0];
+            span_rem_q[r] <= rem_q[RB-1:0];
+          end
+          if (op_q == OP_SPAN + 6'(2 * r) + 6'd2) begin
+            span_step_quot_q[r] <= acc_q[SYB-1:0];
+            span_step_rem_q[r] <= rem_q[RB-1:0];
+          end
+          if (op_q == OP_PLANE + 6'(2 * r) + 6'd2) depth_q[r] <= acc_q[ZRB-1:0];
+        end
+        for (r = 0; r < 9; r = r + 1)
+          if (op_q == OP_PLANE + 6'(2 * r) + 6'd8) color_q[r] <= acc_q[CRB-1:0];
+      end
+    end
+    for (k = 0; k < 3; k = k + 1) begin : record
+      assign out_edge_start[k*EB +: EB] = start_q[k];
+      assign out_span_quot[k*EB +: EB] = span_quot_q[k];
+      assign out_span_rem[k*RB +: RB] = span_rem_q[k];
+      assign out_span_step_quot[k*SYB +: SYB] = span_step_quot_q[k];
+      assign out_span_step_rem[k*RB +: RB] = span_step_rem_q[k];
+      assign out_color_start[k*CRB +: CRB] = color_q[3*k];
+      assign out_color_step_x[k*CRB +: CRB] = color_q[3*k + 1];
+      assign out_color_step_y[k*CRB +: CRB] = color_q[3*k + 2];
+    end
+    assign out_depth_start = depth_q[0];
+    assign out_depth_step_x = depth_q[1];
+    assign out_depth_step_y = depth_q[2];
+    assign out_x0 = bx0[XB-1:0];
+    assign out_x1 = bx1[XB-1:0];
+    assign out_y0 = by0[YB-1:0];
+    assign out_y1 = by1[YB-1:0];
+    assign out_flat_rgb = vrgb[0];
   end else begin : pipelined
+    wire signed [DB-1:0] d10x = vx[1] - vx[0];
+    wire signed [DB-1:0] d10y = vy[1] - vy[0];
+    wire signed [DB-1:0] d20x = vx[2] - vx[0];
+    wire signed [DB-1:0] d20y = vy[2] - vy[0];
+    wire signed [2*DB:0] cross_a = $signed({{(DB+1){d10x[DB-1]}}, d10x}) * $signed({{(DB+1){d20y[DB-1]}}, d20y});
+    wire signed [2*DB:0] cross_b = $signed({{(DB+1){d20x[DB-1]}}, d20x}) * $signed({{(DB+1){d10y[DB-1]}}, d10y});
+    // |area2| <= 9 W H M^2 fits AB bits (docs/widths.md): the top bits are sign copies.
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire signed [2*DB:0] area2_wide = cross_a - cross_b;
+    /* verilator lint_on UNUSEDSIGNAL */
+    assign area2 = area2_wide[AB-1:0];
+    wire [AB-1:0] area = area2[AB-1] ? -area2 : area2;
+    assign swap_vertices = 1'b0;  // the FRONT slot orders them through muxes instead
+
+    // ---- Edge functions at the first candidate's centre (ordered vertices) ----
+    wire signed [CB-1:0] ox [0:2];
+    wire signed [CB-1:0] oy [0:2];
+    wire [Z_BITS-1:0]    oz [0:2];
+    wire [23:0]          orgb [0:2];
+    assign ox[0] = vx[0];
+    assign oy[0] = vy[0];
+    assign oz[0] = vz[0];
+    assign orgb[0] = vrgb[0];
+    assign ox[1] = swap ? vx[2] : vx[1];
+    assign oy[1] = swap ? vy[2] : vy[1];
+    assign oz[1] = swap ? vz[2] : vz[1];
+    assign orgb[1] = swap ? vrgb[2] : vrgb[1];
+    assign ox[2] = swap ? vx[1] : vx[2];
+    assign oy[2] = swap ? vy[1] : vy[2];
+    assign oz[2] = swap ? vz[1] : vz[2];
+    assign orgb[2] = swap ? vrgb[1] : vrgb[2];
+
+    wire signed [BB-1:0] centre_x = (bx0 <<< S) + HALF_B;
+    wire signed [BB-1:0] centre_y = (by0 <<< S) + HALF_B;
+
+    wire signed [EB-1:0]  unbiased [0:2];  // E at the first candidate, s.2S
+    wire signed [EB-1:0]  edge_start [0:2];
+    wire signed [SXB-1:0] edge_step_x [0:2];
+    wire signed [SYB-1:0] edge_step_y [0:2];
+    genvar k;
+      for (k = 0; k < 3; k = k + 1) begin : edges
+        wire signed [CB-1:0] bx = ox[(k + 1) % 3];
+        wire signed [CB-1:0] by = oy[(k + 1) % 3];
+        wire signed [CB-1:0] ax = ox[k];
+        wire signed [CB-1:0] ay = oy[k];
+        wire signed [PB-1:0] dx = $signed({{(PB-CB){bx[CB-1]}}, bx}) - $signed({{(PB-CB){ax[CB-1]}}, ax});
+        wire signed [PB-1:0] dy = $signed({{(PB-CB){by[CB-1]}}, by}) - $signed({{(PB-CB){ay[CB-1]}}, ay});
+        wire signed [PB-1:0] rel_x = $signed({{(PB-BB){centre_x[BB-1]}}, centre_x}) - $signed({{(PB-CB){ax[CB-1]}}, ax});
+        wire signed [PB-1:0] rel_y = $signed({{(PB-BB){centre_y[BB-1]}}, centre_y}) - $signed({{(PB-CB){ay[CB-1]}}, ay});
+        // Only the low bits are kept: |E| < 2^(EB-1), |step| within SXB / SYB (docs/widths.md).
+        /* verilator lint_off UNUSEDSIGNAL */
+        wire signed [PB-1:0] value = dx * rel_y - dy * rel_x;
+        // Interior to the right (dy < 0) is a left edge; horizontal with interior below is top.
+        wire top_left = dy < 0 || (dy == 0 && dx > 0);
+        wire signed [PB-1:0] step_x = -(dy <<< S);
+        wire signed [PB-1:0] step_y = dx <<< S;
+        /* verilator lint_on UNUSEDSIGNAL */
+        assign unbiased[k] = value[EB-1:0];
+        assign edge_start[k] = unbiased[k] - (top_left ? 0 : 1);
+        assign edge_step_x[k] = step_x[SXB-1:0];
+        assign edge_step_y[k] = step_y[SYB-1:0];
+      end
+
+
+    // The edge steps widened to EB bits (sign extension) as weights of the step numerators.
+    wire signed [EB-1:0] weight_x [0:2];
+    wire signed [EB-1:0] weight_y [0:2];
+      for (k = 0; k < 3; k = k + 1) begin : weights
+        assign weight_x[k] = $signed({{(EB-SXB){edge_step_x[k][SXB-1]}}, edge_step_x[k]});
+        assign weight_y[k] = $signed({{(EB-SYB){edge_step_y[k][SYB-1]}}, edge_step_y[k]});
+      end
+
     // ---- Pipelined schedule (docs/cycle-model.md): slots of I cycles, one triangle per slot ----
     localparam integer I = SETUP_INTERVAL;
     localparam integer NUMER_STAGES = rs_setup_numer_stages(Z_BITS, I);
@@ -673,6 +783,15 @@ module triangle_setup #(
         vz[v] <= in_z[v*Z_BITS +: Z_BITS];
         vrgb[v] <= in_rgb[v*24 +: 24];
       end
+    end else if (swap_vertices) begin
+      vx[1] <= vx[2];
+      vx[2] <= vx[1];
+      vy[1] <= vy[2];
+      vy[2] <= vy[1];
+      vz[1] <= vz[2];
+      vz[2] <= vz[1];
+      vrgb[1] <= vrgb[2];
+      vrgb[2] <= vrgb[1];
     end
   end
 endmodule

@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # Bug injection: copies rtl/ with one bug each, verilates the copy (64 x 48 profile) with
-# testbench/mutant_check.cpp (the setup_* mutants with the pipelined setup, SETUP_INTERVAL 2) and requires the co-simulation to catch the bug with a first-divergence
-# report. Usage: rtl-mutants.sh BUILD_DIR [mutant ...]  (BUILD_DIR holds librastersim_rtl.a).
+# testbench/mutant_check.cpp (the setup_* mutants with the pipelined setup, SETUP_INTERVAL 2; the
+# serial_* mutants with the serial setup, SETUP_INTERVAL 0) and requires the co-simulation to catch
+# the bug with a first-divergence report. Usage: rtl-mutants.sh BUILD_DIR [mutant ...]  (BUILD_DIR holds librastersim_rtl.a).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(cd "${1:?usage: rtl-mutants.sh BUILD_DIR [mutant ...]}" && pwd)"
 shift
 mutants=("$@")
-[ ${#mutants[@]} -eq 0 ] && mutants=(edge_compare z_adder_carry hazard_stall divider_rounding
-                                     setup_slot_counter setup_floor_correction setup_missing_step
+[ ${#mutants[@]} -eq 0 ] && mutants=(edge_compare z_adder_carry hazard_stall
+                                     serial_floor serial_remainder_correction serial_multiplier_bits
+                                     serial_bias_carry setup_slot_counter setup_floor_correction setup_missing_step
                                      setup_credit_count setup_fifo_empty)
 
 # name -> file, text to replace, replacement (fixed strings); params: extra verilator -G settings.
@@ -22,9 +24,20 @@ to[z_adder_carry]='value <= value + step_x_q + 1'"'"'b1;'  # carry-in of the x-s
 file[hazard_stall]=zbuffer.sv
 from[hazard_stall]='wire can_accept = mem_clear_done && !hazard;'
 to[hazard_stall]='wire can_accept = mem_clear_done;'  # read-after-write stall removed
-file[divider_rounding]=divider.sv
-from[divider_rounding]=': remainder_nonzero ? ~quotient_mag'
-to[divider_rounding]=': 1'"'"'b0 ? ~quotient_mag'     # negative quotients truncate instead of floor
+params[hazard_stall]="-GSETUP_INTERVAL=4"  # a setup fast enough for back-to-back triangles to meet
+# The serial setup unit.
+for m in serial_floor serial_remainder_correction serial_multiplier_bits serial_bias_carry; do
+  file[$m]=triangle_setup.sv
+  params[$m]="-GSETUP_INTERVAL=0"
+done
+from[serial_floor]='wire quotient_bit = (fits && divisor_nonzero) ^ sign_q;'
+to[serial_floor]='wire quotient_bit = fits && divisor_nonzero;'  # a negative dividend's quotient not inverted
+from[serial_remainder_correction]='if (sign_q) rem_q <= ~trial[AB-1:0];'
+to[serial_remainder_correction]='if (1'"'"'b0) rem_q <= ~trial[AB-1:0];'  # the span remainder correction step missing
+from[serial_multiplier_bits]=': is_edge ? SB'"'"'(2 * (CB + 1))'
+to[serial_multiplier_bits]=': is_edge ? SB'"'"'(2 * CB)'  # the edge products one multiplier bit short
+from[serial_bias_carry]='+ H'"'"'(subtract || (bit_now && use_start && bias[weight_k]));'
+to[serial_bias_carry]='+ H'"'"'(subtract);'  # the start numerators use the biased edge values
 # The pipelined setup unit and the record FIFO.
 for m in setup_slot_counter setup_floor_correction setup_missing_step setup_credit_count setup_fifo_empty; do
   params[$m]="-GSETUP_INTERVAL=2"

@@ -29,7 +29,7 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
     throw std::invalid_argument("setup_fifo_depth " + std::to_string(p.setup_fifo_depth) +
                                 " exceeds the RTL's MAX_SETUP_FIFO_DEPTH " + std::to_string(int(Core::P_MAX_SETUP_FIFO_DEPTH)));
   const int coord_bits = Core::COORD_BITS;
-  const int setup_cycles = std::max(int(Core::SETUP_CYCLES), int(Core::SETUP_DRAWN_LATENCY) + 1);
+  const int setup_cycles = int(Core::SETUP_DRAWN_LATENCY) + 1;
   auto context = std::make_unique<VerilatedContext>();
   context->randReset(2);
   context->randSeed(int(options.seed % 2147483647u) + 1);

@@ -120,7 +120,7 @@ void check_timeline(const std::string& block) {
     } else if (key == "setup_interval" || key == "setup_fifo_depth") {
       EXPECT_EQ(set_profile_key(p, key, value), "");
     } else if (key == "divider_bits") EXPECT_EQ(std::to_string(derive_widths(p).divider_bits), value);
-    else if (key == "setup_cycles") EXPECT_EQ(std::to_string(derive_widths(p).setup_cycles), value);
+    else if (key == "setup_rejected_latency") EXPECT_EQ(std::to_string(setup_timing(p).rejected_latency), value);
     else if (key == "setup_latency") EXPECT_EQ(std::to_string(setup_timing(p).drawn_latency), value);
     else if (key.rfind("tri", 0) == 0) {
       const TriangleRecord& r = records.at(size_t(key[3] - '0'));
@@ -148,7 +148,8 @@ TEST(Docs, WidthsTable) {
     std::ostringstream derived;
     derived << "guard " << w.guard_bits << " coord " << w.coord_bits << " delta " << w.delta_bits << " area "
             << w.area_bits << " edge " << w.edge_bits << " divider " << w.divider_bits << " z_reg " << w.z_reg_bits
-            << " color_reg " << w.color_reg_bits << " setup_cycles " << w.setup_cycles;
+            << " color_reg " << w.color_reg_bits << " serial_setup "
+            << serial_setup_drawn_latency(w, subpixel_bits, z_bits);
     EXPECT_EQ(derived.str(), value);
   }
 }

@@ -62,10 +62,10 @@ TEST(ProfileValidate, EachKeyJustOutsideItsRangeIsRejectedByName) {
       EXPECT_TRUE(mentions(errors[0], std::to_string(bad))) << errors[0];
     }
   }
-  // setup_interval 0: the parallel-divider unit, below the pipelined unit's range.
-  Profile parallel;
-  parallel.setup_interval = 0;
-  EXPECT_TRUE(validate(parallel).empty());
+  // setup_interval 0: the serial unit, below the pipelined unit's range.
+  Profile serial;
+  serial.setup_interval = 0;
+  EXPECT_TRUE(validate(serial).empty());
   // memory_stall_seed: any non-negative int.
   Profile seeded;
   seeded.memory_stall_seed = INT32_MAX;

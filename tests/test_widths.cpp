@@ -135,7 +135,15 @@ TEST(Widths, DerivedWidthsHoldTheExactMaxima) {
     EXPECT_GE(w.x_bits, bits_for_unsigned(c.width - 1));
     EXPECT_GE(w.y_bits, bits_for_unsigned(c.height - 1));
     EXPECT_GE(w.addr_bits, bits_for_unsigned(i128(c.width) * c.height - 1));
-    EXPECT_EQ(w.setup_cycles, w.setup_front_cycles + w.divider_bits + 1);
+    // The serial setup's accumulator (docs/cycle-model.md): H bits above the multiplier's m bits hold
+    // a sum of three products of an unbiased edge value (|e| <= edge_max) by an N-bit vertex value,
+    // and the low bits it keeps as quotients cover every record register.
+    const int H = serial_setup_datapath_bits(w);
+    const i128 numerator_max = 3 * (e.edge_max + 1) * ((i128(1) << c.N) - 1);
+    EXPECT_GE(H + c.N, bits_for_signed(numerator_max));
+    EXPECT_GE(H + c.N, bits_for_signed(-numerator_max));
+    EXPECT_GE(H + 8 + F, w.color_reg_bits);
+    EXPECT_GE(H, w.edge_bits);
     // The inputs' widths are exact: a bigger value would be a wasted register bit.
     EXPECT_EQ(w.coord_bits, bits_for_signed(e.coord_max));
     EXPECT_EQ(w.delta_bits, bits_for_signed(e.delta_max));

@@ -198,7 +198,7 @@ rtl::RtlResult RastersimSystem::run_frame(const Profile& profile, const std::vec
   result_ = &result;
   observer_.emplace(result, triangles.size());
   cycle_ = 0;
-  bound_ = max_cycles > 0 ? max_cycles : rtl::default_cycle_bound(profile, triangles, int(Core::SETUP_CYCLES));
+  bound_ = max_cycles > 0 ? max_cycles : rtl::default_cycle_bound(profile, triangles, int(Core::SETUP_DRAWN_LATENCY) + 1);
   frame_done_ = false;
   frame_pending_ = true;
   // The host waits up to a clock for the request, resets, and the memory clears in one cycle.

@@ -304,7 +304,9 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   wj["z_reg_bits"] = widths.z_reg_bits;
   wj["color_reg_bits"] = widths.color_reg_bits;
   wj["divider_bits"] = widths.divider_bits;
-  wj["setup_cycles"] = widths.setup_cycles;
+  const SetupTiming setup = setup_timing(profile);
+  wj["setup_drawn_latency"] = setup.drawn_latency;
+  wj["setup_rejected_latency"] = setup.rejected_latency;
   m["widths"] = wj;
   Json rtl;
   rtl["top"] = "rastersim_top";

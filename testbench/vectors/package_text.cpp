@@ -106,7 +106,7 @@ std::string testbench_text(const PackageFacts& k) {
     << "  localparam integer ADDR_BITS = " << w.addr_bits << ";\n"
     << "  localparam integer LATENCY_BITS = " << latency_bits << ";\n"
     << "  localparam integer SETUP_FIFO_DEPTH = " << p.setup_fifo_depth << ";  // cfg_setup_fifo_depth and MAX_SETUP_FIFO_DEPTH\n"
-    << "  localparam integer SETUP_INTERVAL = " << p.setup_interval << ";  // 0: parallel-divider setup; I: pipelined\n"
+    << "  localparam integer SETUP_INTERVAL = " << p.setup_interval << ";  // 0: serial setup; I: pipelined\n"
     << "  // The vectors.\n"
     << "  localparam integer TRIANGLES = " << k.triangles << ";  // commands.hex, triangles.hex\n"
     << "  localparam integer DRAWN = " << k.drawn << ";  // setup.hex\n"

@@ -186,16 +186,18 @@ SnappedTriangle one_pixel_triangle() {
 TEST(RtlCycles, WorkedExampleOfTheCycleModel) {
   Profile p = small_profile();
   p.memory_latency = 4;
-  p.setup_interval = 0;  // the parallel-divider unit, one record at a time (configuration small_parallel)
+  p.setup_interval = 0;  // the serial unit, one record at a time (configuration small_serial)
   p.setup_fifo_depth = 1;
   // Not the 16 x 12 profile of the page (no RTL is built for it): the same rules on the small
-  // screen give the same event cycles apart from divider_bits, checked against the model here.
+  // screen give the same event cycles apart from the widths, checked against the model here.
   const SnappedTriangle tiny = one_pixel_triangle();
   const std::vector<SnappedTriangle> tris = {tiny, tiny};
   const CosimReport r = cosim(p, tris);
   ASSERT_TRUE(r.passed) << r.message();
-  // Independent of the model: the second copy of the one-pixel triangle waits for the first's write.
-  const int setup_cycles = 2 + derive_widths(p).divider_bits + 1;
+  // Independent of the model's sum over the program: the closed form of docs/cycle-model.md.
+  const Widths w = derive_widths(p);
+  const int setup_cycles = 1 + 337 + 2 * w.delta_bits + 6 * w.coord_bits + 18 * (w.edge_bits + 3) + 12 * p.z_bits +
+                           12 * w.guard_bits + 11 * p.subpixel_bits;
   ASSERT_EQ(r.rtl.fragments.size(), 2u);
   EXPECT_EQ(r.rtl.triangles[0].walker_load, setup_cycles - 1);
   EXPECT_EQ(r.rtl.fragments[0].cycle, setup_cycles + 1);  // load, row cycle, pixel

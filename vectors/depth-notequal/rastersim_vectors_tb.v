@@ -26,7 +26,7 @@ module rastersim_vectors_tb;
   localparam integer ADDR_BITS = 8;
   localparam integer LATENCY_BITS = 2;
   localparam integer SETUP_FIFO_DEPTH = 8;  // cfg_setup_fifo_depth and MAX_SETUP_FIFO_DEPTH
-  localparam integer SETUP_INTERVAL = 4;  // 0: parallel-divider setup; I: pipelined
+  localparam integer SETUP_INTERVAL = 4;  // 0: serial setup; I: pipelined
   // The vectors.
   localparam integer TRIANGLES = 11;  // commands.hex, triangles.hex
   localparam integer DRAWN = 11;  // setup.hex
