@@ -1,7 +1,7 @@
 set terminal pngcairo size 1100,460 font ',10'
 set output 'cycles_vs_setup_luts.png'
 set datafile separator ','
-set multiplot layout 1,2 title 'Setup unit: frame cycles against iCE40 LUTs (labels: setup\_interval; 0 = parallel dividers)'
+set multiplot layout 1,2 title 'Setup unit: frame cycles against iCE40 LUTs (labels: setup\_interval; 0 = serial)'
 set xlabel 'setup unit, iCE40 LUTs (yosys synth\_ice40)'
 set ylabel 'frame cycles'
 set logscale y
