@@ -16,8 +16,8 @@ scripts/hw-cost.sh; writes hw-cost.csv and hw-cost.json into --out.
   zbuffer_memory and rastersim_top are synthesized only when the frame memory fits the device's
   block RAM (or with --synthesize-memory); otherwise their row says that it does not fit and
   gives the memory's bits (14.7 Mbit at 640 x 480).
-- divider and plane_register have no profile parameters of their own: they are synthesized with
-  the widths the profile gives the depth plane (the widest divider and plane register).
+- plane_register has no profile parameters of its own: it is synthesized with the widths the
+  profile gives the depth plane (the widest plane register).
 - Results are kept per unit in the work folder (--work) with a key of the RTL sources, the
   profile and the tool scripts: a second run with the same --work reuses them.
 """
@@ -36,7 +36,6 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RTL = os.path.join(ROOT, "rtl")  # --rtl-dir
 # What each unit's row covers (the "contents" column).
 UNITS = {
-    "divider": "one restoring divider at the depth plane's widths",
     "plane_register": "one plane register at the depth plane's widths",
     "triangle_setup": "setup unit",
     "scanline_walker": "scanline walker",
@@ -78,28 +77,8 @@ def synth_ice40(top, rest, options=""):
         f"synth_ice40 -top {top} -run {rest} {options}".rstrip()]) + "\n"
 
 
-# The units without profile parameters, at the widths the profile gives the depth plane.
+# The unit without profile parameters, at the widths the profile gives the depth plane.
 SHIMS = {
-    "divider": """
-module hwcost_divider #(
-  parameter integer WIDTH = 640, parameter integer HEIGHT = 480, parameter integer SUBPIXEL_BITS = 4,
-  parameter integer Z_BITS = 24, parameter integer Z_GUARD_BITS = 0, parameter integer MAX_MEMORY_LATENCY = 64
-) (clk, start, dividend_negative, dividend_magnitude, divisor, busy, quotient, remainder);
-`include "rastersim_widths.vh"
-  localparam integer DB = rs_divider_bits(WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer AB = rs_area_bits(WIDTH, HEIGHT, SUBPIXEL_BITS);
-  localparam integer QB = Z_BITS + rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS) + 1;
-  input wire clk, start, dividend_negative;
-  input wire [DB-1:0] dividend_magnitude;
-  input wire [AB-1:0] divisor;
-  output wire busy;
-  output wire [QB-1:0] quotient;
-  output wire [AB-1:0] remainder;
-  divider #(.DIVIDEND_BITS(DB), .DIVISOR_BITS(AB), .QUOTIENT_BITS(QB)) unit (
-    .clk(clk), .start(start), .dividend_negative(dividend_negative), .dividend_magnitude(dividend_magnitude),
-    .divisor(divisor), .busy(busy), .quotient(quotient), .remainder(remainder));
-endmodule
-""",
     "plane_register": """
 module hwcost_plane_register #(
   parameter integer WIDTH = 640, parameter integer HEIGHT = 480, parameter integer SUBPIXEL_BITS = 4,
