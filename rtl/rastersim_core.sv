@@ -131,17 +131,30 @@ module rastersim_core #(
     end
   end
 
-  // Setup record fields, in the order of the packed record below.
+  // The setup record, packed (rs_rec_lsb in rastersim_widths.vh).
+  localparam integer RECORD_BITS = rs_rec_lsb(18, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer WALKER_RECORD_BITS = rs_rec_walker_bits(WIDTH, HEIGHT, SUBPIXEL_BITS);
+  // Constants, so that the simulator does not evaluate the sums at run time.
+  localparam integer LSB_X0 = rs_rec_lsb(RS_REC_X0, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_X1 = rs_rec_lsb(RS_REC_X1, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_Y0 = rs_rec_lsb(RS_REC_Y0, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_Y1 = rs_rec_lsb(RS_REC_Y1, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_EDGE_START = rs_rec_lsb(RS_REC_EDGE_START, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_EDGE_STEP_X = rs_rec_lsb(RS_REC_EDGE_STEP_X, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_EDGE_STEP_Y = rs_rec_lsb(RS_REC_EDGE_STEP_Y, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_SPAN_QUOT = rs_rec_lsb(RS_REC_SPAN_QUOT, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_SPAN_REM = rs_rec_lsb(RS_REC_SPAN_REM, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_SPAN_STEP_QUOT = rs_rec_lsb(RS_REC_SPAN_STEP_QUOT, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_SPAN_STEP_REM = rs_rec_lsb(RS_REC_SPAN_STEP_REM, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_DEPTH_START = rs_rec_lsb(RS_REC_DEPTH_START, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_DEPTH_STEP_X = rs_rec_lsb(RS_REC_DEPTH_STEP_X, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_DEPTH_STEP_Y = rs_rec_lsb(RS_REC_DEPTH_STEP_Y, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_COLOR_START = rs_rec_lsb(RS_REC_COLOR_START, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_COLOR_STEP_X = rs_rec_lsb(RS_REC_COLOR_STEP_X, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_COLOR_STEP_Y = rs_rec_lsb(RS_REC_COLOR_STEP_Y, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_FLAT_RGB = rs_rec_lsb(RS_REC_FLAT_RGB, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
   wire setup_valid;
-  wire [X_BITS-1:0] setup_x0, setup_x1;
-  wire [Y_BITS-1:0] setup_y0, setup_y1;
-  wire [3*EB-1:0]  setup_edge_start, setup_span_quot;
-  wire [3*SXB-1:0] setup_edge_step_x;
-  wire [3*SYB-1:0] setup_edge_step_y, setup_span_step_quot;
-  wire [3*RB-1:0]  setup_span_rem, setup_span_step_rem;
-  wire [ZRB-1:0]   setup_depth_start, setup_depth_step_x, setup_depth_step_y;
-  wire [3*CRB-1:0] setup_color_start, setup_color_step_x, setup_color_step_y;
-  wire [23:0]      setup_flat_rgb;
+  wire [RECORD_BITS-1:0] setup_record;
   wire setup_ready;
   wire decided_front_facing_unused;
   wire [AREA_BITS-1:0] decided_area2_unused;
@@ -174,25 +187,10 @@ module rastersim_core #(
     .decided_front_facing(decided_front_facing_unused), .decided_area2(decided_area2_unused),
     .busy(trace_setup_busy),
     .out_valid(setup_valid),
-    .out_x0(setup_x0), .out_x1(setup_x1), .out_y0(setup_y0), .out_y1(setup_y1),
-    .out_edge_start(setup_edge_start), .out_edge_step_x(setup_edge_step_x), .out_edge_step_y(setup_edge_step_y),
-    .out_span_quot(setup_span_quot), .out_span_rem(setup_span_rem), .out_span_step_quot(setup_span_step_quot),
-    .out_span_step_rem(setup_span_step_rem),
-    .out_depth_start(setup_depth_start), .out_depth_step_x(setup_depth_step_x),
-    .out_depth_step_y(setup_depth_step_y),
-    .out_color_start(setup_color_start), .out_color_step_x(setup_color_step_x),
-    .out_color_step_y(setup_color_step_y),
-    .out_flat_rgb(setup_flat_rgb));
+    .out_record(setup_record));
 
   // Record FIFO: the output register's record goes to the walker directly when no earlier record
   // waits and the walker takes it in that cycle, else into the FIFO (the credits leave it room).
-  localparam integer RECORD_BITS = 2 * X_BITS + 2 * Y_BITS + 6 * EB + 3 * SXB + 6 * SYB + 6 * RB + 3 * ZRB
-                                   + 9 * CRB + 24;
-  wire [RECORD_BITS-1:0] setup_record = {
-      setup_x0, setup_x1, setup_y0, setup_y1, setup_edge_start, setup_edge_step_x, setup_edge_step_y,
-      setup_span_quot, setup_span_rem, setup_span_step_quot, setup_span_step_rem,
-      setup_depth_start, setup_depth_step_x, setup_depth_step_y,
-      setup_color_start, setup_color_step_x, setup_color_step_y, setup_flat_rgb};
   wire fifo_empty;
   wire [RECORD_BITS-1:0] fifo_head;
   wire walker_ready;
@@ -222,10 +220,25 @@ module rastersim_core #(
   wire [3*CRB-1:0] rec_color_step_x /*verilator public_flat_rd*/;
   wire [3*CRB-1:0] rec_color_step_y /*verilator public_flat_rd*/;
   wire [23:0]      rec_flat_rgb /*verilator public_flat_rd*/;
-  assign {rec_x0, rec_x1, rec_y0, rec_y1, rec_edge_start, rec_edge_step_x, rec_edge_step_y,
-          rec_span_quot, rec_span_rem, rec_span_step_quot, rec_span_step_rem,
-          rec_depth_start, rec_depth_step_x, rec_depth_step_y,
-          rec_color_start, rec_color_step_x, rec_color_step_y, rec_flat_rgb} = fifo_empty ? setup_record : fifo_head;
+  wire [RECORD_BITS-1:0] rec = fifo_empty ? setup_record : fifo_head;
+  assign rec_x0 = rec[LSB_X0 +: X_BITS];
+  assign rec_x1 = rec[LSB_X1 +: X_BITS];
+  assign rec_y0 = rec[LSB_Y0 +: Y_BITS];
+  assign rec_y1 = rec[LSB_Y1 +: Y_BITS];
+  assign rec_edge_start = rec[LSB_EDGE_START +: 3*EB];
+  assign rec_edge_step_x = rec[LSB_EDGE_STEP_X +: 3*SXB];
+  assign rec_edge_step_y = rec[LSB_EDGE_STEP_Y +: 3*SYB];
+  assign rec_span_quot = rec[LSB_SPAN_QUOT +: 3*EB];
+  assign rec_span_rem = rec[LSB_SPAN_REM +: 3*RB];
+  assign rec_span_step_quot = rec[LSB_SPAN_STEP_QUOT +: 3*SYB];
+  assign rec_span_step_rem = rec[LSB_SPAN_STEP_REM +: 3*RB];
+  assign rec_depth_start = rec[LSB_DEPTH_START +: ZRB];
+  assign rec_depth_step_x = rec[LSB_DEPTH_STEP_X +: ZRB];
+  assign rec_depth_step_y = rec[LSB_DEPTH_STEP_Y +: ZRB];
+  assign rec_color_start = rec[LSB_COLOR_START +: 3*CRB];
+  assign rec_color_step_x = rec[LSB_COLOR_STEP_X +: 3*CRB];
+  assign rec_color_step_y = rec[LSB_COLOR_STEP_Y +: 3*CRB];
+  assign rec_flat_rgb = rec[LSB_FLAT_RGB +: 24];
 
   // Walker + Z adder -> z-buffer fragment.
   wire adder_load, adder_step_x, adder_next_row, adder_row_enter;
@@ -239,10 +252,7 @@ module rastersim_core #(
   scanline_walker #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS)) walker (
     .clk(clk), .rst(rst), .cfg_traversal(traversal_q),
     .in_valid(record_valid), .in_ready(walker_ready),
-    .in_x0(rec_x0), .in_x1(rec_x1), .in_y0(rec_y0), .in_y1(rec_y1),
-    .in_edge_start(rec_edge_start), .in_edge_step_x(rec_edge_step_x), .in_edge_step_y(rec_edge_step_y),
-    .in_span_quot(rec_span_quot), .in_span_rem(rec_span_rem), .in_span_step_quot(rec_span_step_quot),
-    .in_span_step_rem(rec_span_step_rem),
+    .in_record(rec[WALKER_RECORD_BITS-1:0]),
     .adder_load(adder_load), .adder_step_x(adder_step_x), .adder_next_row(adder_next_row),
     .adder_row_enter(adder_row_enter), .adder_row_offset(adder_row_offset),
     .frag_valid(frag_valid), .frag_ready(frag_ready), .frag_x(frag_x), .frag_y(frag_y),

@@ -175,3 +175,53 @@ function automatic integer rs_setup_rejected_latency(input integer w, input inte
                                                      input integer interval);
   rs_setup_rejected_latency = interval == 0 ? 2 + 2 * rs_delta_bits(w, h, s) : 1;
 endfunction
+
+// The setup record as one packed vector (the model's SetupResult; the C++ side's field table is
+// testbench/setup_record.h). Fields from the least significant bit up, by number:
+//   0 x0 (XB)  1 x1 (XB)  2 y0 (YB)  3 y1 (YB)
+//   4 edge_start (3 x EB)  5 edge_step_x (3 x SXB)  6 edge_step_y (3 x SYB)
+//   7 span_quot (3 x EB)   8 span_rem (3 x RB)      9 span_step_quot (3 x SYB)  10 span_step_rem (3 x RB)
+//  11 depth_start (ZRB)   12 depth_step_x          13 depth_step_y
+//  14 color_start (3 x CRB)  15 color_step_x  16 color_step_y  17 flat_rgb (24)
+// with ZRB = N + F + 1, CRB = 9 + F and the edge widths above; three-edge fields hold edge k at
+// [k*B +: B], colour fields r, g, b at [c*CRB +: CRB]. triangle_setup packs it, the record FIFO
+// carries it, the walker takes fields 0..10 (the walker part, whose widths do not depend on the
+// depth), the Z adder the planes.
+// Every unit that includes this header gets the field names; most use a few.
+/* verilator lint_off UNUSEDPARAM */
+localparam integer RS_REC_X0 = 0, RS_REC_X1 = 1, RS_REC_Y0 = 2, RS_REC_Y1 = 3, RS_REC_EDGE_START = 4,
+                   RS_REC_EDGE_STEP_X = 5, RS_REC_EDGE_STEP_Y = 6, RS_REC_SPAN_QUOT = 7, RS_REC_SPAN_REM = 8,
+                   RS_REC_SPAN_STEP_QUOT = 9, RS_REC_SPAN_STEP_REM = 10, RS_REC_DEPTH_START = 11,
+                   RS_REC_DEPTH_STEP_X = 12, RS_REC_DEPTH_STEP_Y = 13, RS_REC_COLOR_START = 14,
+                   RS_REC_COLOR_STEP_X = 15, RS_REC_COLOR_STEP_Y = 16, RS_REC_FLAT_RGB = 17;
+/* verilator lint_on UNUSEDPARAM */
+
+function automatic integer rs_rec_field_bits(input integer field, input integer w, input integer h,
+                                             input integer s, input integer z_bits, input integer z_guard_bits);
+  case (field)
+    0, 1: rs_rec_field_bits = rs_ubits32(w - 1);
+    2, 3: rs_rec_field_bits = rs_ubits32(h - 1);
+    4, 7: rs_rec_field_bits = 3 * rs_edge_bits(w, h, s);
+    5: rs_rec_field_bits = 3 * rs_edge_step_x_bits(h, s);
+    6, 9: rs_rec_field_bits = 3 * rs_edge_step_y_bits(w, s);
+    8, 10: rs_rec_field_bits = 3 * rs_span_rem_bits(h, s);
+    11, 12, 13: rs_rec_field_bits = z_bits + rs_guard_bits(w, h, z_guard_bits) + 1;
+    14, 15, 16: rs_rec_field_bits = 3 * (9 + rs_guard_bits(w, h, z_guard_bits));
+    default: rs_rec_field_bits = 24;  // 17
+  endcase
+endfunction
+
+// The field's least significant bit; rs_rec_lsb(18, ...) is the record's width.
+function automatic integer rs_rec_lsb(input integer field, input integer w, input integer h, input integer s,
+                                      input integer z_bits, input integer z_guard_bits);
+  integer f;
+  begin
+    rs_rec_lsb = 0;
+    for (f = 0; f < field; f = f + 1) rs_rec_lsb = rs_rec_lsb + rs_rec_field_bits(f, w, h, s, z_bits, z_guard_bits);
+  end
+endfunction
+
+// The walker part, fields 0..10 (their widths need no depth widths: z_bits 0 stands in).
+function automatic integer rs_rec_walker_bits(input integer w, input integer h, input integer s);
+  rs_rec_walker_bits = rs_rec_lsb(11, w, h, s, 0, 0);
+endfunction

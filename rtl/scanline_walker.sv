@@ -16,20 +16,11 @@ module scanline_walker #(
   input  wire clk,
   input  wire rst,
   input  wire cfg_traversal,  // 0 bbox, 1 span
-  // Setup record (triangle_setup out_*), edge k at [k*B +: B].
+  // Setup record (triangle_setup out_record).
   input  wire in_valid,
   output wire in_ready,
-  input  wire [rs_ubits32(WIDTH - 1)-1:0]  in_x0,
-  input  wire [rs_ubits32(WIDTH - 1)-1:0]  in_x1,
-  input  wire [rs_ubits32(HEIGHT - 1)-1:0] in_y0,
-  input  wire [rs_ubits32(HEIGHT - 1)-1:0] in_y1,
-  input  wire [3*rs_edge_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] in_edge_start,   // s.2S
-  input  wire [3*rs_edge_step_x_bits(HEIGHT, SUBPIXEL_BITS)-1:0] in_edge_step_x, // s.2S
-  input  wire [3*rs_edge_step_y_bits(WIDTH, SUBPIXEL_BITS)-1:0]  in_edge_step_y, // s.2S
-  input  wire [3*rs_edge_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] in_span_quot,
-  input  wire [3*rs_span_rem_bits(HEIGHT, SUBPIXEL_BITS)-1:0]    in_span_rem,
-  input  wire [3*rs_edge_step_y_bits(WIDTH, SUBPIXEL_BITS)-1:0]  in_span_step_quot,
-  input  wire [3*rs_span_rem_bits(HEIGHT, SUBPIXEL_BITS)-1:0]    in_span_step_rem,
+  // Fields 0..10 of the record (rs_rec_lsb), edge k at [k*B +: B]: the walker part.
+  input  wire [rs_rec_walker_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] in_record,
   // Plane register control (z_adder), in lockstep with the counters.
   output wire adder_load,       // take the setup planes (LOAD cycle)
   output wire adder_step_x,     // next pixel of the row
@@ -58,6 +49,31 @@ module scanline_walker #(
   localparam integer YB = rs_ubits32(HEIGHT - 1);
   localparam integer QB = EB + 2;  // span bounds: -quot and quot compared at full width
   localparam [EB-1:0] CARRY = {{(EB-1){1'b0}}, 1'b1};
+
+  // The record's fields at their places (rastersim_widths.vh).
+  // Constants, so that the simulator does not evaluate the sums at run time.
+  localparam integer LSB_X0 = rs_rec_lsb(RS_REC_X0, WIDTH, HEIGHT, SUBPIXEL_BITS, 0, 0);
+  localparam integer LSB_X1 = rs_rec_lsb(RS_REC_X1, WIDTH, HEIGHT, SUBPIXEL_BITS, 0, 0);
+  localparam integer LSB_Y0 = rs_rec_lsb(RS_REC_Y0, WIDTH, HEIGHT, SUBPIXEL_BITS, 0, 0);
+  localparam integer LSB_Y1 = rs_rec_lsb(RS_REC_Y1, WIDTH, HEIGHT, SUBPIXEL_BITS, 0, 0);
+  localparam integer LSB_EDGE_START = rs_rec_lsb(RS_REC_EDGE_START, WIDTH, HEIGHT, SUBPIXEL_BITS, 0, 0);
+  localparam integer LSB_EDGE_STEP_X = rs_rec_lsb(RS_REC_EDGE_STEP_X, WIDTH, HEIGHT, SUBPIXEL_BITS, 0, 0);
+  localparam integer LSB_EDGE_STEP_Y = rs_rec_lsb(RS_REC_EDGE_STEP_Y, WIDTH, HEIGHT, SUBPIXEL_BITS, 0, 0);
+  localparam integer LSB_SPAN_QUOT = rs_rec_lsb(RS_REC_SPAN_QUOT, WIDTH, HEIGHT, SUBPIXEL_BITS, 0, 0);
+  localparam integer LSB_SPAN_REM = rs_rec_lsb(RS_REC_SPAN_REM, WIDTH, HEIGHT, SUBPIXEL_BITS, 0, 0);
+  localparam integer LSB_SPAN_STEP_QUOT = rs_rec_lsb(RS_REC_SPAN_STEP_QUOT, WIDTH, HEIGHT, SUBPIXEL_BITS, 0, 0);
+  localparam integer LSB_SPAN_STEP_REM = rs_rec_lsb(RS_REC_SPAN_STEP_REM, WIDTH, HEIGHT, SUBPIXEL_BITS, 0, 0);
+  wire [XB-1:0] in_x0 = in_record[LSB_X0 +: XB];
+  wire [XB-1:0] in_x1 = in_record[LSB_X1 +: XB];
+  wire [YB-1:0] in_y0 = in_record[LSB_Y0 +: YB];
+  wire [YB-1:0] in_y1 = in_record[LSB_Y1 +: YB];
+  wire [3*EB-1:0] in_edge_start = in_record[LSB_EDGE_START +: 3*EB];  // s.2S
+  wire [3*SXB-1:0] in_edge_step_x = in_record[LSB_EDGE_STEP_X +: 3*SXB];  // s.2S
+  wire [3*SYB-1:0] in_edge_step_y = in_record[LSB_EDGE_STEP_Y +: 3*SYB];  // s.2S
+  wire [3*EB-1:0] in_span_quot = in_record[LSB_SPAN_QUOT +: 3*EB];
+  wire [3*RB-1:0] in_span_rem = in_record[LSB_SPAN_REM +: 3*RB];
+  wire [3*SYB-1:0] in_span_step_quot = in_record[LSB_SPAN_STEP_QUOT +: 3*SYB];
+  wire [3*RB-1:0] in_span_step_rem = in_record[LSB_SPAN_STEP_REM +: 3*RB];
 
   localparam [1:0] IDLE = 2'd0, ROW = 2'd1, PIXEL = 2'd2;
   reg [1:0] state;

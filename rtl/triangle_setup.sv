@@ -38,28 +38,10 @@ module triangle_setup #(
   output wire        decided_front_facing,
   output wire signed [rs_area_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] decided_area2,  // s.2S
   output wire busy,   // accept, FRONT, DIVIDE, or OUT cycles
-  // Setup record of a drawn triangle (the model's SetupResult), edge k at [k*B +: B], valid for
-  // the one cycle setup_done.
+  // Setup record of a drawn triangle (the model's SetupResult), valid for the one cycle setup_done.
   output wire out_valid,
-  output wire [rs_ubits32(WIDTH - 1)-1:0]  out_x0,
-  output wire [rs_ubits32(WIDTH - 1)-1:0]  out_x1,
-  output wire [rs_ubits32(HEIGHT - 1)-1:0] out_y0,
-  output wire [rs_ubits32(HEIGHT - 1)-1:0] out_y1,
-  output wire [3*rs_edge_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] out_edge_start,   // s.2S, biased
-  output wire [3*rs_edge_step_x_bits(HEIGHT, SUBPIXEL_BITS)-1:0] out_edge_step_x, // s.2S
-  output wire [3*rs_edge_step_y_bits(WIDTH, SUBPIXEL_BITS)-1:0]  out_edge_step_y, // s.2S
-  output wire [3*rs_edge_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] out_span_quot,
-  output wire [3*rs_span_rem_bits(HEIGHT, SUBPIXEL_BITS)-1:0]    out_span_rem,
-  output wire [3*rs_edge_step_y_bits(WIDTH, SUBPIXEL_BITS)-1:0]  out_span_step_quot,
-  output wire [3*rs_span_rem_bits(HEIGHT, SUBPIXEL_BITS)-1:0]    out_span_step_rem,
-  // Planes: depth s(N+1).F; colour r, g, b at [c*B +: B], s9.F; each start, step_x, step_y.
-  output wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]     out_depth_start,
-  output wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]     out_depth_step_x,
-  output wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]     out_depth_step_y,
-  output wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0]    out_color_start,
-  output wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0]    out_color_step_x,
-  output wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0]    out_color_step_y,
-  output wire [23:0] out_flat_rgb     // provoking (first) vertex colour
+  // Its fields by rs_rec_lsb / rs_rec_field_bits (rastersim_widths.vh).
+  output wire [rs_rec_lsb(18, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS)-1:0] out_record
 );
 `include "rastersim_widths.vh"
 
@@ -91,6 +73,64 @@ module triangle_setup #(
   localparam signed [BB-1:0] Y_LAST_B = Y_LAST[BB-1:0];
 
   localparam [1:0] DRAWN = 2'd0, DEGENERATE = 2'd1, CULLED = 2'd2, OFFSCREEN = 2'd3;
+
+  // The record fields, packed into out_record below.
+  wire [rs_ubits32(WIDTH - 1)-1:0] out_x0;
+  wire [rs_ubits32(WIDTH - 1)-1:0] out_x1;
+  wire [rs_ubits32(HEIGHT - 1)-1:0] out_y0;
+  wire [rs_ubits32(HEIGHT - 1)-1:0] out_y1;
+  wire [3*rs_edge_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] out_edge_start; // s.2S, biased
+  wire [3*rs_edge_step_x_bits(HEIGHT, SUBPIXEL_BITS)-1:0] out_edge_step_x; // s.2S
+  wire [3*rs_edge_step_y_bits(WIDTH, SUBPIXEL_BITS)-1:0] out_edge_step_y; // s.2S
+  wire [3*rs_edge_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] out_span_quot;
+  wire [3*rs_span_rem_bits(HEIGHT, SUBPIXEL_BITS)-1:0] out_span_rem;
+  wire [3*rs_edge_step_y_bits(WIDTH, SUBPIXEL_BITS)-1:0] out_span_step_quot;
+  wire [3*rs_span_rem_bits(HEIGHT, SUBPIXEL_BITS)-1:0] out_span_step_rem;
+  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0] out_depth_start;
+  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0] out_depth_step_x;
+  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0] out_depth_step_y;
+  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] out_color_start;
+  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] out_color_step_x;
+  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] out_color_step_y;
+  wire [23:0] out_flat_rgb; // provoking (first) vertex colour
+  // Packed at the fields' places (rastersim_widths.vh).
+  // Constants, so that the simulator does not evaluate the sums at run time.
+  localparam integer LSB_X0 = rs_rec_lsb(RS_REC_X0, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_X1 = rs_rec_lsb(RS_REC_X1, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_Y0 = rs_rec_lsb(RS_REC_Y0, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_Y1 = rs_rec_lsb(RS_REC_Y1, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_EDGE_START = rs_rec_lsb(RS_REC_EDGE_START, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_EDGE_STEP_X = rs_rec_lsb(RS_REC_EDGE_STEP_X, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_EDGE_STEP_Y = rs_rec_lsb(RS_REC_EDGE_STEP_Y, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_SPAN_QUOT = rs_rec_lsb(RS_REC_SPAN_QUOT, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_SPAN_REM = rs_rec_lsb(RS_REC_SPAN_REM, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_SPAN_STEP_QUOT = rs_rec_lsb(RS_REC_SPAN_STEP_QUOT, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_SPAN_STEP_REM = rs_rec_lsb(RS_REC_SPAN_STEP_REM, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_DEPTH_START = rs_rec_lsb(RS_REC_DEPTH_START, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_DEPTH_STEP_X = rs_rec_lsb(RS_REC_DEPTH_STEP_X, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_DEPTH_STEP_Y = rs_rec_lsb(RS_REC_DEPTH_STEP_Y, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_COLOR_START = rs_rec_lsb(RS_REC_COLOR_START, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_COLOR_STEP_X = rs_rec_lsb(RS_REC_COLOR_STEP_X, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_COLOR_STEP_Y = rs_rec_lsb(RS_REC_COLOR_STEP_Y, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer LSB_FLAT_RGB = rs_rec_lsb(RS_REC_FLAT_RGB, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  assign out_record[LSB_X0 +: $bits(out_x0)] = out_x0;
+  assign out_record[LSB_X1 +: $bits(out_x1)] = out_x1;
+  assign out_record[LSB_Y0 +: $bits(out_y0)] = out_y0;
+  assign out_record[LSB_Y1 +: $bits(out_y1)] = out_y1;
+  assign out_record[LSB_EDGE_START +: $bits(out_edge_start)] = out_edge_start;
+  assign out_record[LSB_EDGE_STEP_X +: $bits(out_edge_step_x)] = out_edge_step_x;
+  assign out_record[LSB_EDGE_STEP_Y +: $bits(out_edge_step_y)] = out_edge_step_y;
+  assign out_record[LSB_SPAN_QUOT +: $bits(out_span_quot)] = out_span_quot;
+  assign out_record[LSB_SPAN_REM +: $bits(out_span_rem)] = out_span_rem;
+  assign out_record[LSB_SPAN_STEP_QUOT +: $bits(out_span_step_quot)] = out_span_step_quot;
+  assign out_record[LSB_SPAN_STEP_REM +: $bits(out_span_step_rem)] = out_span_step_rem;
+  assign out_record[LSB_DEPTH_START +: $bits(out_depth_start)] = out_depth_start;
+  assign out_record[LSB_DEPTH_STEP_X +: $bits(out_depth_step_x)] = out_depth_step_x;
+  assign out_record[LSB_DEPTH_STEP_Y +: $bits(out_depth_step_y)] = out_depth_step_y;
+  assign out_record[LSB_COLOR_START +: $bits(out_color_start)] = out_color_start;
+  assign out_record[LSB_COLOR_STEP_X +: $bits(out_color_step_x)] = out_color_step_x;
+  assign out_record[LSB_COLOR_STEP_Y +: $bits(out_color_step_y)] = out_color_step_y;
+  assign out_record[LSB_FLAT_RGB +: $bits(out_flat_rgb)] = out_flat_rgb;
 
   wire load_vertices;  // the accept cycle
   wire swap_vertices;  // order the vertices so that area2 > 0 (v1 and v2 trade places)

@@ -77,20 +77,25 @@ module zbuffer #(
 
   wire [AB-1:0] frag_addr = frag_y * WIDTH_A + {{(AB-XB){1'b0}}, frag_x};
 
+  // Hazard and in-flight checks compare every ring slot in place, so their cost grows linearly
+  // with the ring: slot s holds the fragment accepted age(s) = now_slot - s cycles ago (modulo
+  // RING; 0 reads as RING, the slot overwritten at the end of this cycle).
+  localparam integer CB = RB + 1 > LB ? RB + 1 : LB;  // ages 1 .. RING and latencies 1 .. MAX
+  wire [CB-1:0] latency = CB'(cfg_memory_latency);
   reg hazard;
   reg in_flight;
   integer k;
-  reg [LB-1:0] age;
-  reg [RB-1:0] slot;
+  reg [RB-1:0] slot_age;
+  reg [CB-1:0] age;
   always @(*) begin
     hazard = 1'b0;
     in_flight = 1'b0;
-    for (k = 1; k <= MAX_MEMORY_LATENCY; k = k + 1) begin
-      age = k[LB-1:0];
-      slot = slot_of_age(now_slot, age);
-      if (age <= cfg_memory_latency && ring_valid[slot]) begin
+    for (k = 0; k < RING; k = k + 1) begin
+      slot_age = now_slot - k[RB-1:0];
+      age = slot_age == {RB{1'b0}} ? CB'(RING) : CB'(slot_age);
+      if (age <= latency && ring_valid[k]) begin
         in_flight = 1'b1;
-        if (ring_addr[slot] == frag_addr) hazard = 1'b1;
+        if (ring_addr[k] == frag_addr) hazard = 1'b1;
       end
     end
   end
