@@ -94,25 +94,7 @@ module triangle_setup #(
   wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] out_color_step_y;
   wire [23:0] out_flat_rgb; // provoking (first) vertex colour
   // Packed at the fields' places (rastersim_widths.vh).
-  // Constants, so that the simulator does not evaluate the sums at run time.
-  localparam integer LSB_X0 = rs_rec_lsb(RS_REC_X0, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_X1 = rs_rec_lsb(RS_REC_X1, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_Y0 = rs_rec_lsb(RS_REC_Y0, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_Y1 = rs_rec_lsb(RS_REC_Y1, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_EDGE_START = rs_rec_lsb(RS_REC_EDGE_START, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_EDGE_STEP_X = rs_rec_lsb(RS_REC_EDGE_STEP_X, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_EDGE_STEP_Y = rs_rec_lsb(RS_REC_EDGE_STEP_Y, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_SPAN_QUOT = rs_rec_lsb(RS_REC_SPAN_QUOT, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_SPAN_REM = rs_rec_lsb(RS_REC_SPAN_REM, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_SPAN_STEP_QUOT = rs_rec_lsb(RS_REC_SPAN_STEP_QUOT, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_SPAN_STEP_REM = rs_rec_lsb(RS_REC_SPAN_STEP_REM, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_DEPTH_START = rs_rec_lsb(RS_REC_DEPTH_START, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_DEPTH_STEP_X = rs_rec_lsb(RS_REC_DEPTH_STEP_X, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_DEPTH_STEP_Y = rs_rec_lsb(RS_REC_DEPTH_STEP_Y, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_COLOR_START = rs_rec_lsb(RS_REC_COLOR_START, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_COLOR_STEP_X = rs_rec_lsb(RS_REC_COLOR_STEP_X, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_COLOR_STEP_Y = rs_rec_lsb(RS_REC_COLOR_STEP_Y, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer LSB_FLAT_RGB = rs_rec_lsb(RS_REC_FLAT_RGB, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  `include "rastersim_record.vh"
   assign out_record[LSB_X0 +: $bits(out_x0)] = out_x0;
   assign out_record[LSB_X1 +: $bits(out_x1)] = out_x1;
   assign out_record[LSB_Y0 +: $bits(out_y0)] = out_y0;
