@@ -147,6 +147,7 @@ int run_cosim(const CosimOptions& o) {
     throw InputError("--replay-dir: folder '" + o.replay_dir + "' does not exist");
   OutputFiles outputs;
   const std::string junit_temp = o.junit_out.empty() ? "" : outputs.add(o.junit_out, "--junit");
+  const std::string fst_temp = o.fst_out.empty() ? "" : add_waveform(outputs, o.fst_out);
 
   const std::set<std::string> pinned =
       o.fixed_settings ? std::set<std::string>(rtl::runtime_setting_keys().begin(), rtl::runtime_setting_keys().end())
@@ -182,7 +183,7 @@ int run_cosim(const CosimOptions& o) {
                    (long long)in_shard, (long long)failed, c.name.c_str());
     rtl::RtlOptions options;
     options.seed = frame_seed;
-    options.fst_path = o.fst_out;
+    options.fst_path = fst_temp;
     const std::string prefix = (std::filesystem::path(o.replay_dir) / ("rastersim-replay-" + std::to_string(k))).string();
     const auto start = std::chrono::steady_clock::now();
     const rtl::CosimReport report = rtl::cosim(c.profile, c.triangles, options, prefix);
@@ -199,10 +200,10 @@ int run_cosim(const CosimOptions& o) {
     if (!o.keep_going) break;
   }
   if (tty) std::fprintf(stderr, "\r\033[K");
-  if (!junit_temp.empty()) {
-    write_text_file(junit_temp, o.junit_out, junit_xml(results, profile, o));
-    outputs.commit();
-  }
+  if (!junit_temp.empty()) write_text_file(junit_temp, o.junit_out, junit_xml(results, profile, o));
+  // The last frame's waveform is kept whether it passed or not: it is what a divergence is debugged with.
+  if (!fst_temp.empty() && passed + failed > 0) check_waveform_written(fst_temp, o.fst_out);
+  if (!junit_temp.empty() || (!fst_temp.empty() && passed + failed > 0)) outputs.commit();
   info << "profile " << profile_summary(profile) << ", " << settings_summary(profile) << "; shard " << o.shard
        << ": " << directed_run << " directed and " << (passed + failed - directed_run) << " random frames of "
        << o.triangles << " triangles";

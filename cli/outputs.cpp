@@ -81,6 +81,19 @@ void OutputFiles::protect(const std::string& input_path) {
   if (!input_path.empty()) protected_.push_back(input_path);
 }
 
+std::string add_waveform(OutputFiles& outputs, const std::string& final_path) {
+  if (final_path == "-") throw InputError("--fst needs a file: an FST waveform cannot go to standard output");
+  return outputs.add(final_path, "--fst");
+}
+
+void check_waveform_written(const std::string& written, const std::string& final_path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(written, ec);
+  if (fs::is_regular_file(status) && fs::file_size(written, ec) == 0)
+    throw std::runtime_error("cannot write --fst " + final_path + ": the waveform writer wrote nothing");
+  if (!fs::exists(status)) throw std::runtime_error("cannot write --fst " + final_path + ": the waveform writer made no file");
+}
+
 std::string OutputFiles::add(const std::string& final_path, const std::string& what) {
   if (final_path.empty()) throw InputError(what + " needs a file name");
   std::error_code ec;

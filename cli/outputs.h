@@ -68,6 +68,13 @@ void remember_temporary(const std::string& path);
 void forget_temporary(const std::string& path);
 void remove_temporaries_on_signals();
 
+// The RTL waveform (`--fst FILE`) as one of `outputs`: the same checks as every output, written to a
+// temporary and renamed into place with the others. `-` is refused (the FST writer seeks). Returns
+// the path the simulation writes.
+std::string add_waveform(OutputFiles& outputs, const std::string& final_path);
+// Throws when the simulation left no waveform at `written` (a failed write is an error, not silence).
+void check_waveform_written(const std::string& written, const std::string& final_path);
+
 // Throws InputError when OpenImageIO has no writer for the path's extension.
 void check_image_format(const std::string& path, const std::string& what);
 

@@ -15,6 +15,7 @@
 #include "backend.h"
 #include "builtin_scenes.h"
 #include "inputs.h"
+#include "model/input_error.h"
 #include "outputs.h"
 #include "tri_reader.h"
 
@@ -143,6 +144,12 @@ int run_render(const RenderOptions& o) {
   if (!o.stats_out.empty()) stats_temp = outputs.add(o.stats_out, "--stats");
   std::string dump_tri_temp;
   if (!o.dump_tri_out.empty()) dump_tri_temp = outputs.add(o.dump_tri_out, "--dump-tri");
+  std::string fst_temp;
+  if (!o.fst_out.empty()) {
+    if (backend != Backend::Rtl && backend != Backend::Cosim)
+      throw InputError("--fst needs --backend rtl or cosim: the " + o.backend + " backend runs no RTL waveform");
+    fst_temp = add_waveform(outputs, o.fst_out);
+  }
 
   const std::vector<ScreenTriangle> screen = load_input(o.input, o.scene, profile, camera_options(o));
   std::vector<SnappedTriangle> snapped;
@@ -154,7 +161,7 @@ int run_render(const RenderOptions& o) {
   ProgressLine progress(snapped.size(), isatty(STDERR_FILENO) != 0);
   BackendOptions backend_options;
   backend_options.seed = o.seed;
-  backend_options.fst_path = o.fst_out;
+  backend_options.fst_path = fst_temp;
   backend_options.replay_prefix = (std::filesystem::path(o.replay_dir) / "rastersim-replay").string();
   const RenderResult result = render_triangles(
       backend, profile, snapped, csv.get(), [&](size_t done) { progress.update(done); }, backend_options);
@@ -176,6 +183,7 @@ int run_render(const RenderOptions& o) {
     write_text_file(dump_tri_temp, o.dump_tri_out, text.str());
   }
   if (!stats_temp.empty()) write_text_file(stats_temp, o.stats_out, stats_to_json(result.stats, profile).dump(2) + "\n");
+  if (!fst_temp.empty()) check_waveform_written(fst_temp, o.fst_out);
   outputs.commit();
 
   const std::string source = o.input.empty() ? "scene " + (o.scene.empty() ? std::string("default") : o.scene) : o.input;
@@ -186,7 +194,7 @@ int run_render(const RenderOptions& o) {
        << ", " << to_string(profile.traversal) << " traversal\n";
   if (backend == Backend::Cosim) info << "cosim: every setup record, fragment, memory word and cycle count agrees\n";
   print_summary(info, result.stats);
-  for (const std::string* path : {&o.color_out, &o.depth_out, &o.fragments_out, &o.stats_out, &o.dump_tri_out})
+  for (const std::string* path : {&o.color_out, &o.depth_out, &o.fragments_out, &o.stats_out, &o.dump_tri_out, &o.fst_out})
     if (!path->empty()) info << "wrote " << (*path == "-" ? "standard output" : *path) << "\n";
   return 0;
 }

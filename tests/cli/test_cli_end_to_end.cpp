@@ -466,6 +466,46 @@ TEST(CliRtl, CosimJunitOnStandardOutput) {
   EXPECT_TRUE(dir.listing().empty());
 }
 
+// --fst once wrote nothing and exited 0 with the model backend, into a missing folder or a folder.
+TEST(CliRtl, WaveformWrongUsesAreErrorsAndAWaveformIsWrittenWhole) {
+  ScratchDir dir;
+  const std::vector<std::string> render = {"render", "--scene", "fan", "--width", "64", "--height", "48"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = render;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_rastersim(dir, args);
+  };
+  struct Case {
+    std::vector<std::string> args;
+    const char* message;
+  };
+  const Case wrong[] = {
+      {{"--fst", "w.fst"}, "--fst needs --backend rtl or cosim"},
+      {{"--backend", "rtl", "--fst", dir.path("missing/w.fst")}, "does not exist"},
+      {{"--backend", "rtl", "--fst", dir.path("")}, "it is a folder"},
+      {{"--backend", "rtl", "--fst", "-"}, "cannot go to standard output"},
+      {{"--backend", "cosim", "--fst", "w.fst", "--stats", "w.fst"}, "named by two outputs"},
+  };
+  for (const Case& c : wrong) {
+    const RunResult r = with(c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.message;
+    EXPECT_TRUE(contains(r.err, c.message)) << r.err;
+    EXPECT_TRUE(dir.listing().empty()) << c.message;
+  }
+  for (const std::string backend : {"rtl", "cosim"}) {
+    const RunResult r = with({"--backend", backend, "--fst", backend + ".fst"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(read_text(dir.path(backend + ".fst")).substr(0, 1), std::string(1, '\0')) << "an FST header";
+    EXPECT_GT(read_text(dir.path(backend + ".fst")).size(), 1000u);
+  }
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"rtl.fst", "cosim.fst"})) << "no temporaries left";
+  const RunResult cosim = run_rastersim(dir, {"cosim", "--count", "1", "--no-directed", "--width", "64", "--height",
+                                              "48", "--fst", "frames.fst"});
+  ASSERT_EQ(cosim.exit_code, 0) << cosim.err;
+  EXPECT_GT(read_text(dir.path("frames.fst")).size(), 1000u);
+  EXPECT_EQ(run_rastersim(dir, {"cosim", "--count", "1", "--width", "64", "--height", "48", "--fst", "-"}).exit_code, 2);
+}
+
 // A count whose frame indices overflow once ran no frame and reported "0 passed, 0 failed", exit 0.
 TEST(CliRtl, CosimRefusesACountItCannotRun) {
   ScratchDir dir;
