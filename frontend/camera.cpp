@@ -64,7 +64,7 @@ Mat4 Camera::projection() const {
 }
 
 Camera resolve_camera(const CameraSettings& file, const CameraOptions& flags, const Sphere& bounds, int width,
-                      int height) {
+                      int height, const std::string& scene_source) {
   const Setting<Vec3> eye = pick(file.values.eye, file.eye, flags.eye, "eye");
   const Setting<Vec3> target = pick(file.values.target, file.target, flags.target, "target");
   const Setting<Vec3> up = pick(file.values.up, file.up, flags.up, "up");
@@ -91,6 +91,12 @@ Camera resolve_camera(const CameraSettings& file, const CameraOptions& flags, co
     const double half_x = std::atan(c.aspect * std::tan(half_y));
     const double reach = radius + length(bounds.centre - c.target);
     c.eye = c.target + (1.05 * reach / std::sin(std::min(half_x, half_y))) * normalize(kAutoViewFrom);
+    // A placement no user asked for must not be blamed on --eye: say what cannot be framed.
+    if (!is_finite(c.eye) || !(length(c.target - c.eye) > 1e-12 * std::max(1.0, length(c.eye))))
+      throw InputError(scene_source, 0,
+                       "the scene's bounding sphere (centre " + vector_text(bounds.centre) + ", radius " +
+                           number(bounds.radius) + ") is too large or too far out to place a camera automatically; "
+                           "give --eye (and --target)");
   }
   const Vec3 view = c.target - c.eye;
   if (!(length(view) > 1e-12 * std::max(1.0, length(c.eye)))) {

@@ -39,8 +39,9 @@ constexpr double kDefaultFov = 45.0;
 
 // Merges `file` (from a scene file, may be empty) with `flags` (the command line wins), fills the
 // rest automatically from the scene's bounding sphere and checks the result. Throws InputError naming
-// the setting's origin for a degenerate camera.
+// the setting's origin for a degenerate camera, or `scene_source` (the input's name) when the scene
+// is too large to frame automatically.
 Camera resolve_camera(const CameraSettings& file, const CameraOptions& flags, const Sphere& bounds, int width,
-                      int height);
+                      int height, const std::string& scene_source = "the scene");
 
 }  // namespace rastersim::frontend

@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <cctype>
 #include "frontend/obj_loader.h"
 
 #include <tiny_obj_loader.h>
@@ -144,7 +146,13 @@ class PreScan {
       pending_.push_back(pending);
       if (keyword == "f") ++faces_;
     } else if (!kIgnoredStatements.count(keyword)) {
-      fail(line, "unknown statement '" + keyword + "'");
+      // Quoted only when it looks like a statement keyword: a file that is not OBJ at all (a scene's
+      // mesh path may name any file) must not have its content echoed into a message.
+      const bool keyword_like = keyword.size() <= 16 && std::all_of(keyword.begin(), keyword.end(), [](char ch) {
+        return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+      });
+      fail(line, keyword_like ? "unknown statement '" + keyword + "'"
+                              : std::string("not an OBJ statement (the file does not look like a Wavefront OBJ)"));
     }
     return text;
   }

@@ -129,6 +129,8 @@ TEST(FrontendObj, ErrorsNameTheLineAndTheProblem) {
       {v3 + "f 1 2 99999999999999999999\n", "bad.obj:4: ", "out of range"},
       {v3 + "l 1\n", "bad.obj:4: ", "'l' needs at least 2 vertices"},
       {v3 + "frobnicate 1 2\n", "bad.obj:4: ", "unknown statement 'frobnicate'"},
+      // Not an OBJ at all (a scene's mesh path may name any file): its content is not echoed.
+      {"root:x:0:0:root:/root:/bin/bash\n", "bad.obj:1: ", "not an OBJ statement"},
       {"v 0 0 0 \\\n 1\n", "bad.obj:1: ", "line continuation"},
       // Found by fuzz_obj: tinyobjloader ends a line at a lone CR (and NUL) and separates values by
       // spaces and tabs only; "f\r 1 2 3" was accepted with no triangle drawn.
@@ -201,6 +203,25 @@ TEST(FrontendCamera, DegenerateCommandLineCameras) {
                      "eye and target are the same point");
   expect_input_error(with([](CameraOptions& o) { o.eye = Vec3{NAN, 0, 0}; }), "command line: ", "--eye has a coordinate that is not a finite number");
   expect_input_error(with([](CameraOptions& o) { o.near = INFINITY; }), "command line: ", "--near is not a finite number");
+}
+
+// An OBJ with 1e300 coordinates once blamed a `--eye` the user never gave ("command line: --eye ...").
+TEST(FrontendCamera, ASceneTooLargeToFrameNamesTheInputNotAFlag) {
+  const Sphere huge{{5e299, 0.5, 0}, INFINITY};
+  expect_input_error([&] { resolve_camera({}, {}, huge, 160, 120, "big.obj"); }, "big.obj: ",
+                     "too large or too far out to place a camera automatically");
+  const Sphere far_out{{1e300, 0, 0}, 1e300};
+  expect_input_error([&] { resolve_camera({}, {}, far_out, 160, 120, "big.obj"); }, "big.obj: ", "give --eye");
+}
+
+// A scene's mesh path may name any file: the loader's message must not quote what it holds.
+TEST(FrontendObj, ANonObjFileIsNotEchoed) {
+  try {
+    parse_obj_mesh("root:x:0:0:root:/root:/bin/bash\n", "passwd");
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find("root"), std::string::npos) << e.what();
+  }
 }
 
 TEST(FrontendCamera, AutomaticValuesAdaptToGivenOnes) {
