@@ -23,9 +23,17 @@ bool is_3d_scene(const std::string& name) {
   return false;
 }
 
+// Camera flags on an input that is already in screen space would be ignored: refuse them instead.
+void refuse_camera(const frontend::CameraOptions& c, const std::string& what) {
+  if (c.eye || c.target || c.up || c.fov || c.near || c.far || c.ortho)
+    throw InputError("the camera flags (--eye, --target, --up, --fov, --near, --far, --ortho) apply to 3D inputs "
+                     "(.obj, .json scenes, the 3D built-in scenes); " + what + " is already in screen space");
+}
+
 std::vector<ScreenTriangle> load_builtin_scene(const std::string& name, const Profile& profile,
                                                const frontend::CameraOptions& camera) {
   const BuiltinScene* scene = find_builtin_scene(name);
+  if (scene) refuse_camera(camera, "built-in scene '" + name + "'");
   if (!scene && !is_3d_scene(name))
     throw InputError("unknown scene '" + name + "'; `rastersim scenes` lists the built-in scenes");
   std::vector<ScreenTriangle> triangles =
@@ -50,7 +58,10 @@ std::vector<ScreenTriangle> load_input(const std::string& path_or_empty, const s
 
   const std::string& path = path_or_empty;
   const std::string ext = lower_extension(path);
-  if (ext == ".tri") return read_tri_file(path, profile);
+  if (ext == ".tri") {
+    refuse_camera(camera, path);
+    return read_tri_file(path, profile);
+  }
   // The 3D front end guarantees every triangle it returns passes check_screen_triangle.
   if (ext == ".obj") return frontend::load_obj(path, profile, camera);
   if (ext == ".json") return frontend::load_scene_file(path, profile, camera);

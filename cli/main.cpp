@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   using namespace rastersim;
   CLI::App app{"rastersim: bit-accurate fixed-point triangle rasterizer model (exit 0 ok, 1 check failed, 2 bad usage or input)",
                "rastersim"};
+  app.set_version_flag("--version", std::string("rastersim ") + RASTERSIM_VERSION + " (" + RASTERSIM_GIT_DESCRIBE + ")");
   app.require_subcommand(1);
   remove_temporaries_on_signals();  // an interrupted run leaves no hidden temporary
   RenderOptions render_options;

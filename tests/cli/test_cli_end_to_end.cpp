@@ -466,6 +466,30 @@ TEST(CliRtl, CosimJunitOnStandardOutput) {
   EXPECT_TRUE(dir.listing().empty());
 }
 
+TEST(Cli, VersionNamesTheReleaseAndTheCommit) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"--version"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("rastersim 0.1.0 (", 0), 0u) << r.out;
+  EXPECT_FALSE(contains(r.out, "subcommand")) << r.out;
+}
+
+// Camera flags on a screen-space input were ignored without a word.
+TEST(Cli, CameraFlagsOnAScreenSpaceInputAreRefused) {
+  ScratchDir dir;
+  dir.write("one.tri", "2 1.5 0.25 13.25 4 0.5 5.5 10 0.75 255 128 0\n");
+  for (const std::vector<std::string>& input : {std::vector<std::string>{"one.tri"},
+                                                std::vector<std::string>{"--scene", "fan"}}) {
+    std::vector<std::string> args = {"render"};
+    args.insert(args.end(), input.begin(), input.end());
+    args.insert(args.end(), {"-o", "x.png", "--eye", "1,2,3"});
+    const RunResult r = run_rastersim(dir, args);
+    EXPECT_EQ(r.exit_code, 2) << input.back();
+    EXPECT_TRUE(contains(r.err, "already in screen space")) << r.err;
+  }
+  EXPECT_EQ(dir.listing(), std::set<std::string>{"one.tri"});
+}
+
 // --fst once wrote nothing and exited 0 with the model backend, into a missing folder or a folder.
 TEST(CliRtl, WaveformWrongUsesAreErrorsAndAWaveformIsWrittenWhole) {
   ScratchDir dir;
