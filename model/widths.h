@@ -74,12 +74,15 @@ inline Widths derive_widths(const Profile& p) {
 // When the setup unit handles a triangle (docs/cycle-model.md). `setup_interval` 0 is the serial
 // unit: one shared shift-and-add / restoring-divide datapath runs a fixed program of operations for
 // one triangle at a time. I >= 2 is the pipelined unit: one triangle per slot of I cycles through a
-// FRONT slot, the numerator slots and the divide slots, every multiply and divide digit-serial with
-// at most kSetupStepsPerCycle steps chained in a cycle.
+// FRONT slot, the edge slots, the numerator slots and the divide slots, every multiply and divide
+// digit-serial with at most kSetupStepsPerCycle steps chained in a cycle (the area's two products in
+// FRONT are the only others).
 constexpr int kSetupStepsPerCycle = 4;
 
 struct SetupTiming {
   int interval;        // I: cycles between two accepts at best (0: the serial unit)
+  int edge_stages;     // slots of the edge values (shift-add over the coord_bits + 1 bits of rel_x, rel_y)
+  int edge_steps;      // shift-add steps per cycle in an edge slot
   int numer_stages;    // slots of the plane numerators (Horner over the vertex values' z_bits bits)
   int numer_steps;     // shift-add steps per cycle in a numerator slot
   int divide_stages;   // slots of the 18 restoring divisions (divider_bits steps)
@@ -123,11 +126,13 @@ constexpr SetupTiming setup_timing(const Widths& w, int subpixel_bits, int z_bit
     return t;
   }
   t.rejected_latency = 1;
+  t.edge_stages = ceil_div(w.coord_bits + 1, interval * kSetupStepsPerCycle);
+  t.edge_steps = ceil_div(w.coord_bits + 1, interval * t.edge_stages);
   t.numer_stages = ceil_div(z_bits, interval * kSetupStepsPerCycle);
   t.numer_steps = ceil_div(z_bits, interval * t.numer_stages);
   t.divide_stages = ceil_div(w.divider_bits, interval * kSetupStepsPerCycle);
   t.divide_steps = ceil_div(w.divider_bits, interval * t.divide_stages);
-  t.drawn_latency = interval * (1 + t.numer_stages + t.divide_stages);
+  t.drawn_latency = interval * (1 + t.edge_stages + t.numer_stages + t.divide_stages);
   t.free_after = interval;
   return t;
 }
@@ -139,6 +144,11 @@ inline SetupTiming setup_timing(const Profile& p) {
 // The docs' worked example and the default profile (docs/cycle-model.md).
 static_assert(serial_setup_drawn_latency(derive_widths(16, 12, 4, 16, 0), 4, 16) == 1165);
 static_assert(serial_setup_drawn_latency(derive_widths(640, 480, 4, 24, 0), 4, 24) == 1553);
+static_assert(setup_timing(derive_widths(16, 12, 4, 16, 0), 4, 16, 4).drawn_latency == 24);
+static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 2).drawn_latency == 32);
+static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 4).drawn_latency == 40);
+static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 16).drawn_latency == 80);
+static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 64).drawn_latency == 256);
 
 // The largest profile must fit the model's storage: plane registers and edge values in int64_t,
 // dividends in i128.

@@ -132,7 +132,11 @@ function automatic integer rs_divider_bits(input integer w, input integer h, inp
 endfunction
 
 // The pipelined setup unit's schedule (SETUP_INTERVAL I >= 2; model/widths.h setup_timing): slots
-// of numerator and divide steps, at most 4 steps of one multiply or divide chained in a cycle.
+// of edge, numerator and divide steps, at most 4 steps of one multiply or divide chained in a cycle.
+function automatic integer rs_setup_edge_stages(input integer coord_bits, input integer interval);
+  rs_setup_edge_stages = (coord_bits + 1 + interval * 4 - 1) / (interval * 4);
+endfunction
+
 function automatic integer rs_setup_numer_stages(input integer z_bits, input integer interval);
   rs_setup_numer_stages = (z_bits + interval * 4 - 1) / (interval * 4);
 endfunction
@@ -167,7 +171,7 @@ function automatic integer rs_setup_drawn_latency(input integer w, input integer
                                                   input integer z_bits, input integer z_guard_bits,
                                                   input integer interval);
   rs_setup_drawn_latency = interval == 0 ? rs_setup_serial_latency(w, h, s, z_bits, z_guard_bits)
-      : interval * (1 + rs_setup_numer_stages(z_bits, interval)
+      : interval * (1 + rs_setup_edge_stages(rs_coord_bits(w, h, s), interval) + rs_setup_numer_stages(z_bits, interval)
                     + rs_setup_divide_stages(rs_divider_bits(w, h, s, z_bits, z_guard_bits), interval));
 endfunction
 

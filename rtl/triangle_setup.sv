@@ -60,7 +60,6 @@ module triangle_setup #(
   localparam integer XB = rs_ubits32(WIDTH - 1);
   localparam integer YB = rs_ubits32(HEIGHT - 1);
   localparam integer BB = CB + 2;           // bounding-box arithmetic, signed pixels
-  localparam integer PB = DB + CB + 2;      // edge cross products before narrowing to EB
   localparam integer NB = Z_BITS + EB + 4;  // plane numerators sum_k v_k e_k, signed
   localparam integer HALF = 1 << (S - 1);   // half a pixel in subpixels
   localparam integer ONE_LESS = (1 << S) - 1;  // one pixel less one subpixel
@@ -420,21 +419,22 @@ module triangle_setup #(
     assign out_y1 = by1[YB-1:0];
     assign out_flat_rgb = vrgb[0];
   end else begin : pipelined
+    // ---- FRONT: the area's two products (delta_bits x delta_bits), the only ones in one cycle ----
     wire signed [DB-1:0] d10x = vx[1] - vx[0];
     wire signed [DB-1:0] d10y = vy[1] - vy[0];
     wire signed [DB-1:0] d20x = vx[2] - vx[0];
     wire signed [DB-1:0] d20y = vy[2] - vy[0];
-    wire signed [2*DB:0] cross_a = $signed({{(DB+1){d10x[DB-1]}}, d10x}) * $signed({{(DB+1){d20y[DB-1]}}, d20y});
-    wire signed [2*DB:0] cross_b = $signed({{(DB+1){d20x[DB-1]}}, d20x}) * $signed({{(DB+1){d10y[DB-1]}}, d10y});
+    wire signed [2*DB-1:0] cross_a = d10x * d20y;
+    wire signed [2*DB-1:0] cross_b = d20x * d10y;
     // |area2| <= 9 W H M^2 fits AB bits (docs/widths.md): the top bits are sign copies.
     /* verilator lint_off UNUSEDSIGNAL */
-    wire signed [2*DB:0] area2_wide = cross_a - cross_b;
+    wire signed [2*DB-1:0] area2_wide = cross_a - cross_b;
     /* verilator lint_on UNUSEDSIGNAL */
     assign area2 = area2_wide[AB-1:0];
     wire [AB-1:0] area = area2[AB-1] ? -area2 : area2;
     assign swap_vertices = 1'b0;  // the FRONT slot orders them through muxes instead
 
-    // ---- Edge functions at the first candidate's centre (ordered vertices) ----
+    // ---- Ordered vertices, edge steps and the edge values' operands ----
     wire signed [CB-1:0] ox [0:2];
     wire signed [CB-1:0] oy [0:2];
     wire [Z_BITS-1:0]    oz [0:2];
@@ -452,65 +452,60 @@ module triangle_setup #(
     assign oz[2] = swap ? vz[1] : vz[2];
     assign orgb[2] = swap ? vrgb[1] : vrgb[2];
 
+    // The first candidate's centre, >= 0 and < 2^(CB-1) (on screen): the top bit is a sign copy.
+    /* verilator lint_off UNUSEDSIGNAL */
     wire signed [BB-1:0] centre_x = (bx0 <<< S) + HALF_B;
     wire signed [BB-1:0] centre_y = (by0 <<< S) + HALF_B;
+    /* verilator lint_on UNUSEDSIGNAL */
 
-    wire signed [EB-1:0]  unbiased [0:2];  // E at the first candidate, s.2S
-    wire signed [EB-1:0]  edge_start [0:2];
+    // An edge slot's operands for edge k at [k*EOP]: {bias, dx, ndy, rel_x, rel_y, E (accumulator)}.
+    localparam integer RLB = CB + 1;  // rel_x, rel_y: the first candidate's centre less the edge's first vertex
+    localparam integer E_ACC = 0;
+    localparam integer E_RY = E_ACC + EB;
+    localparam integer E_RX = E_RY + RLB;
+    localparam integer E_NDY = E_RX + RLB;
+    localparam integer E_DX = E_NDY + DB;
+    localparam integer E_BIAS = E_DX + DB;
+    localparam integer EOP = E_BIAS + 1;
+    wire [3*EOP-1:0] front_edges;
     wire signed [SXB-1:0] edge_step_x [0:2];
     wire signed [SYB-1:0] edge_step_y [0:2];
     genvar k;
       for (k = 0; k < 3; k = k + 1) begin : edges
-        wire signed [CB-1:0] bx = ox[(k + 1) % 3];
-        wire signed [CB-1:0] by = oy[(k + 1) % 3];
-        wire signed [CB-1:0] ax = ox[k];
-        wire signed [CB-1:0] ay = oy[k];
-        wire signed [PB-1:0] dx = $signed({{(PB-CB){bx[CB-1]}}, bx}) - $signed({{(PB-CB){ax[CB-1]}}, ax});
-        wire signed [PB-1:0] dy = $signed({{(PB-CB){by[CB-1]}}, by}) - $signed({{(PB-CB){ay[CB-1]}}, ay});
-        wire signed [PB-1:0] rel_x = $signed({{(PB-BB){centre_x[BB-1]}}, centre_x}) - $signed({{(PB-CB){ax[CB-1]}}, ax});
-        wire signed [PB-1:0] rel_y = $signed({{(PB-BB){centre_y[BB-1]}}, centre_y}) - $signed({{(PB-CB){ay[CB-1]}}, ay});
-        // Only the low bits are kept: |E| < 2^(EB-1), |step| within SXB / SYB (docs/widths.md).
-        /* verilator lint_off UNUSEDSIGNAL */
-        wire signed [PB-1:0] value = dx * rel_y - dy * rel_x;
+        wire signed [DB-1:0] dx = DB'(ox[(k + 1) % 3]) - DB'(ox[k]);
+        wire signed [DB-1:0] ndy = DB'(oy[k]) - DB'(oy[(k + 1) % 3]);
+        wire signed [RLB-1:0] rel_x = RLB'(centre_x) - RLB'(ox[k]);
+        wire signed [RLB-1:0] rel_y = RLB'(centre_y) - RLB'(oy[k]);
         // Interior to the right (dy < 0) is a left edge; horizontal with interior below is top.
-        wire top_left = dy < 0 || (dy == 0 && dx > 0);
-        wire signed [PB-1:0] step_x = -(dy <<< S);
-        wire signed [PB-1:0] step_y = dx <<< S;
-        /* verilator lint_on UNUSEDSIGNAL */
-        assign unbiased[k] = value[EB-1:0];
-        assign edge_start[k] = unbiased[k] - (top_left ? 0 : 1);
-        assign edge_step_x[k] = step_x[SXB-1:0];
-        assign edge_step_y[k] = step_y[SYB-1:0];
-      end
-
-
-    // The edge steps widened to EB bits (sign extension) as weights of the step numerators.
-    wire signed [EB-1:0] weight_x [0:2];
-    wire signed [EB-1:0] weight_y [0:2];
-      for (k = 0; k < 3; k = k + 1) begin : weights
-        assign weight_x[k] = $signed({{(EB-SXB){edge_step_x[k][SXB-1]}}, edge_step_x[k]});
-        assign weight_y[k] = $signed({{(EB-SYB){edge_step_y[k][SYB-1]}}, edge_step_y[k]});
+        wire bias = !(ndy > 0 || (ndy == 0 && dx > 0));
+        assign edge_step_x[k] = SXB'({ndy, {S{1'b0}}});
+        assign edge_step_y[k] = SYB'({dx, {S{1'b0}}});
+        assign front_edges[k*EOP +: EOP] = {bias, dx, ndy, rel_x, rel_y, {EB{1'b0}}};
       end
 
     // ---- Pipelined schedule (docs/cycle-model.md): slots of I cycles, one triangle per slot ----
     localparam integer I = SETUP_INTERVAL;
+    localparam integer EDGE_STAGES = rs_setup_edge_stages(CB, I);
+    localparam integer EDGE_STEPS = (RLB + I * EDGE_STAGES - 1) / (I * EDGE_STAGES);
+    localparam integer EDGE_SKIP = I * EDGE_STAGES * EDGE_STEPS - RLB;  // leading no-op steps
     localparam integer NUMER_STAGES = rs_setup_numer_stages(Z_BITS, I);
     localparam integer NUMER_STEPS = (Z_BITS + I * NUMER_STAGES - 1) / (I * NUMER_STAGES);
-    localparam integer NUMER_SKIP = I * NUMER_STAGES * NUMER_STEPS - Z_BITS;  // leading no-op steps
+    localparam integer NUMER_SKIP = I * NUMER_STAGES * NUMER_STEPS - Z_BITS;
     localparam integer DIVIDE_STAGES = rs_setup_divide_stages(DIVIDER_BITS, I);
     localparam integer DIVIDE_STEPS = (DIVIDER_BITS + I * DIVIDE_STAGES - 1) / (I * DIVIDE_STAGES);
     localparam integer PLANE_SKIP = I * DIVIDE_STAGES * DIVIDE_STEPS - DIVIDER_BITS;
     localparam integer SPAN_SKIP = I * DIVIDE_STAGES * DIVIDE_STEPS - EB;
     localparam integer PHASE_BITS = rs_ubits32(I - 1);
     localparam integer LAST_PHASE = I - 1;
+    localparam integer EDGES = 3 * EOP;
     // Numerator slot state: vertex values (plane p, vertex k at [(3p+k)*Z_BITS]), accumulators
     // (numerator n = 3p + t at [n*NB], t: 0 start, 1 step x, 2 step y), weights (term t, edge k at
     // [(3t+k)*EB]: E at the first candidate, edge_step_x, edge_step_y, widened).
     localparam integer VALS = 12 * Z_BITS;
     localparam integer ACCS = 12 * NB;
     localparam integer WTS = 9 * EB;
-    // The record fields decided in FRONT, carried along: {x0, x1, y0, y1, edge_start[2:0],
-    // edge_step_x[2:0], edge_step_y[2:0], flat rgb, |area2|}.
+    // The record fields decided in FRONT, carried along: {x0, x1, y0, y1, edge_start[2:0] (from the
+    // last edge slot), edge_step_x[2:0], edge_step_y[2:0], flat rgb, |area2|}.
     localparam integer P_AREA = 0;
     localparam integer P_RGB = P_AREA + AB;
     localparam integer P_SY = P_RGB + 24;
@@ -533,6 +528,7 @@ module triangle_setup #(
     wire slot_first = phase_q == {PHASE_BITS{1'b0}};
     wire advance = run && phase_q == LAST_PHASE[PHASE_BITS-1:0];
     reg front_q;  // a triangle is in its FRONT slot (after its accept cycle)
+    reg [EDGE_STAGES-1:0] edge_valid_q;
     reg [NUMER_STAGES-1:0] numer_valid_q;
     reg [DIVIDE_STAGES-1:0] divide_valid_q;
     reg out_valid_q;
@@ -540,6 +536,7 @@ module triangle_setup #(
       if (rst) begin
         phase_q <= {PHASE_BITS{1'b0}};
         front_q <= 1'b0;
+        edge_valid_q <= {EDGE_STAGES{1'b0}};
         numer_valid_q <= {NUMER_STAGES{1'b0}};
         divide_valid_q <= {DIVIDE_STAGES{1'b0}};
         out_valid_q <= 1'b0;
@@ -548,8 +545,10 @@ module triangle_setup #(
         if (load_vertices) front_q <= 1'b1;
         else if (advance) front_q <= 1'b0;
         if (advance) begin
+          for (j = EDGE_STAGES - 1; j > 0; j = j - 1) edge_valid_q[j] <= edge_valid_q[j-1];
+          edge_valid_q[0] <= front_q && status == DRAWN;
           for (j = NUMER_STAGES - 1; j > 0; j = j - 1) numer_valid_q[j] <= numer_valid_q[j-1];
-          numer_valid_q[0] <= front_q && status == DRAWN;
+          numer_valid_q[0] <= edge_valid_q[EDGE_STAGES-1];
           for (j = DIVIDE_STAGES - 1; j > 0; j = j - 1) divide_valid_q[j] <= divide_valid_q[j-1];
           divide_valid_q[0] <= numer_valid_q[NUMER_STAGES-1];
           out_valid_q <= divide_valid_q[DIVIDE_STAGES-1];
@@ -561,26 +560,92 @@ module triangle_setup #(
     assign free = !front_q;
     assign decided = front_q && phase_q == {{(PHASE_BITS-1){1'b0}}, 1'b1};
     assign out_valid = out_valid_q && slot_first;
-    assign busy = load_vertices || (front_q && (decided || status == DRAWN)) || numer_valid_q != 0
-                  || divide_valid_q != 0 || out_valid;
+    assign busy = load_vertices || (front_q && (decided || status == DRAWN)) || edge_valid_q != 0
+                  || numer_valid_q != 0 || divide_valid_q != 0 || out_valid;
 
-    // FRONT's results.
+    // FRONT's results: the vertex values of the planes, the payload (edge starts still zero).
     wire [VALS-1:0] front_vals;
-    wire [WTS-1:0] front_wts;
     genvar fp, fk;
     for (fp = 0; fp < 4; fp = fp + 1) begin : front_planes
       for (fk = 0; fk < 3; fk = fk + 1) begin : front_vertices
         assign front_vals[(3*fp + fk)*Z_BITS +: Z_BITS] =
             fp == 0 ? oz[fk] : {{(Z_BITS-8){1'b0}}, orgb[fk][(fp == 0 ? 0 : 8*(3-fp)) +: 8]};
-        if (fp < 3) begin : weight
-          assign front_wts[(3*fp + fk)*EB +: EB] = fp == 0 ? unbiased[fk] : fp == 1 ? weight_x[fk] : weight_y[fk];
+      end
+    end
+    wire [PAY-1:0] front_pay = {bx0[XB-1:0], bx1[XB-1:0], by0[YB-1:0], by1[YB-1:0], {(3*EB){1'b0}},
+                                edge_step_x[2], edge_step_x[1], edge_step_x[0],
+                                edge_step_y[2], edge_step_y[1], edge_step_y[0], vrgb[0], area};
+
+    // ---- Edge slots: E = 2 E + (rel_y bit ? dx : 0) + (rel_x bit ? ndy : 0), MSB first ----
+    // The first real step takes the sign bits, which weigh -2^(RLB-1): it subtracts.
+    reg [EDGE_STAGES*EDGES-1:0] edge_ops_q, edge_ops_next;
+    reg [EDGE_STAGES*VALS-1:0] edge_vals_q;
+    reg [EDGE_STAGES*PAY-1:0] edge_pay_q;
+    reg [EOP-1:0] eo;
+    reg signed [EB-1:0] e_acc, e_dx, e_ndy, e_term;
+    reg [RLB-1:0] e_rx, e_ry;
+    reg [31:0] edge_step_index;
+    /* verilator lint_off UNSIGNED */
+    always @* begin
+      e_term = {EB{1'b0}};
+      edge_step_index = 32'd0;
+      for (j = 0; j < EDGE_STAGES; j = j + 1) begin
+        for (n = 0; n < 3; n = n + 1) begin
+          eo = edge_ops_q[j*EDGES + n*EOP +: EOP];
+          e_acc = eo[E_ACC +: EB];
+          e_ry = eo[E_RY +: RLB];
+          e_rx = eo[E_RX +: RLB];
+          e_ndy = EB'($signed(eo[E_NDY +: DB]));
+          e_dx = EB'($signed(eo[E_DX +: DB]));
+          for (s = 0; s < EDGE_STEPS; s = s + 1) begin
+            edge_step_index = (j * I + {{(32-PHASE_BITS){1'b0}}, phase_q}) * EDGE_STEPS + s;
+            if (edge_step_index >= EDGE_SKIP) begin
+              e_term = (e_ry[RLB-1] ? e_dx : {EB{1'b0}}) + (e_rx[RLB-1] ? e_ndy : {EB{1'b0}});
+              e_acc = {e_acc[EB-2:0], 1'b0} + (edge_step_index == EDGE_SKIP ? -e_term : e_term);
+              e_ry = {e_ry[RLB-2:0], 1'b0};
+              e_rx = {e_rx[RLB-2:0], 1'b0};
+            end
+          end
+          edge_ops_next[j*EDGES + n*EOP +: EOP] = {eo[EOP-1:E_RX+RLB], e_rx, e_ry, e_acc};
         end
       end
     end
-    wire [PAY-1:0] front_pay = {bx0[XB-1:0], bx1[XB-1:0], by0[YB-1:0], by1[YB-1:0],
-                                edge_start[2], edge_start[1], edge_start[0],
-                                edge_step_x[2], edge_step_x[1], edge_step_x[0],
-                                edge_step_y[2], edge_step_y[1], edge_step_y[0], vrgb[0], area};
+    /* verilator lint_on UNSIGNED */
+    always @(posedge clk) begin
+      if (advance) begin
+        edge_ops_q[0 +: EDGES] <= front_edges;
+        edge_vals_q[0 +: VALS] <= front_vals;
+        edge_pay_q[0 +: PAY] <= front_pay;
+        for (j = 1; j < EDGE_STAGES; j = j + 1) begin
+          edge_ops_q[j*EDGES +: EDGES] <= edge_ops_next[(j-1)*EDGES +: EDGES];
+          edge_vals_q[j*VALS +: VALS] <= edge_vals_q[(j-1)*VALS +: VALS];
+          edge_pay_q[j*PAY +: PAY] <= edge_pay_q[(j-1)*PAY +: PAY];
+        end
+      end else begin
+        edge_ops_q <= edge_ops_next;
+      end
+    end
+
+    // The edge values leaving the last edge slot: unbiased as the numerators' weights, biased into
+    // the record; the edge steps widened to EB bits (sign extension) as weights of the step numerators.
+    wire [EDGES-1:0] edge_last = edge_ops_next[(EDGE_STAGES-1)*EDGES +: EDGES];
+    // Its edge-start field is still zero: the values are filled in here.
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [PAY-1:0] edge_last_pay = edge_pay_q[(EDGE_STAGES-1)*PAY +: PAY];
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [WTS-1:0] numer_in_wts;
+    wire [3*EB-1:0] numer_in_starts;
+    for (k = 0; k < 3; k = k + 1) begin : weights
+      wire [EOP-1:0] ops = edge_last[k*EOP +: EOP];
+      wire signed [EB-1:0] unbiased = ops[E_ACC +: EB];  // E at the first candidate, s.2S
+      wire [SXB-1:0] step_x = edge_last_pay[P_SX + k*SXB +: SXB];
+      wire [SYB-1:0] step_y = edge_last_pay[P_SY + k*SYB +: SYB];
+      assign numer_in_starts[k*EB +: EB] = unbiased - EB'(ops[E_BIAS]);
+      assign numer_in_wts[k*EB +: EB] = unbiased;
+      assign numer_in_wts[(3 + k)*EB +: EB] = EB'($signed(step_x));
+      assign numer_in_wts[(6 + k)*EB +: EB] = EB'($signed(step_y));
+    end
+    wire [PAY-1:0] numer_in_pay = {edge_last_pay[PAY-1:P_ES+3*EB], numer_in_starts, edge_last_pay[P_ES-1:0]};
 
     // ---- Numerator slots: acc = 2 acc + sum over vertices of (value bit ? weight : 0), MSB first ----
     reg [NUMER_STAGES*VALS-1:0] numer_vals_q, numer_vals_next;
@@ -625,10 +690,10 @@ module triangle_setup #(
     end
     always @(posedge clk) begin
       if (advance) begin
-        numer_vals_q[0 +: VALS] <= front_vals;
+        numer_vals_q[0 +: VALS] <= edge_vals_q[(EDGE_STAGES-1)*VALS +: VALS];
         numer_acc_q[0 +: ACCS] <= {ACCS{1'b0}};
-        numer_wts_q[0 +: WTS] <= front_wts;
-        numer_pay_q[0 +: PAY] <= front_pay;
+        numer_wts_q[0 +: WTS] <= numer_in_wts;
+        numer_pay_q[0 +: PAY] <= numer_in_pay;
         for (j = 1; j < NUMER_STAGES; j = j + 1) begin
           numer_vals_q[j*VALS +: VALS] <= numer_vals_next[(j-1)*VALS +: VALS];
           numer_acc_q[j*ACCS +: ACCS] <= numer_acc_next[(j-1)*ACCS +: ACCS];

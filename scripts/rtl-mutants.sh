@@ -11,7 +11,7 @@ mutants=("$@")
 [ ${#mutants[@]} -eq 0 ] && mutants=(edge_compare z_adder_carry hazard_stall
                                      serial_floor serial_remainder_correction serial_multiplier_bits
                                      serial_bias_carry setup_slot_counter setup_floor_correction setup_missing_step
-                                     setup_credit_count setup_fifo_empty)
+                                     setup_credit_count setup_fifo_empty setup_edge_sign)
 
 # name -> file, text to replace, replacement (fixed strings); params: extra verilator -G settings.
 declare -A file from to params
@@ -39,7 +39,7 @@ to[serial_multiplier_bits]=': is_edge ? SB'"'"'(2 * CB)'  # the edge products on
 from[serial_bias_carry]='+ H'"'"'(subtract || (bit_now && use_start && bias[weight_k]));'
 to[serial_bias_carry]='+ H'"'"'(subtract);'  # the start numerators use the biased edge values
 # The pipelined setup unit and the record FIFO.
-for m in setup_slot_counter setup_floor_correction setup_missing_step setup_credit_count setup_fifo_empty; do
+for m in setup_slot_counter setup_floor_correction setup_missing_step setup_credit_count setup_fifo_empty setup_edge_sign; do
   params[$m]="-GSETUP_INTERVAL=2"
 done
 file[setup_slot_counter]=triangle_setup.sv
@@ -51,6 +51,9 @@ to[setup_floor_correction]='!negative ? magnitude : -magnitude;'  # no floor ste
 file[setup_missing_step]=triangle_setup.sv
 from[setup_missing_step]='NUMER_STEPS - Z_BITS;'
 to[setup_missing_step]='NUMER_STEPS - Z_BITS + 1;'  # one shift-add step of the numerators skipped
+file[setup_edge_sign]=triangle_setup.sv
+from[setup_edge_sign]='(edge_step_index == EDGE_SKIP ? -e_term : e_term)'
+to[setup_edge_sign]='e_term'  # the edge values' sign bits added instead of subtracted
 file[setup_credit_count]=rastersim_core.sv
 from[setup_credit_count]='credits_held < setup_fifo_depth_q;'
 to[setup_credit_count]='credits_held <= setup_fifo_depth_q;'  # one record credit too many

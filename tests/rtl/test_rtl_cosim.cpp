@@ -217,8 +217,10 @@ TEST(RtlCycles, PipelinedSetupWorkedExample) {
   const SnappedTriangle tiny = one_pixel_triangle();
   const CosimReport r = cosim(p, {tiny, tiny});
   ASSERT_TRUE(r.passed) << r.message();
-  // Slots: 1 FRONT, ceil(24 / 16) = 2 numerator, ceil(divider_bits / 16) divide.
-  const int64_t latency = 4 * (1 + 2 + (derive_widths(p).divider_bits + 15) / 16);
+  // Slots: 1 FRONT, ceil((coord_bits + 1) / 16) edge, ceil(24 / 16) = 2 numerator,
+  // ceil(divider_bits / 16) divide.
+  const Widths w = derive_widths(p);
+  const int64_t latency = 4 * (1 + (w.coord_bits + 1 + 15) / 16 + 2 + (w.divider_bits + 15) / 16);
   ASSERT_EQ(r.rtl.fragments.size(), 2u);
   EXPECT_EQ(r.rtl.triangles[0].setup_done, latency);
   EXPECT_EQ(r.rtl.fragments[0].cycle, latency + 2);  // load, row cycle, pixel

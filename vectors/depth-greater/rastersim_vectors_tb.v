@@ -32,8 +32,8 @@ module rastersim_vectors_tb;
   localparam integer DRAWN = 11;  // setup.hex
   localparam integer FRAGMENTS = 284;  // fragments.hex
   localparam integer WORDS = 192;  // depth.hex, color.hex: WIDTH * HEIGHT
-  localparam integer CYCLES = 637;  // the frame's expected cycles (frame.hex)
-  localparam integer CYCLE_BOUND = 3548;  // the frame is abandoned after 4 CYCLES + 1000
+  localparam integer CYCLES = 641;  // the frame's expected cycles (frame.hex)
+  localparam integer CYCLE_BOUND = 3564;  // the frame is abandoned after 4 CYCLES + 1000
   localparam integer CLEAR_BOUND = WORDS + 16;  // cycles the memory clear after reset may take
   localparam integer SHOWN = 20;  // mismatches printed
   localparam integer TRIANGLE_SLOTS = 11;  // array sizes, at least 1

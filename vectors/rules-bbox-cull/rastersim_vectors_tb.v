@@ -32,8 +32,8 @@ module rastersim_vectors_tb;
   localparam integer DRAWN = 62;  // setup.hex
   localparam integer FRAGMENTS = 4013;  // fragments.hex
   localparam integer WORDS = 1536;  // depth.hex, color.hex: WIDTH * HEIGHT
-  localparam integer CYCLES = 13164;  // the frame's expected cycles (frame.hex)
-  localparam integer CYCLE_BOUND = 53656;  // the frame is abandoned after 4 CYCLES + 1000
+  localparam integer CYCLES = 13172;  // the frame's expected cycles (frame.hex)
+  localparam integer CYCLE_BOUND = 53688;  // the frame is abandoned after 4 CYCLES + 1000
   localparam integer CLEAR_BOUND = WORDS + 16;  // cycles the memory clear after reset may take
   localparam integer SHOWN = 20;  // mismatches printed
   localparam integer TRIANGLE_SLOTS = 138;  // array sizes, at least 1

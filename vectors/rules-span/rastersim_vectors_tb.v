@@ -32,8 +32,8 @@ module rastersim_vectors_tb;
   localparam integer DRAWN = 104;  // setup.hex
   localparam integer FRAGMENTS = 8097;  // fragments.hex
   localparam integer WORDS = 1536;  // depth.hex, color.hex: WIDTH * HEIGHT
-  localparam integer CYCLES = 9373;  // the frame's expected cycles (frame.hex)
-  localparam integer CYCLE_BOUND = 38492;  // the frame is abandoned after 4 CYCLES + 1000
+  localparam integer CYCLES = 9377;  // the frame's expected cycles (frame.hex)
+  localparam integer CYCLE_BOUND = 38508;  // the frame is abandoned after 4 CYCLES + 1000
   localparam integer CLEAR_BOUND = WORDS + 16;  // cycles the memory clear after reset may take
   localparam integer SHOWN = 20;  // mismatches printed
   localparam integer TRIANGLE_SLOTS = 138;  // array sizes, at least 1

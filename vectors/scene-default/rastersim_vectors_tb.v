@@ -32,8 +32,8 @@ module rastersim_vectors_tb;
   localparam integer DRAWN = 1691;  // setup.hex
   localparam integer FRAGMENTS = 2354;  // fragments.hex
   localparam integer WORDS = 3072;  // depth.hex, color.hex: WIDTH * HEIGHT
-  localparam integer CYCLES = 24878;  // the frame's expected cycles (frame.hex)
-  localparam integer CYCLE_BOUND = 100512;  // the frame is abandoned after 4 CYCLES + 1000
+  localparam integer CYCLES = 25158;  // the frame's expected cycles (frame.hex)
+  localparam integer CYCLE_BOUND = 101632;  // the frame is abandoned after 4 CYCLES + 1000
   localparam integer CLEAR_BOUND = WORDS + 16;  // cycles the memory clear after reset may take
   localparam integer SHOWN = 20;  // mismatches printed
   localparam integer TRIANGLE_SLOTS = 5719;  // array sizes, at least 1
