@@ -1,0 +1,30 @@
+// The golden model for SystemVerilog testbenches through DPI-C (docs/library.md): the C API of
+// rastersim.h with the types DPI-C maps (chandle for the pipeline, string, int, longint; output
+// arguments for the records). Link the testbench with librastersim_model (static or shared).
+// Every function returns 0 (RASTERSIM_OK) or an error code; rastersim_last_error() says why.
+package rastersim_dpi;
+  localparam int RASTERSIM_OK = 0;
+  localparam int RASTERSIM_DRAWN = 0, RASTERSIM_DEGENERATE = 1, RASTERSIM_CULLED = 2, RASTERSIM_OFFSCREEN = 3;
+
+  import "DPI-C" function string rastersim_version();
+  import "DPI-C" function string rastersim_last_error();
+  // A pipeline from a profile's JSON text ("" is the default profile).
+  import "DPI-C" function int rastersim_create(input string profile_json, output chandle pipeline);
+  import "DPI-C" function void rastersim_destroy(input chandle pipeline);
+  import "DPI-C" function int rastersim_reset(input chandle pipeline);
+  // One snapped triangle (x, y subpixels; z uN; rgb {r, g, b}); its index in submission order.
+  import "DPI-C" function int rastersim_dpi_submit_snapped(
+      input chandle pipeline, input int x0, input int y0, input int unsigned z0, input int unsigned rgb0,
+      input int x1, input int y1, input int unsigned z1, input int unsigned rgb1, input int x2, input int y2,
+      input int unsigned z2, input int unsigned rgb2, output longint triangle);
+  import "DPI-C" function int rastersim_dpi_read_triangle(
+      input chandle pipeline, input longint triangle, output int status, output longint setup_accept,
+      output longint setup_done, output longint walker_load, output longint walker_end,
+      output longint fragments, output longint last_write);
+  import "DPI-C" function int rastersim_dpi_read_fragment(
+      input chandle pipeline, input longint triangle, input longint k, output int x, output int y,
+      output int unsigned z, output int unsigned rgb, output int pass, output longint cycle);
+  import "DPI-C" function int rastersim_dpi_frame_cycles(input chandle pipeline, output longint cycles);
+  import "DPI-C" function int rastersim_dpi_read_buffers(input chandle pipeline, input int x, input int y,
+                                                         output int unsigned depth, output int unsigned rgb);
+endpackage

@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# Installs a build into a temporary prefix, builds examples/scoreboard against the installed tree
+# twice (CMake find_package with the static library, pkg-config with the shared one), runs them and
+# the installed `rastersim render` on the same triangles, and requires the same fragments (every
+# field and cycle), the same frame cycles, and final buffers equal to those replayed from the
+# CLI's fragment trace; on docs/examples/worked.tri and on the default scene (or on the given
+# profile and triangles). Usage: check-install.sh BUILD_DIR [PROFILE.json TRIANGLES.tri]
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="$(cd "${1:?usage: check-install.sh BUILD_DIR [PROFILE.json TRIANGLES.tri]}" && pwd)"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+prefix="$work/prefix"
+
+cmake --install "$build" --prefix "$prefix" > "$work/install.log"
+for f in bin/rastersim include/rastersim/rastersim.h include/rastersim/model/pipeline.h \
+         lib/cmake/rastersim/rastersimConfig.cmake lib/pkgconfig/rastersim.pc share/rastersim/rtl/rastersim_top.sv \
+         share/doc/rastersim/library.md; do
+  [ -e "$prefix/$f" ] || { echo "check-install: $f is not installed"; exit 1; }
+done
+ls "$prefix"/lib/librastersim_model.a "$prefix"/lib/librastersim_model.so > /dev/null
+
+# The example as a user builds it: find_package (static library).
+cmake -S "$prefix/share/doc/rastersim/examples/scoreboard" -B "$work/sb" -DCMAKE_PREFIX_PATH="$prefix" \
+  -DCMAKE_BUILD_TYPE=Release > "$work/configure.log"
+cmake --build "$work/sb" > "$work/build.log"
+# And with pkg-config (shared library).
+export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+# shellcheck disable=SC2046
+cc -std=c99 -Wall -Werror -o "$work/scoreboard_shared" "$prefix/share/doc/rastersim/examples/scoreboard/scoreboard.c" \
+  $(pkg-config --cflags --libs rastersim)
+
+compare() {  # PROFILE TRIANGLES
+local profile="$1" triangles="$2"
+"$prefix/bin/rastersim" render "$triangles" --profile "$profile" --fragments "$work/cli.csv" \
+  --stats "$work/cli.json" > /dev/null
+"$work/sb/scoreboard" "$profile" "$triangles" "$work/static.csv" "$work/static.txt" > "$work/static.out"
+LD_LIBRARY_PATH="$prefix/lib" "$work/scoreboard_shared" "$profile" "$triangles" "$work/shared.csv" \
+  "$work/shared.txt" > "$work/shared.out"
+readelf -d "$work/scoreboard_shared" | grep -q 'NEEDED.*librastersim_model\.so' \
+  || { echo "check-install: the pkg-config build does not use the installed shared library"; exit 1; }
+
+python3 - "$work" <<'PY'
+import csv, json, sys
+work = sys.argv[1]
+cli = list(csv.reader(open(f"{work}/cli.csv")))
+stats = json.load(open(f"{work}/cli.json"))
+if len(cli) < 2:
+    sys.exit("check-install: the CLI wrote no fragments (nothing to compare)")
+# The final buffers replayed from the CLI's trace: clear value, then every passing fragment.
+profile = stats["profile"]
+width, height = profile["width"], profile["height"]
+depth = [profile["depth_clear"]] * (width * height)
+colour = [0] * (width * height)
+for tri, x, y, z, passed, r, g, b, cycle in (map(int, row) for row in cli[1:]):
+    if passed:
+        if profile["depth_write"]:
+            depth[y * width + x] = z
+        colour[y * width + x] = (r << 16) | (g << 8) | b
+expected_buffers = [f"{d} {c:06x}" for d, c in zip(depth, colour)]
+for kind in ("static", "shared"):
+    rows = list(csv.reader(open(f"{work}/{kind}.csv")))
+    if rows != cli:
+        diff = next(i for i in range(min(len(rows), len(cli)) + 1) if i >= len(rows) or i >= len(cli) or rows[i] != cli[i])
+        sys.exit(f"check-install: {kind} fragments differ from the CLI's at row {diff}: "
+                 f"{rows[diff] if diff < len(rows) else 'none'} against {cli[diff] if diff < len(cli) else 'none'}")
+    cycles = [l for l in open(f"{work}/{kind}.out") if l.startswith("cycles ")]
+    if cycles != [f"cycles {stats['cycles']}\n"]:
+        sys.exit(f"check-install: {kind} frame cycles {cycles} against the CLI's {stats['cycles']}")
+    buffers = open(f"{work}/{kind}.txt").read().split("\n")[:-1]
+    if buffers != expected_buffers:
+        bad = next(i for i in range(len(expected_buffers)) if i >= len(buffers) or buffers[i] != expected_buffers[i])
+        sys.exit(f"check-install: {kind} buffer word of pixel ({bad % width}, {bad // width}) is "
+                 f"{buffers[bad] if bad < len(buffers) else 'missing'}, the replayed trace gives {expected_buffers[bad]}")
+print(f"check-install: {len(cli) - 1} fragments, {stats['cycles']} cycles and {width * height} buffer words agree "
+      "(CLI, find_package static build, pkg-config shared build)")
+PY
+}
+
+if [ $# -ge 3 ]; then
+  compare "$(realpath "$2")" "$(realpath "$3")"
+else
+  compare "$root/docs/examples/worked.json" "$root/docs/examples/worked.tri"
+  echo '{}' > "$work/default.json"
+  "$prefix/bin/rastersim" render --scene default --dump-tri "$work/default.tri" > /dev/null
+  compare "$work/default.json" "$work/default.tri"
+fi
