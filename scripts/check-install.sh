@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs a build into a temporary prefix, builds examples/scoreboard against the installed tree
-# twice (CMake find_package with the static library, pkg-config with the shared one), runs them and
+# twice (CMake find_package with the static library, pkg-config with the shared one) and the DPI
+# example examples/dpi (the installed RTL under Verilator, the model as its scoreboard through
+# DPI-C; and again with an injected RTL bug, which it must report), runs them and
 # the installed `rastersim render` on the same triangles, and requires the same fragments (every
 # field and cycle), the same frame cycles, and final buffers equal to those replayed from the
 # CLI's fragment trace; on docs/examples/worked.tri and on the default scene (or on the given
@@ -76,6 +78,36 @@ print(f"check-install: {len(cli) - 1} fragments, {stats['cycles']} cycles and {w
       "(CLI, find_package static build, pkg-config shared build)")
 PY
 }
+
+# The DPI example: the installed RTL under Verilator with the installed model as its scoreboard
+# through DPI-C; it must agree, and it must catch a bug injected into a copy of the RTL (a flipped
+# carry-in of the plane registers' x step) with a message naming triangle, pixel and field.
+dpi_example() {  # NAME RTL_DIR
+  cmake -S "$prefix/share/doc/rastersim/examples/dpi" -B "$work/$1" -DCMAKE_PREFIX_PATH="$prefix" \
+    -DCMAKE_BUILD_TYPE=Release -DRTL_DIR="$2" > "$work/$1.configure.log" 2>&1 \
+    || { cat "$work/$1.configure.log"; exit 1; }
+  cmake --build "$work/$1" -j"$(nproc)" > "$work/$1.build.log" 2>&1 || { tail -30 "$work/$1.build.log"; exit 1; }
+}
+dpi_example dpi "$prefix/share/rastersim/rtl"
+"$work/dpi/scoreboard_tb" | tee "$work/dpi.out"
+grep -q "agree with the model" "$work/dpi.out" || { echo "check-install: the DPI example did not agree"; exit 1; }
+cp -r "$prefix/share/rastersim/rtl" "$work/rtl-bug"
+python3 - "$work/rtl-bug/plane_register.sv" <<'PY'
+import sys
+path = sys.argv[1]
+text = open(path).read()
+old = "value <= value + step_x_q;"
+if text.count(old) != 1:
+    sys.exit(f"check-install: mutation anchor found {text.count(old)} times in {path}")
+open(path, "w").write(text.replace(old, "value <= value + step_x_q + 1'b1;"))
+PY
+dpi_example dpi-bug "$work/rtl-bug"
+if "$work/dpi-bug/scoreboard_tb" > "$work/dpi-bug.out"; then
+  echo "check-install: the DPI example passed an RTL with an injected bug"; exit 1
+fi
+grep -m1 "MISMATCH triangle [0-9]*, pixel ([0-9]*, [0-9]*), [a-z]" "$work/dpi-bug.out" \
+  || { echo "check-install: the DPI example failed without naming triangle, pixel and field"; cat "$work/dpi-bug.out"; exit 1; }
+echo "check-install: the DPI example caught the injected bug"
 
 if [ $# -ge 3 ]; then
   compare "$(realpath "$2")" "$(realpath "$3")"
