@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs a build into a temporary prefix, builds examples/scoreboard against the installed tree
-# twice (CMake find_package with the static library, pkg-config with the shared one) and the DPI
+# twice (CMake find_package with the static library, pkg-config with the shared one), the Python
+# example examples/python/scoreboard.py with the installed module, and the DPI
 # example examples/dpi (the installed RTL under Verilator, the model as its scoreboard through
 # DPI-C; and again with an injected RTL bug, which it must report), runs them and
 # the installed `rastersim render` on the same triangles, and requires the same fragments (every
@@ -20,7 +21,8 @@ for f in bin/rastersim include/rastersim/rastersim.h include/rastersim/model/pip
          share/doc/rastersim/library.md; do
   [ -e "$prefix/$f" ] || { echo "check-install: $f is not installed"; exit 1; }
 done
-ls "$prefix"/lib/librastersim_model.a "$prefix"/lib/librastersim_model.so > /dev/null
+ls "$prefix"/lib/librastersim_model.a "$prefix"/lib/librastersim_model.so "$prefix"/lib/python3/dist-packages/rastersim*.so \
+  > /dev/null
 
 # The example as a user builds it: find_package (static library).
 cmake -S "$prefix/share/doc/rastersim/examples/scoreboard" -B "$work/sb" -DCMAKE_PREFIX_PATH="$prefix" \
@@ -39,6 +41,9 @@ local profile="$1" triangles="$2"
 "$work/sb/scoreboard" "$profile" "$triangles" "$work/static.csv" "$work/static.txt" > "$work/static.out"
 LD_LIBRARY_PATH="$prefix/lib" "$work/scoreboard_shared" "$profile" "$triangles" "$work/shared.csv" \
   "$work/shared.txt" > "$work/shared.out"
+PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 \
+  "$prefix/share/doc/rastersim/examples/python/scoreboard.py" "$profile" "$triangles" "$work/python.csv" \
+  "$work/python.txt" > "$work/python.out"
 readelf -d "$work/scoreboard_shared" | grep -q 'NEEDED.*librastersim_model\.so' \
   || { echo "check-install: the pkg-config build does not use the installed shared library"; exit 1; }
 
@@ -60,7 +65,7 @@ for tri, x, y, z, passed, r, g, b, cycle in (map(int, row) for row in cli[1:]):
             depth[y * width + x] = z
         colour[y * width + x] = (r << 16) | (g << 8) | b
 expected_buffers = [f"{d} {c:06x}" for d, c in zip(depth, colour)]
-for kind in ("static", "shared"):
+for kind in ("static", "shared", "python"):
     rows = list(csv.reader(open(f"{work}/{kind}.csv")))
     if rows != cli:
         diff = next(i for i in range(min(len(rows), len(cli)) + 1) if i >= len(rows) or i >= len(cli) or rows[i] != cli[i])
@@ -75,7 +80,7 @@ for kind in ("static", "shared"):
         sys.exit(f"check-install: {kind} buffer word of pixel ({bad % width}, {bad // width}) is "
                  f"{buffers[bad] if bad < len(buffers) else 'missing'}, the replayed trace gives {expected_buffers[bad]}")
 print(f"check-install: {len(cli) - 1} fragments, {stats['cycles']} cycles and {width * height} buffer words agree "
-      "(CLI, find_package static build, pkg-config shared build)")
+      "(CLI, find_package static build, pkg-config shared build, Python module)")
 PY
 }
 

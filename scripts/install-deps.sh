@@ -9,6 +9,7 @@ packages=(
   verilator libsystemc-dev iverilog yosys
   libosmesa6-dev nextpnr-ice40 fpga-icestorm
   gnuplot-nox
+  python3-dev python3-pybind11 python3-numpy python3-pytest  # the Python module and its tests
   glmark2-data  # the Stanford bunny (bunny.obj) for the real-mesh benchmark
 )
 missing=()
