@@ -107,6 +107,9 @@ int rastersim_read_color(const rastersim_pipeline* pipeline, int32_t x, int32_t 
 
 /* The same with the types of DPI-C (api/rastersim_dpi.sv imports them): scalars instead of structs,
  * colours as 0x00RRGGBB, `long long` for SystemVerilog's longint, `void*` for its chandle. */
+int rastersim_dpi_submit_screen(void* pipeline, double x0, double y0, double z0, unsigned rgb0, double x1,
+                                double y1, double z1, unsigned rgb1, double x2, double y2, double z2,
+                                unsigned rgb2, long long* triangle);
 int rastersim_dpi_submit_snapped(void* pipeline, int x0, int y0, unsigned z0, unsigned rgb0, int x1, int y1,
                                  unsigned z1, unsigned rgb1, int x2, int y2, unsigned z2, unsigned rgb2,
                                  long long* triangle);

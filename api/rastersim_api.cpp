@@ -276,6 +276,20 @@ uint32_t packed_rgb(uint8_t r, uint8_t g, uint8_t b) { return uint32_t(r) << 16 
 
 extern "C" {
 
+int rastersim_dpi_submit_screen(void* pipeline, double x0, double y0, double z0, unsigned rgb0, double x1,
+                                double y1, double z1, unsigned rgb1, double x2, double y2, double z2,
+                                unsigned rgb2, long long* triangle) {
+  const double x[3] = {x0, x1, x2}, y[3] = {y0, y1, y2}, z[3] = {z0, z1, z2};
+  const unsigned rgb[3] = {rgb0, rgb1, rgb2};
+  rastersim_screen_vertex v[3];
+  for (int k = 0; k < 3; ++k)
+    v[k] = {x[k], y[k], z[k], uint8_t(rgb[k] >> 16), uint8_t(rgb[k] >> 8), uint8_t(rgb[k])};
+  int64_t index = -1;
+  const int status = rastersim_submit_screen(from_chandle(pipeline), v, &index);
+  if (triangle) *triangle = index;
+  return status;
+}
+
 int rastersim_dpi_submit_snapped(void* pipeline, int x0, int y0, unsigned z0, unsigned rgb0, int x1, int y1,
                                  unsigned z1, unsigned rgb1, int x2, int y2, unsigned z2, unsigned rgb2,
                                  long long* triangle) {

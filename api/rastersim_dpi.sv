@@ -12,6 +12,11 @@ package rastersim_dpi;
   import "DPI-C" function int rastersim_create(input string profile_json, output chandle pipeline);
   import "DPI-C" function void rastersim_destroy(input chandle pipeline);
   import "DPI-C" function int rastersim_reset(input chandle pipeline);
+  // One screen-space triangle (x, y pixels; z in [0, 1]; rgb {r, g, b}), checked and snapped.
+  import "DPI-C" function int rastersim_dpi_submit_screen(
+      input chandle pipeline, input real x0, input real y0, input real z0, input int unsigned rgb0,
+      input real x1, input real y1, input real z1, input int unsigned rgb1, input real x2, input real y2,
+      input real z2, input int unsigned rgb2, output longint triangle);
   // One snapped triangle (x, y subpixels; z uN; rgb {r, g, b}); its index in submission order.
   import "DPI-C" function int rastersim_dpi_submit_snapped(
       input chandle pipeline, input int x0, input int y0, input int unsigned z0, input int unsigned rgb0,
