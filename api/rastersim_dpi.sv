@@ -12,6 +12,8 @@ package rastersim_dpi;
   import "DPI-C" function int rastersim_create(input string profile_json, output chandle pipeline);
   import "DPI-C" function void rastersim_destroy(input chandle pipeline);
   import "DPI-C" function int rastersim_reset(input chandle pipeline);
+  import "DPI-C" function int rastersim_width(input chandle pipeline, output int width);
+  import "DPI-C" function int rastersim_height(input chandle pipeline, output int height);
   // One screen-space triangle (x, y pixels; z in [0, 1]; rgb {r, g, b}), checked and snapped.
   import "DPI-C" function int rastersim_dpi_submit_screen(
       input chandle pipeline, input real x0, input real y0, input real z0, input int unsigned rgb0,
