@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs a build into a temporary prefix, builds examples/scoreboard against the installed tree
-# twice (CMake find_package with the static library, pkg-config with the shared one), the Python
+# (the C example twice: CMake find_package with the static library, pkg-config with the shared
+# one; the C++ example with find_package), the Python
 # example examples/python/scoreboard.py with the installed module, examples/dpi/render_tb.sv (the
 # model alone through DPI-C), and the DPI
 # example examples/dpi (the installed RTL under Verilator, the model as its scoreboard through
@@ -45,6 +46,7 @@ LD_LIBRARY_PATH="$prefix/lib" "$work/scoreboard_shared" "$profile" "$triangles" 
 PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 \
   "$prefix/share/doc/rastersim/examples/python/scoreboard.py" "$profile" "$triangles" "$work/python.csv" \
   "$work/python.txt" > "$work/python.out"
+"$work/sb/scoreboard_cpp" "$profile" "$triangles" "$work/cpp.csv" "$work/cpp.txt" > "$work/cpp.out"
 "$work/dpi/render_tb" +tri="$triangles" +profile="$profile" +fragments="$work/dpi-render.csv" \
   +buffers="$work/dpi-render.txt" > "$work/dpi-render.out"
 readelf -d "$work/scoreboard_shared" | grep -q 'NEEDED.*librastersim_model\.so' \
@@ -68,7 +70,7 @@ for tri, x, y, z, passed, r, g, b, cycle in (map(int, row) for row in cli[1:]):
             depth[y * width + x] = z
         colour[y * width + x] = (r << 16) | (g << 8) | b
 expected_buffers = [f"{d} {c:06x}" for d, c in zip(depth, colour)]
-for kind in ("static", "shared", "python", "dpi-render"):
+for kind in ("static", "shared", "cpp", "python", "dpi-render"):
     rows = list(csv.reader(open(f"{work}/{kind}.csv")))
     if rows != cli:
         diff = next(i for i in range(min(len(rows), len(cli)) + 1) if i >= len(rows) or i >= len(cli) or rows[i] != cli[i])
@@ -83,7 +85,7 @@ for kind in ("static", "shared", "python", "dpi-render"):
         sys.exit(f"check-install: {kind} buffer word of pixel ({bad % width}, {bad // width}) is "
                  f"{buffers[bad] if bad < len(buffers) else 'missing'}, the replayed trace gives {expected_buffers[bad]}")
 print(f"check-install: {len(cli) - 1} fragments, {stats['cycles']} cycles and {width * height} buffer words agree "
-      "(CLI, find_package static build, pkg-config shared build, Python module, DPI-C render_tb)")
+      "(CLI, C example static and shared, C++ example, Python, DPI-C render_tb)")
 PY
 }
 
