@@ -107,11 +107,17 @@ std::string junit_xml(const std::vector<FrameResult>& frames, const Profile& pro
 CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "cosim", "directed and random frames through the model and the RTL in lockstep, compared at every transaction");
-  cmd->add_option("--count", o.count, "random frames to run after the directed ones")->type_name("N");
-  cmd->add_option("--seed", o.seed, "frame k draws its triangles, settings and the RTL's power-on state from seed + k")
+  // The defaults in the help text are those of CosimOptions.
+  cmd->add_option("--count", o.count,
+                  "random frames to run after the directed ones (default " + std::to_string(o.count) + ")")
+      ->type_name("N");
+  cmd->add_option("--seed", o.seed,
+                  "frame k draws its triangles, settings and the RTL's power-on state from seed + k (default " +
+                      std::to_string(o.seed) + ")")
       ->type_name("S");
-  cmd->add_option("--triangles", o.triangles, "triangles per random frame")->type_name("K");
-  cmd->add_flag("!--no-directed", o.directed, "skip the directed frames");
+  cmd->add_option("--triangles", o.triangles, "triangles per random frame (default " + std::to_string(o.triangles) + ")")
+      ->type_name("K");
+  cmd->add_flag_callback("--no-directed", [&o] { o.directed = false; }, "skip the directed frames");
   cmd->add_flag("--fixed-settings", o.fixed_settings,
                 "random frames keep the profile's runtime settings (by default each frame draws depth_func, "
                 "depth_write, depth_clear, cull, front_face, traversal, shading, memory_latency and setup_fifo_depth, except the keys "
@@ -120,7 +126,8 @@ CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
       ->type_name("K/N");
   cmd->add_option("--junit", o.junit_out, "write the frames' results as JUnit XML")->type_name("FILE");
   cmd->add_flag("--keep-going", o.keep_going, "run every frame even after a divergence");
-  cmd->add_option("--replay-dir", o.replay_dir, "folder for the replay files of a divergence")->type_name("DIR");
+  cmd->add_option("--replay-dir", o.replay_dir,
+                  "folder for the replay files of a divergence (default the working folder)")->type_name("DIR");
   cmd->add_option("--fst", o.fst_out, "write the RTL waveform of every frame (the last one run remains)")
       ->type_name("FILE");
   add_profile_options(*cmd, o.profile);

@@ -150,6 +150,12 @@ int run_render(const RenderOptions& o) {
       throw InputError("--fst needs --backend rtl or cosim: the " + o.backend + " backend runs no RTL waveform");
     fst_temp = add_waveform(outputs, o.fst_out);
   }
+  if (!o.replay_dir.empty()) {
+    if (backend != Backend::Cosim)
+      throw InputError("--replay-dir needs --backend cosim: the " + o.backend + " backend writes no replay files");
+    if (!std::filesystem::is_directory(o.replay_dir))
+      throw InputError("--replay-dir: folder '" + o.replay_dir + "' does not exist");
+  }
 
   const std::vector<ScreenTriangle> screen = load_input(o.input, o.scene, profile, camera_options(o));
   std::vector<SnappedTriangle> snapped;
@@ -162,7 +168,8 @@ int run_render(const RenderOptions& o) {
   BackendOptions backend_options;
   backend_options.seed = o.seed;
   backend_options.fst_path = fst_temp;
-  backend_options.replay_prefix = (std::filesystem::path(o.replay_dir) / "rastersim-replay").string();
+  backend_options.replay_prefix =
+      (std::filesystem::path(o.replay_dir.empty() ? "." : o.replay_dir) / "rastersim-replay").string();
   const RenderResult result = render_triangles(
       backend, profile, snapped, csv.get(), [&](size_t done) { progress.update(done); }, backend_options);
   progress.finish();

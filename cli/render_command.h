@@ -26,7 +26,7 @@ struct RenderOptions {
   std::string backend = "model";
   uint64_t seed = 1;          // rtl/cosim: random power-on state
   std::string fst_out;        // rtl/cosim: waveform
-  std::string replay_dir = "."; // cosim: where a divergence's replay files go
+  std::string replay_dir;  // cosim: where a divergence's replay files go (empty: the working folder)
   ProfileOptions profile;
 };
 

@@ -490,6 +490,31 @@ TEST(Cli, CameraFlagsOnAScreenSpaceInputAreRefused) {
   EXPECT_EQ(dir.listing(), std::set<std::string>{"one.tri"});
 }
 
+// cosim's help once hid its defaults and showed the flag as `--no-directed{false}`.
+TEST(CliRtl, CosimHelpShowsDefaultsAndPlainFlags) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"cosim", "--help"});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_TRUE(contains(r.out, "after the directed ones (default 100)")) << r.out;
+  EXPECT_TRUE(contains(r.out, "per random frame (default 16)")) << r.out;
+  EXPECT_TRUE(contains(r.out, "--no-directed ")) << r.out;
+  EXPECT_FALSE(contains(r.out, "{false}")) << r.out;
+}
+
+// --replay-dir was once accepted silently with any backend and any folder, existing or not.
+TEST(Cli, ReplayFolderWrongUsesAreErrors) {
+  ScratchDir dir;
+  dir.write("one.tri", "2 1.5 0.25 13.25 4 0.5 5.5 10 0.75 255 128 0\n");
+  const RunResult model = run_rastersim(dir, {"render", "one.tri", "--stats", "s.json", "--replay-dir", "."});
+  EXPECT_EQ(model.exit_code, 2);
+  EXPECT_TRUE(contains(model.err, "--replay-dir needs --backend cosim")) << model.err;
+  const RunResult missing = run_rastersim(
+      dir, {"render", "one.tri", "--stats", "s.json", "--backend", "cosim", "--replay-dir", "no/such/folder"});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_TRUE(contains(missing.err, "folder 'no/such/folder' does not exist")) << missing.err;
+  EXPECT_EQ(dir.listing(), std::set<std::string>{"one.tri"});  // nothing written
+}
+
 // --fst once wrote nothing and exited 0 with the model backend, into a missing folder or a folder.
 TEST(CliRtl, WaveformWrongUsesAreErrorsAndAWaveformIsWrittenWhole) {
   ScratchDir dir;
