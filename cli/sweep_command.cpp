@@ -141,6 +141,9 @@ std::string gnuplot_script(const std::vector<SweepAxis>& axes, const std::vector
   gp << "# Written by rastersim sweep: " << title << "\n";
   gp << "set terminal pngcairo size " << width << "," << height << " font ',11'\nset grid\nset key outside right top\n";
   gp << "set xlabel '" << x_axis.key << "' noenhanced\n";
+  // Every figure is a count, share or error >= 0: from a zero baseline a 0.07 % difference looks
+  // like one (autoscaling once made it fill the plot).
+  gp << "set yrange [0:*]\n";
   if (log_x) gp << "set logscale x\n";
   // A tic at every swept value, labelled as given.
   gp << "set xtics (";

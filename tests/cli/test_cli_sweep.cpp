@@ -77,6 +77,7 @@ TEST(CliSweep, EveryCombinationIsARowEqualToRenderAndPlotted) {
     EXPECT_EQ(plot.height, 500) << name;
   }
   EXPECT_TRUE(fs::exists(dir.path("study/sweep.gp")));
+  EXPECT_NE(read_text(dir.path("study/sweep.gp")).find("set yrange [0:*]"), std::string::npos);  // zero baseline
 }
 
 // The width of the plot's frame: the longest horizontal run of dark pixels (the frame's top and
