@@ -1,5 +1,7 @@
 #include "outputs.h"
 
+#include <fcntl.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -157,9 +159,39 @@ constexpr int kMaxTemporaries = 16;
 char temporaries[kMaxTemporaries][4096];
 volatile sig_atomic_t temporary_used[kMaxTemporaries];
 
+char temporary_folders[kMaxTemporaries][4096];
+volatile sig_atomic_t temporary_folder_used[kMaxTemporaries];
+
+// Removes the files of a folder and the folder with system calls only (no allocation).
+void remove_folder_of_files(const char* folder) {
+  const int fd = open(folder, O_RDONLY | O_DIRECTORY);
+  if (fd >= 0) {
+    alignas(8) char buffer[4096];
+    for (long n; (n = syscall(SYS_getdents64, fd, buffer, sizeof buffer)) > 0;) {
+      for (long at = 0; at < n;) {
+        struct Entry {
+          uint64_t inode;
+          int64_t offset;
+          unsigned short length;
+          unsigned char type;
+          char name[1];
+        };
+        const Entry* e = reinterpret_cast<const Entry*>(buffer + at);
+        const bool dot = e->name[0] == '.' && (e->name[1] == '\0' || (e->name[1] == '.' && e->name[2] == '\0'));
+        if (!dot) unlinkat(fd, e->name, 0);
+        at += e->length;
+      }
+    }
+    close(fd);
+  }
+  rmdir(folder);
+}
+
 void remove_temporaries_and_reraise(int signal_number) {
   for (int i = 0; i < kMaxTemporaries; ++i)
     if (temporary_used[i]) unlink(temporaries[i]);
+  for (int i = 0; i < kMaxTemporaries; ++i)
+    if (temporary_folder_used[i]) remove_folder_of_files(temporary_folders[i]);
   ::signal(signal_number, SIG_DFL);
   ::raise(signal_number);
 }
@@ -178,6 +210,17 @@ void remember_temporary(const std::string& path) {
 void forget_temporary(const std::string& path) {
   for (int i = 0; i < kMaxTemporaries; ++i)
     if (temporary_used[i] && path == temporaries[i]) temporary_used[i] = 0;
+}
+
+void remember_temporary_folder(const std::string& path, bool exists) {
+  for (int i = 0; i < kMaxTemporaries; ++i) {
+    if (exists && !temporary_folder_used[i] && path.size() < sizeof temporary_folders[0]) {
+      std::memcpy(temporary_folders[i], path.c_str(), path.size() + 1);
+      temporary_folder_used[i] = 1;
+      return;
+    }
+    if (!exists && temporary_folder_used[i] && path == temporary_folders[i]) temporary_folder_used[i] = 0;
+  }
 }
 
 void remove_temporaries_on_signals() {

@@ -66,6 +66,9 @@ std::ios::openmode output_mode(const std::string& path);
 // its own); install the handlers once, in main.
 void remember_temporary(const std::string& path);
 void forget_temporary(const std::string& path);
+// The same for a hidden folder of files (a vector package being written): the handler removes its
+// files and then the folder. Matches vectors::TemporaryFolderHook.
+void remember_temporary_folder(const std::string& path, bool exists);
 void remove_temporaries_on_signals();
 
 // The RTL waveform (`--fst FILE`) as one of `outputs`: the same checks as every output, written to a

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "inputs.h"
+#include "outputs.h"
 #include "model/input_error.h"
 #ifdef RASTERSIM_HAVE_VECTORS
 #include "testbench/cosim_cases.h"
@@ -75,7 +76,7 @@ int run_vectors(const VectorsOptions& o) {
   vectors::PackageOptions options;
   options.rtl_path = o.rtl_path;
   const vectors::Package package = vectors::build_package(profile, triangles, source, options);
-  vectors::write_package(package, o.out, o.force);
+  vectors::write_package(package, o.out, o.force, remember_temporary_folder);
   std::cout << "wrote " << o.out << ": " << package.triangles << " triangles (" << package.drawn << " drawn), "
             << package.fragments << " fragments, " << package.cycles << " cycles, " << profile.width << "x"
             << profile.height << "\n"

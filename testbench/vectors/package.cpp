@@ -423,14 +423,19 @@ void check_package_dir(const std::string& out_dir, bool force) {
                      "' is not empty and holds no rastersim-vectors manifest.json; --force replaces only a package");
 }
 
-void write_package(const Package& package, const std::string& out_dir, bool force) {
+void write_package(const Package& package, const std::string& out_dir, bool force,
+                   TemporaryFolderHook temporary_folder) {
   check_package_dir(out_dir, force);
   const fs::path out = normal_out(out_dir);
   const fs::path parent = parent_of(out);
   std::error_code ec;
   const bool exists = fs::exists(out, ec);
   const std::string stem = out.filename().string();
+  auto track = [&](const fs::path& path, bool made) {
+    if (temporary_folder) temporary_folder(path.string(), made);
+  };
   const fs::path temp = make_temp_dir(parent, stem + ".tmp");
+  track(temp, true);
   try {
     for (const PackageFile& f : package.files) {
       const fs::path path = temp / f.path;
@@ -445,6 +450,7 @@ void write_package(const Package& package, const std::string& out_dir, bool forc
     // mkdtemp makes the folder 0700; a package is an ordinary folder.
     fs::permissions(temp, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
                               fs::perms::others_read | fs::perms::others_exec);
+    track(temp, false);  // from here on it is the package (or gone)
     if (exists && !fs::is_empty(out)) {
       const fs::path old = make_temp_dir(parent, stem + ".old");
       fs::rename(out, old);  // onto the empty folder mkdtemp made
@@ -455,9 +461,11 @@ void write_package(const Package& package, const std::string& out_dir, bool forc
     }
   } catch (const fs::filesystem_error& e) {
     fs::remove_all(temp, ec);
+    track(temp, false);
     throw InputError("--out: cannot write '" + out.string() + "': " + e.code().message());
   } catch (...) {
     fs::remove_all(temp, ec);
+    track(temp, false);
     throw;
   }
 }

@@ -61,8 +61,12 @@ void check_package_dir(const std::string& out_dir, bool force);
 // Checks as above, then writes the package into a temporary folder beside out_dir and renames it into place, so that a
 // failure leaves nothing behind. out_dir may be missing or empty; an existing package (a folder
 // with a rastersim-vectors manifest.json) is replaced only with `force`. Throws InputError naming
-// --out and the problem.
-void write_package(const Package& package, const std::string& out_dir, bool force);
+// --out and the problem. `temporary_folder` (optional) is told of each hidden folder the write
+// makes (true) and when it is gone or renamed into place (false), so that an interrupted process
+// can remove it (the CLI's signal handler: cli/outputs.h remember_temporary_folder).
+using TemporaryFolderHook = void (*)(const std::string& path, bool exists);
+void write_package(const Package& package, const std::string& out_dir, bool force,
+                   TemporaryFolderHook temporary_folder = nullptr);
 
 // CRC-32 (IEEE 802.3, reflected, as zlib and `gzip -l`), written as in the manifest: "0x%08x".
 uint32_t crc32(const std::string& bytes);

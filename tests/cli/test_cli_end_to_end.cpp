@@ -233,6 +233,39 @@ TEST(CliOutputs, ATerminatedRenderLeavesNoTemporary) {
   EXPECT_TRUE(dir.listing().empty()) << *dir.listing().begin();
 }
 
+// SIGTERM while a vector package is being written: its hidden folder goes with the process (an
+// interrupted `vectors` left folders of 57 and 109 MB).
+TEST(CliOutputs, ATerminatedVectorsRunLeavesNoTemporaryFolder) {
+  ScratchDir dir;
+  std::string exe = RASTERSIM_EXE;
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (chdir(dir.work().c_str()) != 0) _exit(126);
+    const int null = open("/dev/null", O_RDWR);
+    dup2(null, 0), dup2(null, 1), dup2(null, 2);
+    // About 55 MB of expected words: the write takes long enough to be caught in it.
+    execl(exe.c_str(), exe.c_str(), "vectors", "--scene", "default", "--width", "1024", "--height", "1024", "--out",
+          "pkg", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  ASSERT_GT(pid, 0);
+  bool seen = false;
+  for (int i = 0; i < 60000 && !seen; ++i) {  // up to a minute for the hidden folder to appear
+    for (const std::string& name : dir.listing()) seen |= name.rfind(".pkg.tmp-", 0) == 0;
+    if (!seen) usleep(1000);
+  }
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(seen) << "the hidden folder never appeared";
+  if (WIFSIGNALED(status)) {  // caught while writing
+    EXPECT_EQ(WTERMSIG(status), SIGTERM);
+    EXPECT_TRUE(dir.listing().empty()) << *dir.listing().begin();
+  } else {  // the write finished first: the package, whole, and nothing else
+    EXPECT_EQ(dir.listing(), std::set<std::string>{"pkg"});
+  }
+}
+
 TEST(CliRender, DepthPngIsSixteenBitScaled) {
   ScratchDir dir;
   dir.write("small.tri", kSmallTri);
