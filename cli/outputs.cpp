@@ -1,6 +1,7 @@
 #include "outputs.h"
 
 #include <fcntl.h>
+#include <dirent.h>
 #include <sys/syscall.h>
 #include <unistd.h>
 
@@ -162,9 +163,10 @@ volatile sig_atomic_t temporary_used[kMaxTemporaries];
 char temporary_folders[kMaxTemporaries][4096];
 volatile sig_atomic_t temporary_folder_used[kMaxTemporaries];
 
-// Removes the files of a folder and the folder with system calls only (no allocation).
-void remove_folder_of_files(const char* folder) {
-  const int fd = open(folder, O_RDONLY | O_DIRECTORY);
+// Removes a folder and what it holds with system calls only (no allocation): files, and folders
+// below it up to `depth` levels (a package holds rtl/ and the like, one level).
+void remove_folder_at(int parent_fd, const char* folder, int depth) {
+  const int fd = openat(parent_fd, folder, O_RDONLY | O_DIRECTORY | O_NOFOLLOW);
   if (fd >= 0) {
     alignas(8) char buffer[4096];
     for (long n; (n = syscall(SYS_getdents64, fd, buffer, sizeof buffer)) > 0;) {
@@ -178,20 +180,26 @@ void remove_folder_of_files(const char* folder) {
         };
         const Entry* e = reinterpret_cast<const Entry*>(buffer + at);
         const bool dot = e->name[0] == '.' && (e->name[1] == '\0' || (e->name[1] == '.' && e->name[2] == '\0'));
-        if (!dot) unlinkat(fd, e->name, 0);
+        if (!dot) {
+          if (e->type == DT_DIR) {
+            if (depth > 0) remove_folder_at(fd, e->name, depth - 1);
+          } else {
+            unlinkat(fd, e->name, 0);
+          }
+        }
         at += e->length;
       }
     }
     close(fd);
   }
-  rmdir(folder);
+  unlinkat(parent_fd, folder, AT_REMOVEDIR);
 }
 
 void remove_temporaries_and_reraise(int signal_number) {
   for (int i = 0; i < kMaxTemporaries; ++i)
     if (temporary_used[i]) unlink(temporaries[i]);
   for (int i = 0; i < kMaxTemporaries; ++i)
-    if (temporary_folder_used[i]) remove_folder_of_files(temporary_folders[i]);
+    if (temporary_folder_used[i]) remove_folder_at(AT_FDCWD, temporary_folders[i], 3);
   ::signal(signal_number, SIG_DFL);
   ::raise(signal_number);
 }
