@@ -204,30 +204,45 @@ TEST(CliOutputs, AnOutputThatIsAnInputIsRefused) {
   EXPECT_EQ(dir.listing(), (std::set<std::string>{"small.tri", "p.json", "alias.tri"}));
 }
 
-// SIGTERM while the fragment trace is being written: the hidden temporary goes with the process
-// (an interrupted render left a 614 MB one).
-TEST(CliOutputs, ATerminatedRenderLeavesNoTemporary) {
-  ScratchDir dir;
+// Runs rastersim with `args` in `dir`, sends SIGTERM as soon as a name starting with
+// `temporary_prefix` appears there (polling every millisecond, up to a minute), and returns the
+// process's wait status; `seen` says whether the temporary appeared.
+int terminate_when_temporary_appears(const ScratchDir& dir, std::vector<std::string> args,
+                                     const std::string& temporary_prefix, bool& seen) {
   std::string exe = RASTERSIM_EXE;
+  args.insert(args.begin(), exe);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
   const pid_t pid = fork();
   if (pid == 0) {
     if (chdir(dir.work().c_str()) != 0) _exit(126);
     const int null = open("/dev/null", O_RDWR);
     dup2(null, 0), dup2(null, 1), dup2(null, 2);
-    // Large enough to run for seconds: the default scene at 4096 x 4096 through the traced model.
-    execl(exe.c_str(), exe.c_str(), "render", "--scene", "default", "--width", "4096", "--height", "4096",
-          "--fragments", "frags.csv", static_cast<char*>(nullptr));
+    execv(exe.c_str(), argv.data());
     _exit(127);
   }
-  ASSERT_GT(pid, 0);
-  bool seen = false;
-  for (int i = 0; i < 600 && !seen; ++i) {  // up to a minute for the temporary to appear
-    for (const std::string& name : dir.listing()) seen |= name.rfind(".frags.tmp", 0) == 0;
-    if (!seen) usleep(100000);
+  seen = false;
+  if (pid <= 0) return -1;
+  for (int i = 0; i < 60000 && !seen; ++i) {
+    for (const std::string& name : dir.listing()) seen |= name.rfind(temporary_prefix, 0) == 0;
+    if (!seen) usleep(1000);
   }
   kill(pid, SIGTERM);
   int status = 0;
   waitpid(pid, &status, 0);
+  return status;
+}
+
+// SIGTERM while the fragment trace is being written: the hidden temporary goes with the process
+// (an interrupted render left a 614 MB one).
+TEST(CliOutputs, ATerminatedRenderLeavesNoTemporary) {
+  ScratchDir dir;
+  bool seen = false;
+  // Large enough to run for seconds: the default scene at 4096 x 4096 through the traced model.
+  const int status = terminate_when_temporary_appears(
+      dir, {"render", "--scene", "default", "--width", "4096", "--height", "4096", "--fragments", "frags.csv"},
+      ".frags.tmp", seen);
   ASSERT_TRUE(seen) << "the temporary never appeared";
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
   EXPECT_TRUE(dir.listing().empty()) << *dir.listing().begin();
@@ -237,26 +252,11 @@ TEST(CliOutputs, ATerminatedRenderLeavesNoTemporary) {
 // interrupted `vectors` left folders of 57 and 109 MB).
 TEST(CliOutputs, ATerminatedVectorsRunLeavesNoTemporaryFolder) {
   ScratchDir dir;
-  std::string exe = RASTERSIM_EXE;
-  const pid_t pid = fork();
-  if (pid == 0) {
-    if (chdir(dir.work().c_str()) != 0) _exit(126);
-    const int null = open("/dev/null", O_RDWR);
-    dup2(null, 0), dup2(null, 1), dup2(null, 2);
-    // About 55 MB of expected words: the write takes long enough to be caught in it.
-    execl(exe.c_str(), exe.c_str(), "vectors", "--scene", "default", "--width", "1024", "--height", "1024", "--out",
-          "pkg", static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  ASSERT_GT(pid, 0);
   bool seen = false;
-  for (int i = 0; i < 60000 && !seen; ++i) {  // up to a minute for the hidden folder to appear
-    for (const std::string& name : dir.listing()) seen |= name.rfind(".pkg.tmp-", 0) == 0;
-    if (!seen) usleep(1000);
-  }
-  kill(pid, SIGTERM);
-  int status = 0;
-  waitpid(pid, &status, 0);
+  // About 55 MB of expected words: the write takes long enough to be caught in it.
+  const int status = terminate_when_temporary_appears(
+      dir, {"vectors", "--scene", "default", "--width", "1024", "--height", "1024", "--out", "pkg"}, ".pkg.tmp-",
+      seen);
   ASSERT_TRUE(seen) << "the hidden folder never appeared";
   if (WIFSIGNALED(status)) {  // caught while writing
     EXPECT_EQ(WTERMSIG(status), SIGTERM);
