@@ -35,13 +35,19 @@ std::string shown(const std::string& token) {
 }
 
 // Lines of `in` without their ends: a line ends at "\n", "\r\n" or a lone "\r" (old Mac files:
-// their second line was read as the colours of the first). Reads with getline and splits at CRs.
+// their second line was read as the colours of the first). A physical line longer than
+// kMaxTriLineBytes is not read further (a .tri line is under a kilobyte; /dev/zero is one endless
+// line): next() reports it as TooLong.
+constexpr size_t kMaxTriLineBytes = size_t(1) << 20;
+
 class LineReader {
  public:
+  enum Result { Line, End, TooLong };
   explicit LineReader(std::istream& in) : in_(in) {}
-  bool next(std::string& line) {
+  Result next(std::string& line) {
     if (at_ == std::string::npos) {
-      if (!std::getline(in_, text_)) return false;
+      const Result read = read_physical_line();
+      if (read != Line) return read;
       at_ = 0;
     }
     const size_t cr = text_.find('\r', at_);
@@ -52,10 +58,27 @@ class LineReader {
       line.assign(text_, at_, cr - at_);
       at_ = cr + 1 == text_.size() ? std::string::npos : cr + 1;  // "\r\n" ends one line
     }
-    return true;
+    return Line;
   }
 
  private:
+  // Up to "\n" (dropped), at most kMaxTriLineBytes bytes.
+  Result read_physical_line() {
+    text_.clear();
+    std::streambuf* buffer = in_.rdbuf();
+    for (bool any = false;;) {
+      const int c = buffer->sbumpc();
+      if (c == std::char_traits<char>::eof()) {
+        in_.setstate(std::ios::eofbit);
+        return any ? Line : End;
+      }
+      any = true;
+      if (c == '\n') return Line;
+      if (text_.size() == kMaxTriLineBytes) return TooLong;
+      text_.push_back(char(c));
+    }
+  }
+
   std::istream& in_;
   std::string text_;
   size_t at_ = std::string::npos;  // where the next line starts in text_; npos: read another
@@ -139,8 +162,11 @@ std::vector<ScreenTriangle> read_tri(std::istream& in, const std::string& file_n
   std::string line;
   int line_number = 0;
   LineReader lines(in);
-  while (lines.next(line)) {
+  for (LineReader::Result read; (read = lines.next(line)) != LineReader::End;) {
     ++line_number;
+    if (read == LineReader::TooLong)
+      throw InputError(file_name, line_number, "the line is longer than " + std::to_string(kMaxTriLineBytes >> 20) +
+                                                   " MiB, far more than a triangle (is this a .tri file?)");
     // A UTF-8 byte-order mark before the first line is not part of it (it made x0 not a number).
     if (line_number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
     const size_t comment = line.find('#');

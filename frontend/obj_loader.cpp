@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "model/input_error.h"
+#include "model/text_file.h"
 
 namespace rastersim::frontend {
 namespace {
@@ -307,14 +308,7 @@ Mesh parse_obj_mesh(const std::string& text, const std::string& file_name) {
 }
 
 Mesh load_obj_mesh(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not an OBJ file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, std::string("cannot open OBJ file: ") + std::strerror(errno));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw InputError(path, 0, "cannot read OBJ file");
-  return parse_obj_mesh(buffer.str(), path);
+  return parse_obj_mesh(read_text_file(path, "an OBJ file", kMaxObjBytes), path);
 }
 
 }  // namespace rastersim::frontend

@@ -13,6 +13,8 @@ namespace rastersim::frontend {
 // a corner's normal from its `vn` (normalized) or, when it has none, the area-weighted normal of its
 // position. Statements other than v, vn, vt, f are checked to be known OBJ statements and ignored
 // (materials too). A file without faces is an error.
+// The largest OBJ file read (a mesh of about five million triangles); more is refused, not read.
+constexpr size_t kMaxObjBytes = size_t(256) << 20;
 Mesh load_obj_mesh(const std::string& path);
 
 // The same for OBJ text; `file_name` names it in errors.

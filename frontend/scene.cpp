@@ -16,6 +16,7 @@
 #include "frontend/surfaces.h"
 #include "frontend/transform.h"
 #include "model/input_error.h"
+#include "model/text_file.h"
 
 namespace rastersim::frontend {
 
@@ -292,13 +293,7 @@ class SceneReader {
 };
 
 std::string read_text(const std::string& path, const char* what) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, std::string("is a directory, not ") + what);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, std::string("cannot open ") + what + ": " + std::strerror(errno));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
+  return read_text_file(path, what, kMaxSceneBytes);
 }
 
 }  // namespace

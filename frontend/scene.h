@@ -42,6 +42,8 @@ std::vector<ScreenTriangle> render_scene(const Scene& scene, const Camera& camer
                                          RenderTrace* trace = nullptr);
 
 // Scene file (JSON, docs/frontend.md) to a scene; meshes are loaded relative to the file's folder.
+// The largest scene file read (scenes list objects; meshes are files of their own).
+constexpr size_t kMaxSceneBytes = size_t(16) << 20;
 Scene load_scene(const std::string& path);
 Scene parse_scene(const std::string& text, const std::string& file_name, const std::string& base_folder);
 

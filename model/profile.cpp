@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "input_error.h"
+#include "text_file.h"
 #include "json_lines.h"
 
 namespace rastersim {
@@ -146,11 +147,7 @@ std::string set_profile_key(Profile& p, const std::string& key, const std::strin
 }
 
 void load_profile_file(Profile& profile, const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot open profile file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  load_profile_text(profile, buffer.str(), path);
+  load_profile_text(profile, read_text_file(path, "a profile file", kMaxProfileBytes), path);
 }
 
 void load_profile_text(Profile& profile, const std::string& text, const std::string& file_name) {

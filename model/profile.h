@@ -72,6 +72,8 @@ const std::vector<std::string>& profile_keys();
 // sentence, or an empty string on success.
 std::string set_profile_key(Profile& profile, const std::string& key, const std::string& value);
 
+// A profile file is a few hundred bytes; anything beyond this is not one.
+constexpr size_t kMaxProfileBytes = size_t(1) << 20;
 // Reads a JSON profile file over `profile`. Throws InputError naming file, line and problem.
 void load_profile_file(Profile& profile, const std::string& path);
 // The same for the JSON text of a profile; `file_name` names it in errors.

@@ -523,6 +523,34 @@ TEST(Cli, CameraFlagsOnAScreenSpaceInputAreRefused) {
   EXPECT_EQ(dir.listing(), std::set<std::string>{"one.tri"});
 }
 
+// An input linked to /dev/zero, or a line of millions of tokens, once read for a minute into
+// gigabytes and ended in bad_alloc with no file or line: each input kind has a bound.
+TEST(Cli, EndlessOrHugeInputsEndWithAnErrorNamingTheFile) {
+  ScratchDir dir;
+  for (const char* name : {"zero.tri", "zero.json", "zero.obj"})
+    ASSERT_EQ(symlink("/dev/zero", dir.path(name).c_str()), 0);
+  std::string line;
+  for (int i = 0; i < 600000; ++i) line += "1 ";  // 1.2 MB on one line
+  dir.write("long.tri", line + "\n");
+  struct Case {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  for (const Case& c : std::vector<Case>{
+           {{"render", "zero.tri"}, "zero.tri:1: the line is longer than 1 MiB"},
+           {{"render", "long.tri"}, "long.tri:1: the line is longer than 1 MiB"},
+           {{"render", "--scene", "fan", "--profile", "zero.json"}, "zero.json: is longer than 1 MiB"},
+           {{"render", "zero.json"}, "zero.json: is longer than 16 MiB"},
+           {{"render", "zero.obj"}, "zero.obj: is longer than 256 MiB"}}) {
+    std::vector<std::string> args = c.args;
+    args.insert(args.end(), {"--stats", "s.json"});
+    const RunResult r = run_rastersim(dir, args);
+    EXPECT_EQ(r.exit_code, 2) << c.args.back();
+    EXPECT_TRUE(contains(r.err, c.message)) << r.err;
+  }
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"zero.tri", "zero.json", "zero.obj", "long.tri"}));
+}
+
 // cosim's help once hid its defaults and showed the flag as `--no-directed{false}`.
 TEST(CliRtl, CosimHelpShowsDefaultsAndPlainFlags) {
   ScratchDir dir;

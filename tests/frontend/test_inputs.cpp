@@ -152,7 +152,7 @@ TEST(FrontendObj, ErrorsNameTheLineAndTheProblem) {
 
 TEST(FrontendObj, FileErrors) {
   const std::string missing = test_util::scratch_path("does-not-exist.obj");
-  expect_input_error([&] { load_obj(missing, profile(), {}); }, missing + ": ", "cannot open OBJ file");
+  expect_input_error([&] { load_obj(missing, profile(), {}); }, missing + ": ", "cannot open an OBJ file");
   const std::string folder = test_util::scratch_path("");
   expect_input_error([&] { load_obj(folder, profile(), {}); }, folder + ": ", "is a directory");
   const std::string bad = write_file("bad-line.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n");

@@ -1,0 +1,29 @@
+#include "text_file.h"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "input_error.h"
+
+namespace rastersim {
+
+std::string read_text_file(const std::string& path, const std::string& what, size_t max_bytes) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not " + what);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "cannot open " + what + ": " + std::strerror(errno));
+  std::string text;
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    if (text.size() + size_t(in.gcount()) > max_bytes)
+      throw InputError(path, 0, "is longer than " + std::to_string(max_bytes / kMiB) + " MiB, more than " + what +
+                                    " can be (is it the right file?)");
+    text.append(chunk, size_t(in.gcount()));
+  }
+  if (in.bad()) throw InputError(path, 0, "cannot read " + what);
+  return text;
+}
+
+}  // namespace rastersim
