@@ -7,6 +7,7 @@
 #include "inputs.h"
 #include "outputs.h"
 #include "model/input_error.h"
+#include "model/pipeline.h"
 #ifdef RASTERSIM_HAVE_VECTORS
 #include "testbench/cosim_cases.h"
 #include "testbench/vectors/package.h"
@@ -72,6 +73,22 @@ int run_vectors(const VectorsOptions& o) {
     if (o.input.empty()) source = {"scene", o.scene.empty() ? "default" : o.scene, 0, 0};
     else source = {"file", std::filesystem::path(o.input).filename().string(), 0, 0};
     for (const ScreenTriangle& t : load_input(o.input, o.scene, profile)) triangles.push_back(snap(t, profile));
+  }
+  // The package's size is known only once the frame is rendered: count its fragments with the
+  // model first (no trace: little memory) and refuse, before anything is held, a frame beyond the
+  // limit.
+  {
+    Pipeline count(profile);
+    for (size_t t = 0; t < triangles.size(); ++t) {
+      count.submit(triangles[t]);
+      const int64_t fragments = count.stats().fragments;
+      if (fragments > vectors::kMaxPackageFragments)
+        throw InputError("the package would hold more than " + std::to_string(vectors::kMaxPackageFragments) +
+                         " fragments, the limit (" + std::to_string(fragments) + " already by triangle " +
+                         std::to_string(t) + " of " + std::to_string(triangles.size()) +
+                         "; a package holds every expected fragment, about 175 bytes each in memory while it is "
+                         "built): give fewer triangles or a smaller screen, or split the input into several packages");
+    }
   }
   vectors::PackageOptions options;
   options.rtl_path = o.rtl_path;

@@ -98,6 +98,17 @@ TEST_P(CliVectorsBadInput, ExitsTwoWithMessageAndWritesNothing) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir.path("full")), fs::directory_iterator()), 1);
 }
 
+// `vectors --random 5000` at 640 x 480 once grew to gigabytes and died in bad_alloc: a frame beyond
+// the package's fragment limit is refused before anything is held, saying which limit and why.
+TEST(CliVectors, AFrameBeyondTheFragmentLimitIsRefusedUpFront) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"vectors", "--random", "20000", "--out", "pkg"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(contains(r.err, "the package would hold more than 8000000 fragments, the limit")) << r.err;
+  EXPECT_TRUE(contains(r.err, "of 20000;")) << r.err;
+  EXPECT_TRUE(dir.listing().empty());
+}
+
 INSTANTIATE_TEST_SUITE_P(
     AllKinds, CliVectorsBadInput,
     ::testing::Values(
