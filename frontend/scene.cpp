@@ -157,7 +157,17 @@ class SceneReader {
     if (!doc.contains("objects")) fail("", "the scene has no 'objects' array");
     const json& objects = doc["objects"];
     if (!objects.is_array() || objects.empty()) fail("/objects", "objects must be a non-empty array of objects");
-    for (size_t i = 0; i < objects.size(); ++i) scene.objects.push_back(read_object(objects[i], JsonLines::child("/objects", i)));
+    size_t triangles = 0;
+    for (size_t i = 0; i < objects.size(); ++i) {
+      const std::string pointer = JsonLines::child("/objects", i);
+      scene.objects.push_back(read_object(objects[i], pointer));
+      // Bounded before the next object is made: 20 spheres of 1024 x 1024 once grew to 3.9 GB.
+      triangles += scene.objects.back().mesh.triangles.size();
+      if (triangles > kMaxSceneTriangles)
+        fail(pointer, "the scene has " + std::to_string(triangles) + " triangles with this object, more than the " +
+                          std::to_string(kMaxSceneTriangles) + " a scene may have: lower its surfaces' counts "
+                          "(segments, rings, ...) or split the scene");
+    }
     return scene;
   }
 

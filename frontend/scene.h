@@ -42,6 +42,9 @@ std::vector<ScreenTriangle> render_scene(const Scene& scene, const Camera& camer
                                          RenderTrace* trace = nullptr);
 
 // Scene file (JSON, docs/frontend.md) to a scene; meshes are loaded relative to the file's folder.
+// The most triangles a scene may have after tessellation (a surface alone may have 2 million):
+// enough for the bunny 57 times over, and within a few hundred MB through the front end.
+constexpr size_t kMaxSceneTriangles = 4'000'000;
 // The largest scene file read (scenes list objects; meshes are files of their own).
 constexpr size_t kMaxSceneBytes = size_t(16) << 20;
 Scene load_scene(const std::string& path);

@@ -395,6 +395,15 @@ TEST(FrontendScene, ErrorsNameTheLineOfTheKey) {
   expect_input_error([&] { load_scene_file(missing, profile(), {}); }, missing + ": ", "cannot open a scene file");
 }
 
+// Twenty spheres of 1024 x 1024 once grew to 3.9 GB and died in bad_alloc: the scene's triangle
+// count is bounded object by object, and the object that crosses the bound is named.
+TEST(FrontendScene, TriangleCountIsBounded) {
+  const std::string big = "{\"surface\": \"sphere\", \"params\": {\"segments\": 1024, \"rings\": 1024}}";
+  const std::string path = write_file("huge-scene.json", "{\"objects\": [\n" + big + ",\n" + big + ",\n" + big + "]}\n");
+  expect_input_error([&] { load_scene_file(path, profile(), {}); }, path + ":3: ",
+                     "the scene has 4190208 triangles with this object, more than the 4000000 a scene may have");
+}
+
 TEST(FrontendScene, CommandLineOverridesAndIsBlamed) {
   const std::string path = write_file("override.json",
                                       "{\"objects\": [{\"surface\": \"sphere\"}],\n \"camera\": {\n  \"near\": 5}\n}\n");
