@@ -222,9 +222,15 @@ class SceneReader {
       const std::filesystem::path relative = v["mesh"].get<std::string>();
       const std::filesystem::path path = relative.is_absolute() ? relative : std::filesystem::path(base_) / relative;
       std::error_code ec;
-      if (!std::filesystem::is_regular_file(path, ec)) fail(key, "mesh file '" + path.string() + "' not found");
+      if (!std::filesystem::exists(path, ec)) fail(key, "mesh file '" + path.string() + "' not found");
+      if (!std::filesystem::is_regular_file(path, ec))
+        fail(key, "mesh file '" + path.string() + "' is not a regular file (a folder or a device)");
       if (v.contains("params")) fail(pointer + "/params", "params belong to a 'surface', not to a mesh");
-      object.mesh = load_obj_mesh(path.string());
+      try {
+        object.mesh = load_obj_mesh(path.string());
+      } catch (const InputError& e) {  // the mesh's own file and line first, then where it was named
+        throw InputError(std::string(e.what()) + " (the mesh of " + file_ + ":" + std::to_string(lines_.line(key)) + ")");
+      }
     } else {
       object.mesh = read_surface(v, pointer);
     }

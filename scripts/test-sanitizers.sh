@@ -13,4 +13,4 @@ cmake --build "$build" -j"$(nproc)"
 # halt_on_error: a report fails the test; detect_leaks: leaks are findings too.
 export ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:abort_on_error=0
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
-ctest --test-dir "$build" --output-on-failure -j"$(nproc)" -LE 'rtl|formal|fuzz|install'
+ctest --test-dir "$build" --output-on-failure -j"$(nproc)" -LE 'rtl|formal|fuzz|install|hostile'

@@ -391,6 +391,9 @@ TEST(FrontendScene, ErrorsNameTheLineOfTheKey) {
   const std::string path = write_file("mesh-error.json", "{\"objects\": [{\"mesh\": \"broken-mesh.obj\"}]}");
   expect_input_error([&] { load_scene_file(path, profile(), {}); }, test_util::scratch_path("broken-mesh.obj") + ":4: ",
                      "vertex index 7 is out of range");
+  // ... and the scene that named it (the user gave the scene, not the mesh).
+  expect_input_error([&] { load_scene_file(path, profile(), {}); }, test_util::scratch_path("broken-mesh.obj") + ":4: ",
+                     "(the mesh of " + path + ":1)");
   const std::string missing = test_util::scratch_path("no-scene.json");
   expect_input_error([&] { load_scene_file(missing, profile(), {}); }, missing + ": ", "cannot open a scene file");
 }

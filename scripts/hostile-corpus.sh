@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# Hostile inputs under a 4 GiB address-space limit (docs/robustness.md, tests/hostile/README.md):
+# every file of tests/hostile/ and a few generated large ones, as the input of `rastersim render`
+# and (JSON files) as its --profile, must render (exit 0) or be refused (exit 2) with a message
+# naming the file, never end in bad_alloc, a crash or a signal, and write nothing but the --stats
+# output. Prints one line per run and a summary; exit 1 on any violation.
+# Usage: hostile-corpus.sh BUILD_DIR
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="$(cd "${1:?usage: hostile-corpus.sh BUILD_DIR}" && pwd)"
+rastersim="$build/rastersim"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+corpus="$work/corpus"
+mkdir -p "$corpus"
+cp "$root"/tests/hostile/*.tri "$root"/tests/hostile/*.obj "$root"/tests/hostile/*.json "$corpus/"
+
+# The large members, made here rather than kept in the repository.
+ln -s /dev/zero "$corpus/endless.tri"
+ln -s /dev/zero "$corpus/endless.obj"
+ln -s /dev/zero "$corpus/endless.json"
+python3 - "$corpus" <<'PY'
+import json, random, sys
+corpus = sys.argv[1]
+rng = random.Random(20261125)
+open(f"{corpus}/million-tokens.tri", "w").write("1 " * 2_000_000 + "\n")
+open(f"{corpus}/nested-200000.json", "w").write("[" * 200_000 + "]" * 200_000 + "\n")
+for ext in ("tri", "obj", "json"):
+    open(f"{corpus}/random-bytes.{ext}", "wb").write(bytes(rng.getrandbits(8) for _ in range(200_000)))
+sphere = {"surface": "sphere", "params": {"segments": 1024, "rings": 1024}}
+json.dump({"objects": [sphere] * 20}, open(f"{corpus}/twenty-spheres.json", "w"))
+with open(f"{corpus}/many-triangles.tri", "w") as f:
+    for i in range(200_000):
+        x, y = rng.uniform(0, 60), rng.uniform(0, 44)
+        f.write(f"{x} {y} 0.5 {x + 3} {y} 0.5 {x} {y + 3} 0.5\n")
+PY
+
+runs=0
+bad=0
+check() {  # NAME ARGS...: one run in a fresh folder
+  local name="$1"; shift
+  local dir="$work/run"
+  rm -rf "$dir"; mkdir -p "$dir"
+  local code=0
+  (cd "$dir" && prlimit --as=4294967296 "$rastersim" "$@" --stats stats.json > out.txt 2> err.txt) || code=$?
+  runs=$((runs + 1))
+  local message
+  message="$(head -c 160 "$dir/err.txt" | head -1)"
+  local problem=""
+  if [ "$code" -ne 0 ] && [ "$code" -ne 2 ]; then problem="exit $code"
+  elif grep -q "bad_alloc\|std::\|terminate called\|Sanitizer" "$dir/err.txt"; then problem="an internal error"
+  elif [ "$code" -eq 2 ] && ! grep -q "^rastersim: .*$name" "$dir/err.txt"; then problem="a message not naming $name"
+  fi
+  local extra
+  extra="$(cd "$dir" && ls -A | grep -v '^out.txt$\|^err.txt$\|^stats.json$' || true)"
+  [ -n "$extra" ] && problem="${problem:+$problem, }wrote $extra"
+  [ "$code" -eq 2 ] && [ -e "$dir/stats.json" ] && problem="${problem:+$problem, }a partial stats.json"
+  if [ -n "$problem" ]; then
+    bad=$((bad + 1))
+    echo "FAIL $* -> $problem: $message"
+  else
+    echo "ok   exit $code  $*  ${message:0:110}"
+  fi
+}
+
+for f in "$corpus"/*; do
+  name="$(basename "$f")"
+  check "$name" render "$f" --width 64 --height 48
+  case "$name" in
+    *.json) check "$name" render --scene fan --width 64 --height 48 --profile "$f" ;;
+  esac
+done
+echo "hostile-corpus: $runs runs, $bad violations"
+[ "$bad" -eq 0 ]
