@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Hostile inputs under a 4 GiB address-space limit (docs/robustness.md, tests/hostile/README.md):
-# every file of tests/hostile/ and a few generated large ones, as the input of `rastersim render`
+# every file of tests/hostile/, every other input file in tests/ and docs/examples/, and a few
+# generated large ones, as the input of `rastersim render`
 # and (JSON files) as its --profile, must render (exit 0) or be refused (exit 2) with a message
 # naming the file, never end in bad_alloc, a crash or a signal, and write nothing but the --stats
 # output. Prints one line per run and a summary; exit 1 on any violation.
@@ -14,6 +15,10 @@ trap 'rm -rf "$work"' EXIT
 corpus="$work/corpus"
 mkdir -p "$corpus"
 cp "$root"/tests/hostile/*.tri "$root"/tests/hostile/*.obj "$root"/tests/hostile/*.json "$corpus/"
+# And every other input file kept in the repository (the fuzzers' seeds, the docs' examples).
+for f in $(cd "$root" && find tests/fuzz/corpus docs/examples -name '*.tri' -o -name '*.obj' -o -name '*.json'); do
+  cp "$root/$f" "$corpus/$(echo "$f" | tr '/' '_')"
+done
 
 # The large members, made here rather than kept in the repository.
 ln -s /dev/zero "$corpus/endless.tri"
