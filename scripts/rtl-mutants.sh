@@ -8,7 +8,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(cd "${1:?usage: rtl-mutants.sh BUILD_DIR [mutant ...]}" && pwd)"
 shift
 mutants=("$@")
-[ ${#mutants[@]} -eq 0 ] && mutants=(edge_compare z_adder_carry hazard_stall
+[ ${#mutants[@]} -eq 0 ] && mutants=(edge_compare walker_backpressure z_adder_carry hazard_stall
                                      serial_floor serial_remainder_correction serial_multiplier_bits
                                      serial_bias_carry setup_slot_counter setup_floor_correction setup_missing_step
                                      setup_credit_count setup_fifo_empty setup_edge_sign)
@@ -18,6 +18,10 @@ declare -A file from to params
 file[edge_compare]=scanline_walker.sv
 from[edge_compare]='!edge_value[0][EB-1]'
 to[edge_compare]='(edge_value[0] > 0)'            # edge test E >= 0 becomes E > 0
+file[walker_backpressure]=scanline_walker.sv
+from[walker_backpressure]='wire advance = state == PIXEL && (frag_ready || !frag_valid);'
+to[walker_backpressure]='wire advance = state == PIXEL;'  # the walker ignores the z-buffer's back-pressure
+params[walker_backpressure]="-GSETUP_INTERVAL=4"  # back-to-back triangles: hazard stalls happen
 file[z_adder_carry]=plane_register.sv
 from[z_adder_carry]='value <= value + step_x_q;'
 to[z_adder_carry]='value <= value + step_x_q + 1'"'"'b1;'  # carry-in of the x-step adder flipped
