@@ -1,8 +1,8 @@
 /* The golden model as a scoreboard, in C (docs/library.md): make a pipeline from a profile, submit
  * triangles one at a time, read back each triangle's setup record, fragments and cycle record, and
  * the buffers. Every call returns RASTERSIM_OK or an error code, with the reason in
- * rastersim_last_error(); no call aborts or throws. The C++ model headers (model/pipeline.h) are
- * the richer interface; this one is stable and is what DPI-C and Python bind to. */
+ * rastersim_last_error(); no call aborts or throws. rastersim.hpp wraps it for C++; DPI-C and
+ * Python bind to it. The model's own headers (model/pipeline.h) are richer but follow the model. */
 #ifndef RASTERSIM_H
 #define RASTERSIM_H
 
@@ -74,6 +74,10 @@ const char* rastersim_last_error(void);
 /* A pipeline for one frame at the profile's settings: JSON text as a profile file holds it (keys
  * absent keep their defaults; NULL or "" is the default profile). */
 int rastersim_create(const char* profile_json, rastersim_pipeline** pipeline);
+/* The same from profile fields: keys[i] set to values[i] as the command line's flags take them
+ * ("width" "64", "traversal" "bbox", "depth_clear" "max"); the others keep their defaults. */
+int rastersim_create_from_fields(const char* const keys[], const char* const values[], size_t count,
+                                 rastersim_pipeline** pipeline);
 void rastersim_destroy(rastersim_pipeline* pipeline);
 /* Starts a new frame: cleared buffers, cycle 0, no triangles. */
 int rastersim_reset(rastersim_pipeline* pipeline);

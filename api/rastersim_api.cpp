@@ -108,6 +108,26 @@ int rastersim_create(const char* profile_json, rastersim_pipeline** pipeline) {
   });
 }
 
+int rastersim_create_from_fields(const char* const keys[], const char* const values[], size_t count,
+                                 rastersim_pipeline** pipeline) {
+  if (!pipeline) return null_argument("pipeline");
+  *pipeline = nullptr;
+  if (count > 0 && (!keys || !values)) return null_argument(!keys ? "keys" : "values");
+  return guarded([&] {
+    auto p = std::make_unique<rastersim_pipeline>();
+    for (size_t i = 0; i < count; ++i) {
+      if (!keys[i] || !values[i]) return null_argument(("field " + std::to_string(i)).c_str());
+      const std::string error = rastersim::set_profile_key(p->profile, keys[i], values[i]);
+      if (!error.empty()) return fail(RASTERSIM_ERROR_INPUT, "profile field " + std::string(keys[i]) + ": " + error);
+    }
+    const std::vector<std::string> errors = rastersim::validate(p->profile);
+    if (!errors.empty()) return fail(RASTERSIM_ERROR_INPUT, "profile: " + errors.front());
+    p->start_frame();
+    *pipeline = p.release();
+    return int(RASTERSIM_OK);
+  });
+}
+
 void rastersim_destroy(rastersim_pipeline* pipeline) { delete pipeline; }
 
 int rastersim_reset(rastersim_pipeline* pipeline) {

@@ -37,7 +37,26 @@ uint8_t channel(int v) {
 
 class Pipeline {
  public:
-  explicit Pipeline(const std::string& profile_json) { check(rastersim_create(profile_json.c_str(), &p_)); }
+  Pipeline(const std::string& profile_json, const py::kwargs& fields) {
+    if (fields.empty()) {
+      check(rastersim_create(profile_json.c_str(), &p_));
+      return;
+    }
+    if (!profile_json.empty()) {
+      PyErr_SetString(error_type, "give a profile as JSON text or as fields, not both");
+      throw py::error_already_set();
+    }
+    // Fields as the command line's flags take them: numbers and booleans as their text.
+    std::vector<std::string> keys, values;
+    for (const auto& [key, value] : fields) {
+      keys.push_back(py::str(key));
+      values.push_back(py::isinstance<py::bool_>(value) ? (value.cast<bool>() ? "true" : "false")
+                                                         : std::string(py::str(value)));
+    }
+    std::vector<const char*> key_ptrs, value_ptrs;
+    for (size_t i = 0; i < keys.size(); ++i) key_ptrs.push_back(keys[i].c_str()), value_ptrs.push_back(values[i].c_str());
+    check(rastersim_create_from_fields(key_ptrs.data(), value_ptrs.data(), keys.size(), &p_));
+  }
   ~Pipeline() { rastersim_destroy(p_); }
   Pipeline(const Pipeline&) = delete;
   Pipeline& operator=(const Pipeline&) = delete;
@@ -170,8 +189,9 @@ PYBIND11_MODULE(rastersim, m) {
   m.attr("FRAGMENT_COLUMNS") = py::make_tuple("tri", "x", "y", "z", "pass", "r", "g", "b", "cycle");
   m.def("version", &rastersim_version, "the release and the commit the library was built from");
   py::class_<Pipeline>(m, "Pipeline", "one frame through setup, walker, Z adder and z-buffer")
-      .def(py::init<const std::string&>(), py::arg("profile_json") = "",
-           "a pipeline at a profile given as JSON text (absent keys keep their defaults)")
+      .def(py::init<const std::string&, const py::kwargs&>(), py::arg("profile_json") = "",
+           "a pipeline at a profile given as JSON text or as fields (Pipeline(width=64, traversal='bbox')); "
+           "absent keys keep their defaults")
       .def("reset", &Pipeline::reset, "start a new frame: cleared buffers, cycle 0, no triangles")
       .def("submit_screen", &Pipeline::submit_screen, py::arg("vertices"),
            "one triangle of three (x, y, z, r, g, b) vertices in screen space; returns its index")

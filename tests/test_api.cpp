@@ -1,6 +1,7 @@
 // The C API (api/rastersim.h): the same results as the model's Pipeline, checked field by field,
 // and every misuse an error code with a message, never a crash.
 #include "api/rastersim.h"
+#include "api/rastersim.hpp"
 
 #include <gtest/gtest.h>
 
@@ -181,6 +182,67 @@ TEST(Api, MisuseIsAnErrorWithAMessage) {
   EXPECT_EQ(rastersim_submit_screen(nullptr, v.data(), nullptr), RASTERSIM_ERROR_ARGUMENT);
   EXPECT_EQ(std::string(rastersim_last_error()), "pipeline is NULL");
   EXPECT_NE(std::string(rastersim_version()).find("0.1.0"), std::string::npos);
+}
+
+// A profile from fields is the profile of the same JSON; a bad field names itself.
+TEST(Api, FieldsMakeTheSameProfileAsJson) {
+  const char* keys[] = {"width", "height", "memory_latency", "setup_interval"};
+  const char* values[] = {"64", "48", "3", "2"};
+  rastersim_pipeline* from_fields = nullptr;
+  ASSERT_EQ(rastersim_create_from_fields(keys, values, 4, &from_fields), RASTERSIM_OK) << rastersim_last_error();
+  Handle from_json;
+  const char* a = nullptr;
+  const char* b = nullptr;
+  ASSERT_EQ(rastersim_profile_json(from_fields, &a), RASTERSIM_OK);
+  ASSERT_EQ(rastersim_profile_json(from_json.p, &b), RASTERSIM_OK);
+  EXPECT_EQ(std::string(a), std::string(b));
+  rastersim_destroy(from_fields);
+  const char* bad_keys[] = {"width", "traversal"};
+  const char* bad_values[] = {"64", "diagonal"};
+  rastersim_pipeline* p = nullptr;
+  EXPECT_EQ(rastersim_create_from_fields(bad_keys, bad_values, 2, &p), RASTERSIM_ERROR_INPUT);
+  EXPECT_EQ(p, nullptr);
+  EXPECT_NE(std::string(rastersim_last_error()).find("profile field traversal"), std::string::npos)
+      << rastersim_last_error();
+  const char* unknown[] = {"widht"};
+  EXPECT_EQ(rastersim_create_from_fields(unknown, values, 1, &p), RASTERSIM_ERROR_INPUT);
+  EXPECT_NE(std::string(rastersim_last_error()).find("widht"), std::string::npos) << rastersim_last_error();
+}
+
+// The C++ layer (rastersim.hpp): the same results as the C calls, errors as a Status with the message.
+TEST(Api, CppLayerGivesTheSameResultsAndStatusMessages) {
+  Scoreboard model;
+  ASSERT_TRUE(model.create(std::map<std::string, std::string>{{"width", "64"}, {"height", "48"},
+                                                              {"memory_latency", "3"}, {"setup_interval", "2"}}));
+  Handle h;
+  const std::vector<rastersim_screen_vertex> v = triangle_vertices();
+  int64_t index = -1;
+  ASSERT_TRUE(model.submit(Scoreboard::ScreenTriangle{v[0], v[1], v[2]}, &index));
+  ASSERT_EQ(rastersim_submit_screen(h.p, v.data(), nullptr), RASTERSIM_OK);
+  std::vector<rastersim_fragment> fragments;
+  ASSERT_TRUE(model.fragments(index, fragments));
+  ASSERT_GT(fragments.size(), 100u);
+  for (size_t k = 0; k < fragments.size(); ++k) {
+    rastersim_fragment f;
+    ASSERT_EQ(rastersim_read_fragment(h.p, 0, int64_t(k), &f), RASTERSIM_OK);
+    EXPECT_EQ(fragments[k].x, f.x);
+    EXPECT_EQ(fragments[k].z, f.z);
+    EXPECT_EQ(fragments[k].cycle, f.cycle);
+  }
+  int64_t a = 0, b = 0;
+  ASSERT_TRUE(model.frame_cycles(a));
+  ASSERT_EQ(rastersim_frame_cycles(h.p, &b), RASTERSIM_OK);
+  EXPECT_EQ(a, b);
+  rastersim_triangle_record r;
+  const Status missing = model.triangle(5, r);
+  EXPECT_FALSE(missing);
+  EXPECT_EQ(missing.code, RASTERSIM_ERROR_ARGUMENT);
+  EXPECT_NE(missing.message.find("was not submitted"), std::string::npos) << missing.message;
+  Scoreboard bad;
+  const Status refused = bad.create("{\"width\": 0}");
+  EXPECT_EQ(refused.code, RASTERSIM_ERROR_INPUT);
+  EXPECT_NE(refused.message.find("width"), std::string::npos) << refused.message;
+  EXPECT_FALSE(bad.reset());  // no pipeline: an error, not a crash
 }
 
 }  // namespace

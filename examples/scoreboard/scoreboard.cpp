@@ -1,24 +1,20 @@
-// The golden model as a scoreboard, from C++ with the model's own headers (docs/library.md): the
-// same as scoreboard.c, through rastersim::Pipeline instead of the C API.
+// The golden model as a scoreboard, from C++ (docs/library.md): the same as scoreboard.c, through
+// rastersim::Scoreboard (rastersim/rastersim.hpp), the C API's C++ face: every call a Status.
 // Usage: scoreboard_cpp PROFILE.json TRIANGLES.tri FRAGMENTS.csv BUFFERS.txt
+#include <rastersim/rastersim.hpp>
+
 #include <cstdio>
-#include <exception>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "model/pipeline.h"
-#include "model/profile.h"
-#include "model/triangle.h"
-
 namespace {
 
-// Collects every fragment the z-buffer accepts, in order.
-struct Collect : rastersim::FragmentSink {
-  std::vector<rastersim::Fragment> fragments;
-  void on_fragment(const rastersim::Fragment& f) override { fragments.push_back(f); }
-};
+int fail(const rastersim::Status& s, const std::string& where) {
+  std::fprintf(stderr, "scoreboard_cpp: %s: %s\n", where.c_str(), s.message.c_str());
+  return 2;
+}
 
 }  // namespace
 
@@ -27,58 +23,58 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: scoreboard_cpp PROFILE.json TRIANGLES.tri FRAGMENTS.csv BUFFERS.txt\n");
     return 2;
   }
-  try {
-    rastersim::Profile profile;
-    rastersim::load_profile_file(profile, argv[1]);
-    rastersim::Pipeline pipeline(profile);
-    Collect collect;
-    std::vector<rastersim::TriangleRecord> records;
-    pipeline.set_fragment_sink(&collect);
-    pipeline.set_triangle_log(&records);
+  std::ifstream profile_file(argv[1]);
+  std::stringstream profile;
+  profile << profile_file.rdbuf();
+  rastersim::Scoreboard model;
+  if (rastersim::Status s = model.create(profile.str()); !s) return fail(s, argv[1]);
 
-    std::ifstream tri(argv[2]);
-    std::string line;
-    for (int number = 1; std::getline(tri, line); ++number) {
-      std::istringstream in(line.substr(0, line.find('#')));
-      std::vector<double> v;
-      for (double value; in >> value;) v.push_back(value);
-      if (v.empty()) continue;
-      if (v.size() != 9 && v.size() != 12 && v.size() != 18) {
-        std::fprintf(stderr, "scoreboard_cpp: %s:%d: %zu values, expected 9, 12 or 18\n", argv[2], number, v.size());
-        return 2;
-      }
-      rastersim::ScreenTriangle t;
-      for (int k = 0; k < 3; ++k) {
-        const size_t c = v.size() == 9 ? 0 : v.size() == 12 ? 9 : size_t(9 + 3 * k);
-        t.v[k].x = v[size_t(3 * k)], t.v[k].y = v[size_t(3 * k + 1)], t.v[k].z = v[size_t(3 * k + 2)];
-        if (c) t.v[k].color = {uint8_t(v[c]), uint8_t(v[c + 1]), uint8_t(v[c + 2])};
-      }
-      const std::string problem = rastersim::check_screen_triangle(t, profile);
-      if (!problem.empty()) {
-        std::fprintf(stderr, "scoreboard_cpp: %s:%d: %s\n", argv[2], number, problem.c_str());
-        return 2;
-      }
-      pipeline.submit(rastersim::snap(t, profile));
-      const rastersim::TriangleRecord& r = records.back();
-      std::printf("triangle %lld: %s, setup %lld..%lld, walker %lld..%lld, %lld fragments\n", (long long)r.index,
-                  rastersim::to_string(r.status), (long long)r.setup_accept, (long long)r.setup_done,
-                  (long long)r.walker_load, (long long)r.walker_end, (long long)r.fragments);
+  std::ifstream tri(argv[2]);
+  std::ofstream fragments(argv[3]);
+  fragments << "tri,x,y,z,pass,r,g,b,cycle\n";
+  std::string line;
+  for (int number = 1; std::getline(tri, line); ++number) {
+    std::istringstream in(line.substr(0, line.find('#')));
+    std::vector<double> v;
+    for (double value; in >> value;) v.push_back(value);
+    if (v.empty()) continue;
+    if (v.size() != 9 && v.size() != 12 && v.size() != 18) {
+      std::fprintf(stderr, "scoreboard_cpp: %s:%d: %zu values, expected 9, 12 or 18\n", argv[2], number, v.size());
+      return 2;
     }
-    std::ofstream fragments(argv[3]);
-    fragments << "tri,x,y,z,pass,r,g,b,cycle\n";
-    for (const rastersim::Fragment& f : collect.fragments)
-      fragments << f.tri << ',' << f.x << ',' << f.y << ',' << f.z << ',' << int(f.pass) << ',' << int(f.color.r)
-                << ',' << int(f.color.g) << ',' << int(f.color.b) << ',' << f.cycle << '\n';
-    std::printf("cycles %lld\n", (long long)pipeline.stats().cycles);
-    std::FILE* buffers = std::fopen(argv[4], "w");
-    if (!buffers) return 2;
-    const std::vector<uint32_t>& depth = pipeline.zbuffer().depth();
-    const std::vector<uint32_t>& colour = pipeline.zbuffer().color();
-    for (size_t i = 0; i < depth.size(); ++i) std::fprintf(buffers, "%u %06x\n", depth[i], colour[i]);
-    std::fclose(buffers);
-  } catch (const std::exception& e) {  // the model reports bad input by exceptions
-    std::fprintf(stderr, "scoreboard_cpp: %s\n", e.what());
-    return 2;
+    rastersim::Scoreboard::ScreenTriangle t;
+    for (size_t k = 0; k < 3; ++k) {
+      const size_t c = v.size() == 9 ? 0 : v.size() == 12 ? 9 : 9 + 3 * k;
+      t[k] = {v[3 * k], v[3 * k + 1], v[3 * k + 2], uint8_t(c ? v[c] : 255), uint8_t(c ? v[c + 1] : 255),
+              uint8_t(c ? v[c + 2] : 255)};
+    }
+    int64_t index = 0;
+    if (rastersim::Status s = model.submit(t, &index); !s) return fail(s, std::string(argv[2]) + ":" + std::to_string(number));
+    rastersim_triangle_record r;
+    std::vector<rastersim_fragment> expected;
+    model.triangle(index, r);
+    model.fragments(index, expected);
+    std::printf("triangle %lld: status %d, setup %lld..%lld, walker %lld..%lld, %zu fragments\n", (long long)index,
+                r.status, (long long)r.setup_accept, (long long)r.setup_done, (long long)r.walker_load,
+                (long long)r.walker_end, expected.size());
+    for (const rastersim_fragment& f : expected)
+      fragments << f.triangle << ',' << f.x << ',' << f.y << ',' << f.z << ',' << int(f.pass) << ',' << int(f.r)
+                << ',' << int(f.g) << ',' << int(f.b) << ',' << f.cycle << '\n';
   }
+  int64_t cycles = 0;
+  model.frame_cycles(cycles);
+  std::printf("cycles %lld\n", (long long)cycles);
+  int32_t width = 0, height = 0;
+  model.size(width, height);
+  std::FILE* buffers = std::fopen(argv[4], "w");
+  if (!buffers) return 2;
+  for (int32_t y = 0; y < height; ++y)
+    for (int32_t x = 0; x < width; ++x) {
+      uint32_t depth = 0, rgb = 0;
+      model.depth(x, y, depth);
+      model.color(x, y, rgb);
+      std::fprintf(buffers, "%u %06x\n", depth, rgb);
+    }
+  std::fclose(buffers);
   return 0;
 }

@@ -92,6 +92,16 @@ def test_setup_record_and_reset():
     assert rastersim.version().startswith("0.1.0")
 
 
+def test_profile_from_fields_equals_json():
+    from_fields = rastersim.Pipeline(width=64, height=48, traversal="bbox", depth_write=False)
+    from_json = rastersim.Pipeline('{"width": 64, "height": 48, "traversal": "bbox", "depth_write": false}')
+    assert from_fields.profile == from_json.profile
+    with pytest.raises(rastersim.Error, match="traversal"):
+        rastersim.Pipeline(traversal="diagonal")
+    with pytest.raises(rastersim.Error, match="not both"):
+        rastersim.Pipeline('{"width": 64}', height=48)
+
+
 def test_misuse_raises_an_error_with_a_message():
     with pytest.raises(rastersim.Error, match="width"):
         rastersim.Pipeline('{"width": 5000}')
