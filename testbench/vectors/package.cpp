@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -423,6 +424,29 @@ void check_package_dir(const std::string& out_dir, bool force) {
                      "' is not empty and holds no rastersim-vectors manifest.json; --force replaces only a package");
 }
 
+// Holds back SIGINT, SIGTERM and SIGHUP while alive (or until release()): they are delivered when
+// released.
+class SignalsHeld {
+ public:
+  SignalsHeld() {
+    sigset_t held;
+    sigemptyset(&held);
+    for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&held, s);
+    pthread_sigmask(SIG_BLOCK, &held, &previous_);
+  }
+  ~SignalsHeld() { release(); }
+  void release() {
+    if (holding_) pthread_sigmask(SIG_SETMASK, &previous_, nullptr);
+    holding_ = false;
+  }
+  SignalsHeld(const SignalsHeld&) = delete;
+  SignalsHeld& operator=(const SignalsHeld&) = delete;
+
+ private:
+  sigset_t previous_;
+  bool holding_ = true;
+};
+
 void write_package(const Package& package, const std::string& out_dir, bool force,
                    TemporaryFolderHook temporary_folder) {
   check_package_dir(out_dir, force);
@@ -434,8 +458,12 @@ void write_package(const Package& package, const std::string& out_dir, bool forc
   auto track = [&](const fs::path& path, bool made) {
     if (temporary_folder) temporary_folder(path.string(), made);
   };
+  // The folder is made and reported with SIGINT, SIGTERM and SIGHUP held back, and so is its
+  // rename into place below: a signal between the two steps would leave it behind.
+  SignalsHeld hold;
   const fs::path temp = make_temp_dir(parent, stem + ".tmp");
   track(temp, true);
+  hold.release();
   try {
     for (const PackageFile& f : package.files) {
       const fs::path path = temp / f.path;
@@ -450,6 +478,7 @@ void write_package(const Package& package, const std::string& out_dir, bool forc
     // mkdtemp makes the folder 0700; a package is an ordinary folder.
     fs::permissions(temp, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
                               fs::perms::others_read | fs::perms::others_exec);
+    SignalsHeld hold_rename;
     track(temp, false);  // from here on it is the package (or gone)
     if (exists && !fs::is_empty(out)) {
       const fs::path old = make_temp_dir(parent, stem + ".old");
