@@ -79,8 +79,11 @@ int check_pixel(const rastersim_pipeline* p, int32_t x, int32_t y) {
 }
 
 int submit(rastersim_pipeline* p, const rastersim::SnappedTriangle& tri, int64_t* triangle) {
-  p->first_fragment.push_back(int64_t(p->fragments.size()));
+  const int64_t first = int64_t(p->fragments.size());
   p->pipeline->submit(tri);
+  // Recorded after the submit, so that a triangle the model refuses (an exception) leaves the
+  // per-triangle tables as they were.
+  p->first_fragment.push_back(first);
   p->setups.push_back(p->pipeline->last_setup());
   if (triangle) *triangle = int64_t(p->records.size()) - 1;
   return RASTERSIM_OK;
