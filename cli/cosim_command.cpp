@@ -12,6 +12,7 @@
 #include "outputs.h"
 #ifdef RASTERSIM_HAVE_RTL
 #include "testbench/cosim_cases.h"
+#include "testbench/cosim_coverage.h"
 #include "testbench/rtl_backend.h"
 #endif
 
@@ -102,6 +103,49 @@ std::string junit_xml(const std::vector<FrameResult>& frames, const Profile& pro
   return x.str();
 }
 
+#ifdef RASTERSIM_HAVE_RTL
+// The coverage table: a line per bin with its hits in total and the frames that hit it.
+void print_coverage(std::ostream& out, const std::vector<rtl::CoverageBin>& bins, const rtl::CoverageCounts& hits,
+                    const rtl::CoverageCounts& frames) {
+  out << "functional coverage (hits, frames):\n";
+  for (size_t b = 0; b < bins.size(); ++b) {
+    char line[160];
+    if (bins[b].reachable)
+      std::snprintf(line, sizeof line, "  %-28s %12lld %7lld%s", bins[b].name.c_str(), (long long)hits[b],
+                    (long long)frames[b], hits[b] == 0 ? "  NOT HIT" : "");
+    else
+      std::snprintf(line, sizeof line, "  %-28s %12s %7s  unreachable: ", bins[b].name.c_str(), "-", "-");
+    out << line << (bins[b].reachable ? "" : bins[b].unreachable) << "\n";
+  }
+}
+
+nlohmann::ordered_json coverage_json(const std::vector<rtl::CoverageBin>& bins, const rtl::CoverageCounts& hits,
+                                     const rtl::CoverageCounts& frames,
+                                     const std::vector<std::pair<int64_t, rtl::CoverageCounts>>& per_frame,
+                                     const std::vector<std::string>& holes, bool gated) {
+  nlohmann::ordered_json j;
+  j["gated"] = gated;
+  j["holes"] = holes;
+  j["bins"] = nlohmann::ordered_json::array();
+  for (size_t b = 0; b < bins.size(); ++b) {
+    nlohmann::ordered_json bin = {{"name", bins[b].name},       {"description", bins[b].description},
+                                  {"reachable", bins[b].reachable}, {"hits", hits[b]},
+                                  {"frames", frames[b]}};
+    if (!bins[b].reachable) bin["unreachable"] = bins[b].unreachable;
+    j["bins"].push_back(bin);
+  }
+  // Per frame, only the bins it hit.
+  j["frames"] = nlohmann::ordered_json::array();
+  for (const auto& [k, counts] : per_frame) {
+    nlohmann::ordered_json f = {{"frame", k}, {"hits", nlohmann::ordered_json::object()}};
+    for (size_t b = 0; b < bins.size(); ++b)
+      if (counts[b] > 0) f["hits"][bins[b].name] = counts[b];
+    j["frames"].push_back(f);
+  }
+  return j;
+}
+#endif
+
 }  // namespace
 
 CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
@@ -128,6 +172,11 @@ CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
   cmd->add_flag("--keep-going", o.keep_going, "run every frame even after a divergence");
   cmd->add_option("--replay-dir", o.replay_dir,
                   "folder for the replay files of a divergence (default the working folder)")->type_name("DIR");
+  cmd->add_option("--coverage", o.coverage_out,
+                  "write the functional coverage (bins, reachability, hits in total and per frame) as JSON")
+      ->type_name("FILE");
+  cmd->add_flag_callback("--no-coverage-gate", [&o] { o.coverage_gate = false; },
+                         "exit 0 even when a reachable coverage bin stays at zero (a whole run exits 1 by default)");
   cmd->add_option("--fst", o.fst_out, "write the RTL waveform of every frame (the last one run remains)")
       ->type_name("FILE");
   add_profile_options(*cmd, o.profile);
@@ -155,35 +204,30 @@ int run_cosim(const CosimOptions& o) {
   OutputFiles outputs;
   const std::string junit_temp = o.junit_out.empty() ? "" : outputs.add(o.junit_out, "--junit");
   const std::string fst_temp = o.fst_out.empty() ? "" : add_waveform(outputs, o.fst_out);
+  const std::string coverage_temp = o.coverage_out.empty() ? "" : outputs.add(o.coverage_out, "--coverage");
 
   const std::set<std::string> pinned =
       o.fixed_settings ? std::set<std::string>(rtl::runtime_setting_keys().begin(), rtl::runtime_setting_keys().end())
                        : given_profile_keys(o.profile);
-  std::vector<std::string> varied;
-  for (const std::string& key : rtl::runtime_setting_keys())
-    if (!pinned.count(key)) varied.push_back(key);
   const int max_latency = rtl::built_max_memory_latency(profile);
+  const rtl::CosimPlan plan(profile, pinned, max_latency, o.seed, o.triangles, o.directed);
+  const std::vector<std::string>& varied = plan.varied();
+  const std::vector<rtl::CoverageBin> bins = rtl::coverage_bins(profile, pinned, max_latency);
+  rtl::CoverageCounts total_hits(bins.size(), 0), frames_hit(bins.size(), 0);
+  std::vector<std::pair<int64_t, rtl::CoverageCounts>> frame_hits;
 
-  std::vector<rtl::CosimCase> cases;
-  if (o.directed) cases = rtl::directed_cases(profile, pinned);
-  const int64_t directed = int64_t(cases.size());
+  const int64_t directed = plan.directed_count();
   const bool tty = isatty(STDERR_FILENO) != 0;
   const int64_t total = directed + o.count;
   const int64_t in_shard = total / shard.count + (shard.index < total % shard.count ? 1 : 0);
   std::vector<FrameResult> results;
   int64_t passed = 0, failed = 0, directed_run = 0;
-  // With the JUnit XML on standard output (`--junit -`), the report goes to standard error.
+  // With the JUnit XML or the coverage on standard output, the report goes to standard error.
   std::ostream& info = outputs.writes_stdout() ? std::cerr : std::cout;
   for (int64_t k = shard.index; k < total; k += shard.count) {
     const uint64_t frame_seed = o.seed + uint64_t(k);
-    rtl::CosimCase c;
-    if (k < directed) {
-      c = cases[size_t(k)];
-      ++directed_run;
-    } else {
-      c = rtl::random_case(profile, frame_seed, o.triangles);
-      if (!varied.empty()) c.profile = rtl::random_settings(profile, frame_seed, pinned, max_latency);
-    }
+    rtl::CosimCase c = plan.frame(k);
+    directed_run += k < directed;
     if (!varied.empty() || k < directed) c.name += " (" + settings_summary(c.profile) + ")";
     if (tty)
       std::fprintf(stderr, "\rcosim: %lld / %lld frames, %lld failed (%s)\033[K", (long long)(passed + failed),
@@ -196,6 +240,10 @@ int run_cosim(const CosimOptions& o) {
     const rtl::CosimReport report = rtl::cosim(c.profile, c.triangles, options, prefix);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     results.push_back(FrameResult{k, c.name, seconds, report.passed, report.passed ? "" : report.message()});
+    // What a frame's stimulus reached, from the model's run of it.
+    rtl::CoverageCounts hits = rtl::frame_coverage(c.profile, c.triangles, report.model, max_latency);
+    for (size_t b = 0; b < bins.size(); ++b) total_hits[b] += hits[b], frames_hit[b] += hits[b] > 0;
+    if (!o.coverage_out.empty()) frame_hits.emplace_back(k, std::move(hits));
     if (report.passed) {
       ++passed;
       continue;
@@ -207,10 +255,17 @@ int run_cosim(const CosimOptions& o) {
     if (!o.keep_going) break;
   }
   if (tty) std::fprintf(stderr, "\r\033[K");
+  const std::vector<std::string> holes = rtl::coverage_holes(bins, total_hits);
+  // A shard's frames are a part of the run: only a whole run is held to every reachable bin.
+  const bool gated = o.coverage_gate && shard.count == 1;
   if (!junit_temp.empty()) write_text_file(junit_temp, o.junit_out, junit_xml(results, profile, o));
+  if (!coverage_temp.empty())
+    write_text_file(coverage_temp, o.coverage_out,
+                    coverage_json(bins, total_hits, frames_hit, frame_hits, holes, gated).dump(2) + "\n");
   // The last frame's waveform is kept whether it passed or not: it is what a divergence is debugged with.
   if (!fst_temp.empty() && passed + failed > 0) check_waveform_written(fst_temp, o.fst_out);
-  if (!junit_temp.empty() || (!fst_temp.empty() && passed + failed > 0)) outputs.commit();
+  if (!junit_temp.empty() || !coverage_temp.empty() || (!fst_temp.empty() && passed + failed > 0)) outputs.commit();
+  print_coverage(info, bins, total_hits, frames_hit);
   info << "profile " << profile_summary(profile) << ", " << settings_summary(profile) << "; shard " << o.shard
        << ": " << directed_run << " directed and " << (passed + failed - directed_run) << " random frames of "
        << o.triangles << " triangles";
@@ -218,8 +273,14 @@ int run_cosim(const CosimOptions& o) {
     info << "; random frames draw";
     for (const std::string& key : varied) info << " " << key;
   }
-  info << "\n" << passed << " passed, " << failed << " failed\n";
-  return failed == 0 ? 0 : 1;
+  info << "\n";
+  if (!holes.empty()) {
+    info << "coverage: " << holes.size() << " reachable bin" << (holes.size() == 1 ? "" : "s") << " not hit:";
+    for (const std::string& h : holes) info << " " << h;
+    info << (gated ? "" : shard.count > 1 ? " (a shard: not gated)" : " (--no-coverage-gate)") << "\n";
+  }
+  info << passed << " passed, " << failed << " failed\n";
+  return failed == 0 && (holes.empty() || !gated) ? 0 : 1;
 #endif
 }
 

@@ -1,7 +1,8 @@
 // `rastersim cosim`: directed and constrained-random frames through the model and the RTL in
 // lockstep; the first divergence is reported with a replay command. Frames split deterministically
 // into shards (--shard K/N) and the results go to JUnit XML (--junit), so a batch system can farm a
-// long regression out and merge it.
+// long regression out and merge it. A functional coverage table says which corners the frames
+// reached (--coverage writes it as JSON).
 #pragma once
 
 #include <cstdint>
@@ -24,11 +25,14 @@ struct CosimOptions {
   std::string junit_out;        // JUnit XML of the frames run, when not empty
   std::string replay_dir = ".";
   std::string fst_out;
+  std::string coverage_out;     // the functional coverage as JSON, when not empty
+  bool coverage_gate = true;    // a whole run exits 1 when a reachable coverage bin stays at zero
   ProfileOptions profile;
 };
 
 CLI::App* add_cosim_command(CLI::App& app, CosimOptions& options);
-// 0 when every frame agrees, 1 when one diverged; throws InputError for bad usage.
+// 0 when every frame agrees (and, for a whole run, every reachable coverage bin is hit), 1 when one
+// diverged or a reachable bin stayed at zero; throws InputError for bad usage.
 int run_cosim(const CosimOptions& options);
 
 }  // namespace rastersim

@@ -2,7 +2,9 @@
 # Bug injection: copies rtl/ with one bug each, verilates the copy (64 x 48 profile) with
 # testbench/mutant_check.cpp (the setup_* mutants with the pipelined setup, SETUP_INTERVAL 2; the
 # serial_* mutants with the serial setup, SETUP_INTERVAL 0) and requires the co-simulation to catch
-# the bug with a first-divergence report. Usage: rtl-mutants.sh BUILD_DIR [mutant ...]  (BUILD_DIR holds librastersim_rtl.a).
+# the bug with a first-divergence report: first with the frames of `rastersim cosim --count 100`
+# (directed, coverage and random frames), then with more suites unless the mutant is marked
+# --cosim-only. Usage: rtl-mutants.sh BUILD_DIR [mutant ...]  (BUILD_DIR holds librastersim_rtl.a).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(cd "${1:?usage: rtl-mutants.sh BUILD_DIR [mutant ...]}" && pwd)"
@@ -13,8 +15,10 @@ mutants=("$@")
                                      serial_bias_carry setup_slot_counter setup_floor_correction setup_missing_step
                                      setup_credit_count setup_fifo_empty setup_edge_sign)
 
-# name -> file, text to replace, replacement (fixed strings); params: extra verilator -G settings.
-declare -A file from to params
+# name -> file, text to replace, replacement (fixed strings); params: extra verilator -G settings;
+# check: mutant_check's mode (--cosim-only: the frames of `rastersim cosim --count 100` must catch it).
+declare -A file from to params check
+max_latency=8
 file[edge_compare]=scanline_walker.sv
 from[edge_compare]='!edge_value[0][EB-1]'
 to[edge_compare]='(edge_value[0] > 0)'            # edge test E >= 0 becomes E > 0
@@ -22,6 +26,7 @@ file[walker_backpressure]=scanline_walker.sv
 from[walker_backpressure]='wire advance = state == PIXEL && (frag_ready || !frag_valid);'
 to[walker_backpressure]='wire advance = state == PIXEL;'  # the walker ignores the z-buffer's back-pressure
 params[walker_backpressure]="-GSETUP_INTERVAL=4"  # back-to-back triangles: hazard stalls happen
+check[walker_backpressure]=--cosim-only  # once it survived 100 random frames; the coverage frames reach hazards
 file[z_adder_carry]=plane_register.sv
 from[z_adder_carry]='value <= value + step_x_q;'
 to[z_adder_carry]='value <= value + step_x_q + 1'"'"'b1;'  # carry-in of the x-step adder flipped
@@ -84,7 +89,7 @@ PY
   echo "mutant $m: ${file[$m]}: '${from[$m]}' -> '${to[$m]}'"
   if ! verilator --cc --exe --build -j 2 -Wno-fatal -Wno-lint -Wno-style --x-assign unique --x-initial unique \
       -I"$dir/rtl" "$dir"/rtl/*.sv --top-module rastersim_top --prefix Vmutant -Mdir "$dir/obj" \
-      -GWIDTH=64 -GHEIGHT=48 -GSUBPIXEL_BITS=4 -GZ_BITS=24 -GMAX_MEMORY_LATENCY=8 ${params[$m]:-} --trace-fst \
+      -GWIDTH=64 -GHEIGHT=48 -GSUBPIXEL_BITS=4 -GZ_BITS=24 -GMAX_MEMORY_LATENCY=$max_latency ${params[$m]:-} --trace-fst \
       "$root/testbench/mutant_check.cpp" -o mutant_check \
       -CFLAGS "-std=gnu++17 -O1 -I$root -isystem $build/testbench" \
       -LDFLAGS "$build/testbench/librastersim_rtl.a $build/librastersim_model.a" > "$dir/build.log" 2>&1; then
@@ -92,7 +97,7 @@ PY
   fi
   replays="$build/rtl-mutants/$m"
   mkdir -p "$replays"
-  if "$dir/obj/mutant_check" "$replays"; then
+  if "$dir/obj/mutant_check" "$replays" "$max_latency" ${check[$m]:-}; then
     echo "mutant $m: caught"
   else
     echo "mutant $m: NOT caught"; status=1

@@ -1,7 +1,10 @@
 #include "testbench/cosim_cases.h"
 
 #include <algorithm>
+#include <cmath>
 #include <random>
+
+#include "model/widths.h"
 
 namespace rastersim::rtl {
 namespace {
@@ -226,6 +229,116 @@ std::vector<CosimCase> directed_cases(const Profile& profile, const std::set<std
     }
   }
   return cases;
+}
+
+std::vector<CosimCase> coverage_cases(const Profile& profile, const std::set<std::string>& pinned,
+                                      int max_memory_latency) {
+  Generator g(profile, 54321);
+  auto free = [&](const char* key) { return pinned.count(key) == 0; };
+  std::vector<CosimCase> cases;
+  const int64_t one = int64_t(1) << profile.subpixel_bits;
+  const int64_t x_lo = -profile.width * one, x_hi = 2 * profile.width * one;
+  const int64_t y_lo = -profile.height * one, y_hi = 2 * profile.height * one;
+  // A triangle covering the whole screen with vertices on the guard band's limits: apex at
+  // (W/2, -H), base on y = 2H from x = -W to 2W (its sides cross y = 0 at x = 0 and x = W).
+  auto screen_cover = [&](bool reversed) {
+    const int64_t apex_x = profile.width * one / 2;
+    return reversed ? g.triangle({apex_x, y_lo, x_lo, y_hi, x_hi, y_hi}) : g.triangle({apex_x, y_lo, x_hi, y_hi, x_lo, y_hi});
+  };
+  // Whole-screen triangles of each winding (one is drawn whatever the cull mode; with back culling
+  // the other is culled), each followed by tiny triangles that fill the record FIFO while the
+  // walker crosses the screen.
+  auto fill = [&](const std::string& name, const Profile& p) {
+    CosimCase c{"coverage " + name, {}, p};
+    for (const bool reversed : {false, true}) {
+      c.triangles.push_back(screen_cover(reversed));
+      for (int i = 0; i < 20; ++i) c.triangles.push_back(g.tiny());
+    }
+    cases.push_back(std::move(c));
+  };
+  // With the FIFO depth free, depth 2 and depth 1: even the serial unit fills two records while
+  // the walker crosses a 64 x 48 screen.
+  Profile culling = profile;
+  if (free("cull")) culling.cull = CullMode::Back;  // one of the two whole-screen triangles is culled
+  if (free("setup_fifo_depth")) culling.setup_fifo_depth = 2;
+  fill("guard band limits and a full record FIFO", culling);
+  if (free("setup_fifo_depth")) {
+    Profile p = profile;
+    p.setup_fifo_depth = 1;
+    fill("guard band limits and a full record FIFO of depth 1", p);
+  }
+  // Hazards at the smallest and the largest memory latency the RTL is built for, with each
+  // traversal the run can use: a walk ending on pixel P, then one starting on P right after it. A
+  // cover triangle walked first gives the setup unit time to have both records ready (the serial
+  // unit takes far longer for a record than the walker for a small triangle), so the second walk
+  // follows the first without a gap; a hazard then needs the latency to outlast the walker's load
+  // cycle, and with span its row cycle too.
+  const SetupTiming timing = setup_timing(profile);
+  const int64_t per_record = timing.interval > 0 ? timing.interval : timing.drawn_latency + 1;
+  const int64_t needed = 2 * (timing.drawn_latency + per_record) + 64;  // cover walk, cycles
+  const int64_t leg = std::min<int64_t>(std::min(profile.width, profile.height),
+                                        int64_t(std::ceil(std::sqrt(2.0 * double(needed)))));
+  const bool whole_screen = needed >= int64_t(profile.width) * profile.height / 2;
+  const int cx = std::clamp(profile.width / 2, std::min(21, profile.width - 1), std::max(0, profile.width - 3));
+  const int cy = std::clamp(profile.height / 2, std::min(21, profile.height - 1), std::max(0, profile.height - 3));
+  CosimCase hazards{"", {}, profile};
+  for (int i = 0; i < 5; ++i) {
+    hazards.triangles.push_back(whole_screen ? screen_cover(false) : g.triangle({0, 0, leg * one, 0, 0, leg * one}));
+    const int px = std::clamp(cx + i - 2, 0, profile.width - 1);
+    hazards.triangles.push_back(g.ending_at(px, cy));
+    hazards.triangles.push_back(g.starting_at(px, cy));
+    hazards.triangles.push_back(g.around(px, cy));
+  }
+  if (free("setup_fifo_depth")) hazards.profile.setup_fifo_depth = std::max(2, profile.setup_fifo_depth);
+  std::vector<int> latencies = {profile.memory_latency};
+  if (free("memory_latency")) latencies = {1, max_memory_latency};
+  std::vector<Traversal> traversals = {profile.traversal};
+  if (free("traversal")) traversals = {Traversal::BBox, Traversal::Span};
+  for (const Traversal traversal : traversals) {
+    for (const int latency : latencies) {
+      CosimCase c = hazards;
+      c.name = std::string("coverage hazards, ") + to_string(traversal) + ", memory_latency " + std::to_string(latency);
+      c.profile.traversal = traversal;
+      c.profile.memory_latency = latency;
+      cases.push_back(std::move(c));
+    }
+  }
+  // Every depth function with depth_write flipped (directed_cases draws them with the profile's)
+  // on a buffer cleared to mid-range, so that greater passes too.
+  if (free("depth_func")) {
+    const SnappedTriangle repeated = g.medium();
+    for (int f = 0; f <= int(DepthFunc::Always); ++f) {
+      Profile p = profile;
+      p.depth_func = DepthFunc(f);
+      if (free("depth_write")) p.depth_write = !profile.depth_write;
+      if (free("depth_clear")) p.depth_clear = profile.depth_max() / 2;
+      CosimCase c{std::string("coverage depth ") + to_string(p.depth_func) +
+                      (p.depth_write ? " with depth_write" : " without depth_write"), {}, p};
+      for (int i = 0; i < 12; ++i)
+        c.triangles.push_back(i % 3 == 0 ? repeated : i % 3 == 1 ? g.at_clear_depth(g.tiny()) : g.tiny());
+      cases.push_back(std::move(c));
+    }
+  }
+  return cases;
+}
+
+CosimPlan::CosimPlan(const Profile& profile, const std::set<std::string>& pinned, int max_memory_latency,
+                     uint64_t seed, int triangles, bool directed)
+    : profile_(profile), pinned_(pinned), max_memory_latency_(max_memory_latency), seed_(seed), triangles_(triangles) {
+  if (directed) {
+    directed_ = directed_cases(profile, pinned);
+    for (CosimCase& c : coverage_cases(profile, pinned, max_memory_latency)) directed_.push_back(std::move(c));
+  }
+  for (const std::string& key : runtime_setting_keys())
+    if (!pinned.count(key)) varied_.push_back(key);
+}
+
+CosimCase CosimPlan::frame(int64_t k) const {
+  if (k < directed_count()) return directed_[size_t(k)];
+  const uint64_t frame_seed = seed_ + uint64_t(k);
+  CosimCase c = random_case(profile_, frame_seed, triangles_);
+  if (!varied_.empty()) c.profile = random_settings(profile_, frame_seed, pinned_, max_memory_latency_);
+  return c;
 }
 
 }  // namespace rastersim::rtl

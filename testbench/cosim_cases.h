@@ -35,4 +35,33 @@ Profile random_settings(const Profile& profile, uint64_t seed, const std::set<st
 // `pinned`, they end with one frame per depth function (equal depths, the clear value, overlaps).
 std::vector<CosimCase> directed_cases(const Profile& profile, const std::set<std::string>& pinned = {"depth_func"});
 
+// Directed frames for the corners of the functional coverage (testbench/cosim_coverage.h) that the
+// frames above and the default count of random frames could miss: vertices on the guard band's
+// limits, a record FIFO filled behind a whole-screen triangle, the memory-latency extremes and
+// every depth function with depth_write flipped. Settings in `pinned` stay the profile's.
+std::vector<CosimCase> coverage_cases(const Profile& profile, const std::set<std::string>& pinned,
+                                      int max_memory_latency);
+
+// The frames of a `cosim` run in order: the directed frames and the coverage frames (unless
+// `directed` is false), then random ones; frame k's random triangles, settings and power-on state
+// come from seed + k. The command line and the bug-injection check run the same frames.
+class CosimPlan {
+ public:
+  CosimPlan(const Profile& profile, const std::set<std::string>& pinned, int max_memory_latency, uint64_t seed,
+            int triangles, bool directed);
+  int64_t directed_count() const { return int64_t(directed_.size()); }
+  CosimCase frame(int64_t k) const;
+  // The runtime settings random frames draw (those not pinned).
+  const std::vector<std::string>& varied() const { return varied_; }
+
+ private:
+  Profile profile_;
+  std::set<std::string> pinned_;
+  int max_memory_latency_;
+  uint64_t seed_;
+  int triangles_;
+  std::vector<CosimCase> directed_;
+  std::vector<std::string> varied_;
+};
+
 }  // namespace rastersim::rtl

@@ -273,8 +273,10 @@ std::string write_replay(const std::string& prefix, const Profile& profile,
   for (const SnappedTriangle& t : triangles) {
     ScreenTriangle screen;
     for (int k = 0; k < 3; ++k) {
-      screen.v[k].x = t.v[k].x / scale;
-      screen.v[k].y = t.v[k].y / scale;
+      // A vertex on the guard band's upper limit 2W (2H) comes from an input just below it: the
+      // input must be inside [-W, 2W) and snap to it (floor(x 2^S + 1/2)).
+      screen.v[k].x = (t.v[k].x - (t.v[k].x >= 2 * profile.width * scale ? 0.25 : 0.0)) / scale;
+      screen.v[k].y = (t.v[k].y - (t.v[k].y >= 2 * profile.height * scale ? 0.25 : 0.0)) / scale;
       screen.v[k].z = t.v[k].z / z_max;
       screen.v[k].color = t.v[k].color;
     }

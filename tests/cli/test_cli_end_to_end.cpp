@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <fstream>
 #include <map>
 
 #include "cli_test_support.h"
@@ -461,8 +462,8 @@ TEST(CliRtl, CosimShardsPartitionTheRunAndWriteJunit) {
 // Random frames draw the runtime settings a flag does not pin, from the frame's seed.
 TEST(CliRtl, CosimRandomFramesVaryTheSettingsThatAreNotPinned) {
   ScratchDir dir;
-  const std::vector<std::string> common = {"cosim", "--count", "12", "--no-directed", "--width", "64",
-                                           "--height", "48", "--junit", "j.xml"};
+  const std::vector<std::string> common = {"cosim", "--count", "12", "--no-directed", "--no-coverage-gate",
+                                           "--width", "64", "--height", "48", "--junit", "j.xml"};
   ASSERT_EQ(run_rastersim(dir, common).exit_code, 0);
   std::set<std::string> functions;
   for (const std::string& name : junit_testcases(dir.path("j.xml")))
@@ -480,6 +481,76 @@ TEST(CliRtl, CosimRandomFramesVaryTheSettingsThatAreNotPinned) {
   EXPECT_FALSE(contains(r.out, "draw depth_func")) << r.out;
 }
 
+// `cosim --count 100` at 64x48 reaches every reachable coverage bin: the table says so, the JSON
+// lists each bin with its hits, and the run exits 0.
+TEST(CliRtl, CosimCoverageTableShowsEveryReachableBinHit) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"cosim", "--count", "100", "--width", "64", "--height", "48",
+                                          "--coverage", "coverage.json"});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_TRUE(contains(r.out, "functional coverage (hits, frames):")) << r.out;
+  EXPECT_FALSE(contains(r.out, "NOT HIT")) << r.out;
+  // docs/rtl.md shows an excerpt of this run's table.
+  std::ifstream doc(RASTERSIM_SOURCE_DIR "/docs/rtl.md");
+  std::string line;
+  int shown = 0;
+  for (bool inside = false; std::getline(doc, line);) {
+    if (line == "```text cosim-coverage") inside = true;
+    else if (inside && line == "```") break;
+    else if (inside) {
+      EXPECT_TRUE(contains(r.out, line + "\n")) << "docs/rtl.md: " << line;
+      ++shown;
+    }
+  }
+  EXPECT_GE(shown, 4);
+  const auto j = read_json(dir.path("coverage.json"));
+  EXPECT_TRUE(j["gated"].get<bool>());
+  EXPECT_TRUE(j["holes"].empty());
+  int reachable = 0, unreachable = 0;
+  for (const auto& bin : j["bins"]) {
+    const std::string name = bin["name"].get<std::string>();
+    if (bin["reachable"].get<bool>()) {
+      ++reachable;
+      EXPECT_GT(bin["hits"].get<int64_t>(), 0) << name;
+      EXPECT_GT(bin["frames"].get<int64_t>(), 0) << name;
+      EXPECT_TRUE(contains(r.out, name)) << name;
+    } else {
+      ++unreachable;
+      EXPECT_FALSE(bin["unreachable"].get<std::string>().empty()) << name;
+    }
+  }
+  EXPECT_GE(reachable, 40);
+  EXPECT_EQ(unreachable, 3);  // never passing, always failing, and memory back-pressure on chip
+  // Per frame: the frames of the run, each with the bins it hit; the totals are their sums.
+  std::map<std::string, int64_t> summed;
+  for (const auto& frame : j["frames"])
+    for (const auto& [name, hits] : frame["hits"].items()) summed[name] += hits.get<int64_t>();
+  for (const auto& bin : j["bins"])
+    EXPECT_EQ(summed[bin["name"].get<std::string>()], bin["hits"].get<int64_t>()) << bin["name"];
+}
+
+// A whole run whose frames leave a reachable bin at zero exits 1 and names the bin; the gate can be
+// switched off, and a shard (a part of a run) is not held to it.
+TEST(CliRtl, CosimExitsOneWhenAReachableBinStaysAtZero) {
+  ScratchDir dir;
+  const std::vector<std::string> one = {"cosim", "--count", "1", "--no-directed", "--width", "64", "--height", "48"};
+  RunResult r = run_rastersim(dir, one);
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_TRUE(contains(r.out, "1 passed, 0 failed")) << r.out;
+  EXPECT_TRUE(contains(r.out, "NOT HIT")) << r.out;
+  EXPECT_TRUE(contains(r.out, "reachable bins not hit:")) << r.out;
+  std::vector<std::string> args = one;
+  args.push_back("--no-coverage-gate");
+  r = run_rastersim(dir, args);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_TRUE(contains(r.out, "(--no-coverage-gate)")) << r.out;
+  args = one;
+  args.insert(args.end(), {"--shard", "1/2"});
+  r = run_rastersim(dir, args);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_TRUE(contains(r.out, "(a shard: not gated)")) << r.out;
+}
+
 TEST(CliRtl, CosimRejectsABadShardAndWritesNothing) {
   ScratchDir dir;
   for (const char* shard : {"0/2", "3/2", "1/0", "a/b", "1/2/3"}) {
@@ -494,8 +565,8 @@ TEST(CliRtl, CosimRejectsABadShardAndWritesNothing) {
 // `--junit -`: the XML alone on standard output, the report on standard error.
 TEST(CliRtl, CosimJunitOnStandardOutput) {
   ScratchDir dir;
-  const RunResult r = run_rastersim(dir, {"cosim", "--count", "1", "--no-directed", "--width", "64", "--height", "48",
-                                          "--junit", "-"});
+  const RunResult r = run_rastersim(dir, {"cosim", "--count", "1", "--no-directed", "--no-coverage-gate", "--width",
+                                          "64", "--height", "48", "--junit", "-"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out.rfind("<?xml", 0), 0u) << r.out;
   EXPECT_FALSE(contains(r.out, "passed,")) << r.out;
@@ -613,8 +684,8 @@ TEST(CliRtl, WaveformWrongUsesAreErrorsAndAWaveformIsWrittenWhole) {
     EXPECT_GT(read_text(dir.path(backend + ".fst")).size(), 1000u);
   }
   EXPECT_EQ(dir.listing(), (std::set<std::string>{"rtl.fst", "cosim.fst"})) << "no temporaries left";
-  const RunResult cosim = run_rastersim(dir, {"cosim", "--count", "1", "--no-directed", "--width", "64", "--height",
-                                              "48", "--fst", "frames.fst"});
+  const RunResult cosim = run_rastersim(dir, {"cosim", "--count", "1", "--no-directed", "--no-coverage-gate", "--width",
+                                              "64", "--height", "48", "--fst", "frames.fst"});
   ASSERT_EQ(cosim.exit_code, 0) << cosim.err;
   EXPECT_GT(read_text(dir.path("frames.fst")).size(), 1000u);
   EXPECT_EQ(run_rastersim(dir, {"cosim", "--count", "1", "--width", "64", "--height", "48", "--fst", "-"}).exit_code, 2);

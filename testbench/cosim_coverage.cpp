@@ -1,0 +1,180 @@
+#include "testbench/cosim_coverage.h"
+
+#include "model/triangle_setup.h"
+
+namespace rastersim::rtl {
+namespace {
+
+constexpr DepthFunc kDepthFuncs[] = {DepthFunc::Never,   DepthFunc::Less,     DepthFunc::Equal,  DepthFunc::LEqual,
+                                     DepthFunc::Greater, DepthFunc::NotEqual, DepthFunc::GEqual, DepthFunc::Always};
+
+// The bins in their fixed order; frame_coverage() fills them in the same order.
+enum Fixed : size_t {
+  kTieTop, kTieLeft, kTieBottom, kTieRight, kTieVertex,
+  kDegenerate, kOffscreen, kCulled, kDrawnNoFragment, kGuardBandDrawn, kGuardBandLimit,
+  kHazardBBox, kHazardSpan, kMemoryBackPressure, kFifoFullDepth1, kFifoFullDeep, kFifoEmpty,
+  kLatencyMin, kLatencyMax,
+  kDepthFirst  // then per depth function: write on, write off, pass, fail
+};
+constexpr size_t kPerFunc = 4;
+size_t depth_bin(DepthFunc f, size_t which) { return kDepthFirst + size_t(f) * kPerFunc + which; }
+constexpr size_t kBinCount = kDepthFirst + 8 * kPerFunc;
+
+}  // namespace
+
+std::vector<CoverageBin> coverage_bins(const Profile& p, const std::set<std::string>& pinned, int max_latency) {
+  auto free = [&](const char* key) { return pinned.count(key) == 0; };
+  std::vector<CoverageBin> bins(kBinCount);
+  auto set = [&](size_t k, const char* name, const char* description) {
+    bins[k].name = name;
+    bins[k].description = description;
+  };
+  auto unreachable = [&](size_t k, const std::string& why) {
+    bins[k].reachable = false;
+    bins[k].unreachable = why;
+  };
+  set(kTieTop, "tie_top_edge", "candidate centre exactly on a top edge, inside the others (drawn: top-left rule)");
+  set(kTieLeft, "tie_left_edge", "candidate centre exactly on a left edge, inside the others (drawn)");
+  set(kTieBottom, "tie_bottom_edge", "candidate centre exactly on a bottom edge, inside the others (not drawn)");
+  set(kTieRight, "tie_right_edge", "candidate centre exactly on a right edge, inside the others (not drawn)");
+  set(kTieVertex, "tie_vertex", "candidate centre exactly on two edges at once (a vertex)");
+  set(kDegenerate, "degenerate", "zero-area triangle");
+  set(kOffscreen, "offscreen", "triangle whose box holds no pixel centre of the screen");
+  set(kCulled, "culled", "triangle removed by the cull mode");
+  set(kDrawnNoFragment, "drawn_without_fragment", "drawn triangle that covers no pixel centre");
+  set(kGuardBandDrawn, "guard_band_drawn", "drawn triangle with a vertex outside the screen");
+  set(kGuardBandLimit, "guard_band_limit", "drawn triangle with a vertex on the guard band's limit (-W, 2W, -H or 2H)");
+  set(kHazardBBox, "walker_hazard_stall_bbox", "cycle the walker waited on a read-after-write hazard (bbox)");
+  set(kHazardSpan, "walker_hazard_stall_span", "cycle the walker waited on a read-after-write hazard (span)");
+  set(kMemoryBackPressure, "memory_back_pressure", "cycle the z-buffer waited on a memory that refused a read");
+  set(kFifoFullDepth1, "fifo_full_depth_1", "cycle the setup unit waited for a record credit, setup_fifo_depth 1");
+  set(kFifoFullDeep, "fifo_full_depth_2_up", "cycle the setup unit waited for a record credit, setup_fifo_depth >= 2");
+  set(kFifoEmpty, "fifo_empty", "drawn triangle (not a frame's first) the idle walker waited for");
+  set(kLatencyMin, "memory_latency_1", "fragment at memory_latency 1");
+  set(kLatencyMax, "memory_latency_max", "fragment at the largest memory_latency the RTL is built for");
+  for (const DepthFunc f : kDepthFuncs) {
+    const std::string n = std::string("depth_") + to_string(f);
+    bins[depth_bin(f, 0)] = {n + "_write_on", "fragment tested with depth_write true", true, ""};
+    bins[depth_bin(f, 1)] = {n + "_write_off", "fragment tested with depth_write false", true, ""};
+    bins[depth_bin(f, 2)] = {n + "_pass", "fragment that passed", true, ""};
+    bins[depth_bin(f, 3)] = {n + "_fail", "fragment that failed", true, ""};
+  }
+
+  if (!free("cull") && p.cull == CullMode::None) unreachable(kCulled, "cull is pinned to none");
+  const bool can_bbox = free("traversal") || p.traversal == Traversal::BBox;
+  const bool can_span = free("traversal") || p.traversal == Traversal::Span;
+  const int most_latency = free("memory_latency") ? max_latency : p.memory_latency;
+  // A hazard needs the next triangle's first fragment on the last one's pixel within the latency:
+  // the walker's load cycle (and the span walker's row cycle) come between them.
+  if (!can_bbox) unreachable(kHazardBBox, "traversal is pinned to span");
+  else if (most_latency < 2) unreachable(kHazardBBox, "a hazard needs memory_latency >= 2 with bbox");
+  if (!can_span) unreachable(kHazardSpan, "traversal is pinned to bbox");
+  else if (most_latency < 3) unreachable(kHazardSpan, "a hazard needs memory_latency >= 3 with span");
+  // With one record at a time the serial unit starts the next triangle only once the walker took
+  // the last record, and finishes it long after a small triangle's walk.
+  if (p.setup_interval == 0 && !free("setup_fifo_depth") && p.setup_fifo_depth == 1)
+    for (const size_t k : {kHazardBBox, kHazardSpan})
+      if (bins[k].reachable) unreachable(k, "the serial setup with setup_fifo_depth pinned to 1 leaves a gap");
+  unreachable(kMemoryBackPressure,
+              "rastersim_top's on-chip memory never refuses a read (the SystemC system's memory does)");
+  if (!free("setup_fifo_depth") && p.setup_fifo_depth != 1) unreachable(kFifoFullDepth1, "setup_fifo_depth is pinned");
+  if (!free("setup_fifo_depth") && p.setup_fifo_depth == 1) unreachable(kFifoFullDeep, "setup_fifo_depth is pinned to 1");
+  if (!free("memory_latency") && p.memory_latency != 1) unreachable(kLatencyMin, "memory_latency is pinned");
+  if (!free("memory_latency") && p.memory_latency != max_latency) unreachable(kLatencyMax, "memory_latency is pinned");
+
+  const bool clear_pinned = !free("depth_clear");
+  const uint32_t clear = p.depth_clear_value();
+  const bool writes_off_only = !free("depth_write") && !p.depth_write;
+  for (const DepthFunc f : kDepthFuncs) {
+    if (!free("depth_func") && p.depth_func != f) {
+      for (size_t k = 0; k < kPerFunc; ++k) unreachable(depth_bin(f, k), "depth_func is pinned");
+      continue;
+    }
+    if (!free("depth_write")) unreachable(depth_bin(f, p.depth_write ? 1 : 0), "depth_write is pinned");
+    // Depths are in [0, 2^N - 1]; a buffer changes only by writes of passing fragments.
+    const bool never_pass = f == DepthFunc::Never || (f == DepthFunc::Less && clear_pinned && clear == 0) ||
+                            (f == DepthFunc::Greater && clear_pinned && clear == p.depth_max());
+    const bool never_fail = f == DepthFunc::Always ||
+                            (f == DepthFunc::LEqual && clear_pinned && clear == p.depth_max() && writes_off_only) ||
+                            (f == DepthFunc::GEqual && clear_pinned && clear == 0 && writes_off_only);
+    if (never_pass) unreachable(depth_bin(f, 2), "no depth passes this function on this buffer");
+    if (never_fail) unreachable(depth_bin(f, 3), "no depth fails this function on this buffer");
+  }
+  return bins;
+}
+
+CoverageCounts frame_coverage(const Profile& p, const std::vector<SnappedTriangle>& triangles, const RtlResult& model,
+                              int max_latency) {
+  CoverageCounts hits(kBinCount, 0);
+  const TriangleSetup setup(p);
+  const int64_t one = int64_t(1) << p.subpixel_bits;
+  const int64_t x_lo = -p.width * one, x_hi = 2 * p.width * one, y_lo = -p.height * one, y_hi = 2 * p.height * one;
+  int64_t previous_walker_end = -1;
+  bool seen_drawn = false;
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    const TriangleRecord& record = model.triangles[t];
+    switch (record.status) {
+      case SetupStatus::Degenerate: ++hits[kDegenerate]; continue;
+      case SetupStatus::Offscreen: ++hits[kOffscreen]; continue;
+      case SetupStatus::Culled: ++hits[kCulled]; continue;
+      case SetupStatus::Drawn: break;
+    }
+    hits[kDrawnNoFragment] += record.fragments == 0;
+    bool outside = false, at_limit = false;
+    for (const SnappedVertex& v : triangles[t].v) {
+      outside |= v.x < 0 || v.y < 0 || v.x >= p.width * one || v.y >= p.height * one;
+      at_limit |= v.x == x_lo || v.x == x_hi || v.y == y_lo || v.y == y_hi;
+    }
+    hits[kGuardBandDrawn] += outside;
+    hits[kGuardBandLimit] += at_limit;
+    if (seen_drawn && record.walker_load == record.setup_done && record.walker_load > previous_walker_end + 1)
+      ++hits[kFifoEmpty];
+    seen_drawn = true;
+    previous_walker_end = record.walker_end;
+
+    // Ties: every candidate of the box, each edge's unbiased value E + bias exactly zero.
+    const SetupResult s = setup.run(triangles[t]);
+    for (int y = s.y0; y <= s.y1; ++y) {
+      for (int x = s.x0; x <= s.x1; ++x) {
+        int64_t biased[3];
+        int zeros = 0, inside = 0;
+        for (int k = 0; k < 3; ++k) {
+          const EdgeSetup& e = s.edge[k];
+          biased[k] = int64_t(e.start) + int64_t(x - s.x0) * int64_t(e.step_x) + int64_t(y - s.y0) * int64_t(e.step_y);
+          const int64_t unbiased = biased[k] + (e.top_left ? 0 : 1);
+          zeros += unbiased == 0;
+          inside += unbiased >= 0;
+        }
+        if (zeros == 0 || inside < 3) continue;
+        if (zeros >= 2) {
+          ++hits[kTieVertex];
+          continue;
+        }
+        for (int k = 0; k < 3; ++k) {
+          const EdgeSetup& e = s.edge[k];
+          if (biased[k] + (e.top_left ? 0 : 1) != 0) continue;
+          const bool horizontal = int64_t(e.step_x) == 0;
+          ++hits[horizontal ? (e.top_left ? kTieTop : kTieBottom) : (e.top_left ? kTieLeft : kTieRight)];
+        }
+      }
+    }
+  }
+  // In rastersim_top the walker waits only on hazards (its memory never refuses a read).
+  hits[p.traversal == Traversal::BBox ? kHazardBBox : kHazardSpan] += model.stats.walker.stall;
+  hits[p.setup_fifo_depth == 1 ? kFifoFullDepth1 : kFifoFullDeep] += model.stats.setup.stall;
+  const int64_t fragments = int64_t(model.fragments.size());
+  if (p.memory_latency == 1) hits[kLatencyMin] += fragments;
+  if (p.memory_latency == max_latency) hits[kLatencyMax] += fragments;
+  hits[depth_bin(p.depth_func, p.depth_write ? 0 : 1)] += fragments;
+  for (const Fragment& f : model.fragments) ++hits[depth_bin(p.depth_func, f.pass ? 2 : 3)];
+  return hits;
+}
+
+std::vector<std::string> coverage_holes(const std::vector<CoverageBin>& bins, const CoverageCounts& hits) {
+  std::vector<std::string> holes;
+  for (size_t k = 0; k < bins.size(); ++k)
+    if (bins[k].reachable && hits[k] == 0) holes.push_back(bins[k].name);
+  return holes;
+}
+
+}  // namespace rastersim::rtl
