@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -177,8 +178,13 @@ CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
       ->type_name("FILE");
   cmd->add_flag_callback("--no-coverage-gate", [&o] { o.coverage_gate = false; },
                          "exit 0 even when a reachable coverage bin stays at zero (a whole run exits 1 by default)");
-  cmd->add_option("--fst", o.fst_out, "write the RTL waveform of every frame (the last one run remains)")
-      ->type_name("FILE");
+  cmd->add_option("--frame", o.frame, "run only frame K (as numbered in reports: the directed frames from 0, then the random ones)")
+      ->type_name("K");
+  cmd->add_option("--export", o.export_dir,
+                  "write the frames (all, a shard's, or --frame K) as replay files into DIR instead of running them: "
+                  "frame-K.tri, frame-K.json (its profile) and frame-K.txt (its power-on seed and replay command)")
+      ->type_name("DIR");
+  add_wave_options(*cmd, o.wave, "the last frame run: ");
   add_profile_options(*cmd, o.profile);
   return cmd;
 }
@@ -201,9 +207,15 @@ int run_cosim(const CosimOptions& o) {
   if (!problem.empty()) throw InputError(problem);
   if (!std::filesystem::is_directory(o.replay_dir))
     throw InputError("--replay-dir: folder '" + o.replay_dir + "' does not exist");
+  if (!o.export_dir.empty() && !std::filesystem::is_directory(o.export_dir))
+    throw InputError("--export: folder '" + o.export_dir + "' does not exist");
+  if (o.frame < -1) throw InputError("--frame " + std::to_string(o.frame) + " is not a frame number (0 or more)");
+  if (o.frame >= 0 && shard.count > 1) throw InputError("--frame and --shard choose frames both: give one");
+  if (!o.export_dir.empty() && (!o.junit_out.empty() || !o.wave.path.empty() || !o.coverage_out.empty()))
+    throw InputError("--export writes the frames without running them: --junit, --wave and --coverage need a run");
   OutputFiles outputs;
   const std::string junit_temp = o.junit_out.empty() ? "" : outputs.add(o.junit_out, "--junit");
-  const std::string fst_temp = o.fst_out.empty() ? "" : add_waveform(outputs, o.fst_out);
+  const WaveFiles wave = add_waveform(outputs, o.wave);
   const std::string coverage_temp = o.coverage_out.empty() ? "" : outputs.add(o.coverage_out, "--coverage");
 
   const std::set<std::string> pinned =
@@ -219,12 +231,31 @@ int run_cosim(const CosimOptions& o) {
   const int64_t directed = plan.directed_count();
   const bool tty = isatty(STDERR_FILENO) != 0;
   const int64_t total = directed + o.count;
-  const int64_t in_shard = total / shard.count + (shard.index < total % shard.count ? 1 : 0);
+  if (o.frame >= total)
+    throw InputError("--frame " + std::to_string(o.frame) + ": this run has frames 0.." + std::to_string(total - 1) +
+                     " (" + std::to_string(directed) + " directed, then --count " + std::to_string(o.count) + " random)");
+  // The frames this invocation takes: one, a shard's, or all.
+  const int64_t first = o.frame >= 0 ? o.frame : shard.index, step = o.frame >= 0 ? total : shard.count;
+  const int64_t in_shard = o.frame >= 0 ? 1 : total / shard.count + (shard.index < total % shard.count ? 1 : 0);
+  if (!o.export_dir.empty()) {
+    for (int64_t k = first; k < total; k += step) {
+      const rtl::CosimCase c = plan.frame(k);
+      const std::string prefix = (std::filesystem::path(o.export_dir) / ("frame-" + std::to_string(k))).string();
+      const std::string command = rtl::write_replay(prefix, c.profile, c.triangles, o.seed + uint64_t(k));
+      std::ofstream seeds(prefix + ".txt", std::ios::binary);
+      seeds << "frame " << k << ": " << c.name << "\npower-on seed " << o.seed + uint64_t(k) << "\nreplay: " << command
+            << "\n";
+      if (!seeds.flush()) throw std::runtime_error("cannot write " + prefix + ".txt");
+      std::cout << "frame " << k << ": " << command << "\n";
+    }
+    return 0;
+  }
   std::vector<FrameResult> results;
   int64_t passed = 0, failed = 0, directed_run = 0;
   // With the JUnit XML or the coverage on standard output, the report goes to standard error.
   std::ostream& info = outputs.writes_stdout() ? std::cerr : std::cout;
-  for (int64_t k = shard.index; k < total; k += shard.count) {
+  rtl::RtlResult last_model;
+  for (int64_t k = first; k < total; k += step) {
     const uint64_t frame_seed = o.seed + uint64_t(k);
     rtl::CosimCase c = plan.frame(k);
     directed_run += k < directed;
@@ -234,7 +265,12 @@ int run_cosim(const CosimOptions& o) {
                    (long long)in_shard, (long long)failed, c.name.c_str());
     rtl::RtlOptions options;
     options.seed = frame_seed;
-    options.fst_path = fst_temp;
+    options.wave_path = wave.wave_temp;
+    options.wave_vcd = wave.vcd;
+    options.wave_from = o.wave.from;
+    options.wave_to = o.wave.to;
+    options.gtkwave_save_path = wave.save_temp;
+    options.wave_name = o.wave.path;
     const std::string prefix = (std::filesystem::path(o.replay_dir) / ("rastersim-replay-" + std::to_string(k))).string();
     const auto start = std::chrono::steady_clock::now();
     const rtl::CosimReport report = rtl::cosim(c.profile, c.triangles, options, prefix);
@@ -242,6 +278,7 @@ int run_cosim(const CosimOptions& o) {
     results.push_back(FrameResult{k, c.name, seconds, report.passed, report.passed ? "" : report.message()});
     // What a frame's stimulus reached, from the model's run of it.
     rtl::CoverageCounts hits = rtl::frame_coverage(c.profile, c.triangles, report.model, max_latency);
+    last_model.stats = report.model.stats;
     for (size_t b = 0; b < bins.size(); ++b) total_hits[b] += hits[b], frames_hit[b] += hits[b] > 0;
     if (!o.coverage_out.empty()) frame_hits.emplace_back(k, std::move(hits));
     if (report.passed) {
@@ -256,15 +293,16 @@ int run_cosim(const CosimOptions& o) {
   }
   if (tty) std::fprintf(stderr, "\r\033[K");
   const std::vector<std::string> holes = rtl::coverage_holes(bins, total_hits);
-  // A shard's frames are a part of the run: only a whole run is held to every reachable bin.
-  const bool gated = o.coverage_gate && shard.count == 1;
+  // A shard's frames, or one frame, are a part of the run: only a whole run is held to every
+  // reachable bin.
+  const bool gated = o.coverage_gate && shard.count == 1 && o.frame < 0;
   if (!junit_temp.empty()) write_text_file(junit_temp, o.junit_out, junit_xml(results, profile, o));
   if (!coverage_temp.empty())
     write_text_file(coverage_temp, o.coverage_out,
                     coverage_json(bins, total_hits, frames_hit, frame_hits, holes, gated).dump(2) + "\n");
   // The last frame's waveform is kept whether it passed or not: it is what a divergence is debugged with.
-  if (!fst_temp.empty() && passed + failed > 0) check_waveform_written(fst_temp, o.fst_out);
-  if (!junit_temp.empty() || !coverage_temp.empty() || (!fst_temp.empty() && passed + failed > 0)) outputs.commit();
+  if (!wave.wave_temp.empty() && passed + failed > 0) check_waveform_written(wave, o.wave, last_model.stats.cycles);
+  if (!junit_temp.empty() || !coverage_temp.empty() || (!wave.wave_temp.empty() && passed + failed > 0)) outputs.commit();
   print_coverage(info, bins, total_hits, frames_hit);
   info << "profile " << profile_summary(profile) << ", " << settings_summary(profile) << "; shard " << o.shard
        << ": " << directed_run << " directed and " << (passed + failed - directed_run) << " random frames of "
@@ -277,7 +315,7 @@ int run_cosim(const CosimOptions& o) {
   if (!holes.empty()) {
     info << "coverage: " << holes.size() << " reachable bin" << (holes.size() == 1 ? "" : "s") << " not hit:";
     for (const std::string& h : holes) info << " " << h;
-    info << (gated ? "" : shard.count > 1 ? " (a shard: not gated)" : " (--no-coverage-gate)") << "\n";
+    info << (gated ? "" : o.frame >= 0 ? " (one frame: not gated)" : shard.count > 1 ? " (a shard: not gated)" : " (--no-coverage-gate)") << "\n";
   }
   info << passed << " passed, " << failed << " failed\n";
   return failed == 0 && (holes.empty() || !gated) ? 0 : 1;

@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "outputs.h"
 #include "profile_options.h"
 
 namespace rastersim {
@@ -24,7 +25,9 @@ struct CosimOptions {
   std::string shard = "1/1";    // K/N: this run takes frames k with k mod N = K - 1
   std::string junit_out;        // JUnit XML of the frames run, when not empty
   std::string replay_dir = ".";
-  std::string fst_out;
+  WaveOptions wave;             // the RTL waveform of the last frame run
+  int64_t frame = -1;           // run only this frame (>= 0)
+  std::string export_dir;       // write the frames as replay files instead of running them
   std::string coverage_out;     // the functional coverage as JSON, when not empty
   bool coverage_gate = true;    // a whole run exits 1 when a reachable coverage bin stays at zero
   ProfileOptions profile;

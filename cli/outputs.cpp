@@ -84,17 +84,47 @@ void OutputFiles::protect(const std::string& input_path) {
   if (!input_path.empty()) protected_.push_back(input_path);
 }
 
-std::string add_waveform(OutputFiles& outputs, const std::string& final_path) {
-  if (final_path == "-") throw InputError("--fst needs a file: an FST waveform cannot go to standard output");
-  return outputs.add(final_path, "--fst");
+void add_wave_options(CLI::App& command, WaveOptions& o, const std::string& which) {
+  command.add_option("--wave,--fst", o.path, which + "write the RTL waveform: FILE.fst or FILE.vcd, and FILE.gtkw (a GTKWave "
+                     "save file with the units' signals grouped) beside it")
+      ->type_name("FILE");
+  command.add_option("--wave-from", o.from, "first frame cycle in the waveform (default: from the start of reset)")
+      ->type_name("CYCLE");
+  command.add_option("--wave-to", o.to, "last frame cycle in the waveform (default: to the end)")->type_name("CYCLE");
 }
 
-void check_waveform_written(const std::string& written, const std::string& final_path) {
+WaveFiles add_waveform(OutputFiles& outputs, const WaveOptions& o) {
+  if (o.path.empty()) {
+    if (o.from >= 0 || o.to >= 0 || o.from < -1 || o.to < -1)
+      throw InputError(std::string(o.from != -1 ? "--wave-from" : "--wave-to") + " needs --wave FILE");
+    return {};
+  }
+  if (o.path == "-") throw InputError("--wave needs a file: a waveform cannot go to standard output");
+  WaveFiles files;
+  files.wave_temp = outputs.add(o.path, "--wave");  // first: a folder or a missing one is named as such
+  const std::string extension = fs::path(o.path).extension().string();
+  if (extension != ".fst" && extension != ".vcd")
+    throw InputError("--wave " + o.path + ": the name must end in .fst or .vcd (the format)");
+  if (o.from < -1 || o.to < -1) throw InputError("--wave-from and --wave-to are frame cycles: 0 or more");
+  if (o.from >= 0 && o.to >= 0 && o.from > o.to)
+    throw InputError("--wave-from " + std::to_string(o.from) + " is after --wave-to " + std::to_string(o.to));
+  files.vcd = extension == ".vcd";
+  files.save_temp = outputs.add(fs::path(o.path).replace_extension(".gtkw").string(), "--wave's GTKWave save file");
+  return files;
+}
+
+void check_waveform_written(const WaveFiles& files, const WaveOptions& o, int64_t frame_cycles) {
+  if (files.wave_temp.empty()) return;
+  if (o.from >= frame_cycles)
+    throw InputError("--wave-from " + std::to_string(o.from) + " is past the frame's last cycle " +
+                     std::to_string(frame_cycles - 1));
   std::error_code ec;
-  const fs::file_status status = fs::status(written, ec);
-  if (fs::is_regular_file(status) && fs::file_size(written, ec) == 0)
-    throw std::runtime_error("cannot write --fst " + final_path + ": the waveform writer wrote nothing");
-  if (!fs::exists(status)) throw std::runtime_error("cannot write --fst " + final_path + ": the waveform writer made no file");
+  const fs::file_status status = fs::status(files.wave_temp, ec);
+  if (fs::is_regular_file(status) && fs::file_size(files.wave_temp, ec) == 0)
+    throw std::runtime_error("cannot write --wave " + o.path + ": the waveform writer wrote nothing");
+  if (!fs::exists(status)) throw std::runtime_error("cannot write --wave " + o.path + ": the waveform writer made no file");
+  if (!fs::exists(files.save_temp, ec))
+    throw std::runtime_error("cannot write the GTKWave save file beside --wave " + o.path);
 }
 
 std::string OutputFiles::add(const std::string& final_path, const std::string& what) {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "model/pipeline.h"
@@ -71,12 +72,25 @@ void forget_temporary(const std::string& path);
 void remember_temporary_folder(const std::string& path, bool exists);
 void remove_temporaries_on_signals();
 
-// The RTL waveform (`--fst FILE`) as one of `outputs`: the same checks as every output, written to a
-// temporary and renamed into place with the others. `-` is refused (the FST writer seeks). Returns
-// the path the simulation writes.
-std::string add_waveform(OutputFiles& outputs, const std::string& final_path);
-// Throws when the simulation left no waveform at `written` (a failed write is an error, not silence).
-void check_waveform_written(const std::string& written, const std::string& final_path);
+// The RTL waveform options of render and cosim: `--wave FILE` (.fst or .vcd; `--fst` is its
+// older name), `--wave-from CYCLE` and `--wave-to CYCLE` (frame cycles, inclusive).
+struct WaveOptions {
+  std::string path;
+  int64_t from = -1, to = -1;  // -1: not given
+};
+void add_wave_options(CLI::App& command, WaveOptions& options, const std::string& which);
+
+// The waveform and its GTKWave save file (the waveform's name with .gtkw) as outputs of `outputs`:
+// the same checks as every output, written to temporaries and renamed into place with the others.
+// `-` is refused (the FST writer seeks), as are another extension and a bad window.
+struct WaveFiles {
+  std::string wave_temp, save_temp;
+  bool vcd = false;
+};
+WaveFiles add_waveform(OutputFiles& outputs, const WaveOptions& options);
+// Throws when the simulation left no waveform (a failed write is an error, not silence), or when
+// the window starts past the frame's last cycle (`frame_cycles` cycles: 0 .. frame_cycles - 1).
+void check_waveform_written(const WaveFiles& files, const WaveOptions& options, int64_t frame_cycles);
 
 // Throws InputError when OpenImageIO has no writer for the path's extension.
 void check_image_format(const std::string& path, const std::string& what);

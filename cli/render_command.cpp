@@ -73,7 +73,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
       ->type_name("FILE");
   cmd->add_option("--seed", o.seed, "rtl, cosim, systemc: seed of the random power-on state of registers and memories")
       ->type_name("S");
-  cmd->add_option("--fst", o.fst_out, "rtl, cosim: write the RTL waveform (FST)")->type_name("FILE");
+  add_wave_options(*cmd, o.wave, "rtl, cosim: ");
   cmd->add_option("--replay-dir", o.replay_dir, "cosim: folder for the replay files of a divergence")
       ->type_name("DIR");
   cmd->add_option("--backend", o.backend,
@@ -144,12 +144,9 @@ int run_render(const RenderOptions& o) {
   if (!o.stats_out.empty()) stats_temp = outputs.add(o.stats_out, "--stats");
   std::string dump_tri_temp;
   if (!o.dump_tri_out.empty()) dump_tri_temp = outputs.add(o.dump_tri_out, "--dump-tri");
-  std::string fst_temp;
-  if (!o.fst_out.empty()) {
-    if (backend != Backend::Rtl && backend != Backend::Cosim)
-      throw InputError("--fst needs --backend rtl or cosim: the " + o.backend + " backend runs no RTL waveform");
-    fst_temp = add_waveform(outputs, o.fst_out);
-  }
+  if (!o.wave.path.empty() && backend != Backend::Rtl && backend != Backend::Cosim)
+    throw InputError("--wave needs --backend rtl or cosim: the " + o.backend + " backend runs no RTL waveform");
+  const WaveFiles wave = add_waveform(outputs, o.wave);
   if (!o.replay_dir.empty()) {
     if (backend != Backend::Cosim)
       throw InputError("--replay-dir needs --backend cosim: the " + o.backend + " backend writes no replay files");
@@ -167,7 +164,12 @@ int run_render(const RenderOptions& o) {
   ProgressLine progress(snapped.size(), isatty(STDERR_FILENO) != 0);
   BackendOptions backend_options;
   backend_options.seed = o.seed;
-  backend_options.fst_path = fst_temp;
+  backend_options.wave_path = wave.wave_temp;
+  backend_options.wave_vcd = wave.vcd;
+  backend_options.wave_from = o.wave.from;
+  backend_options.wave_to = o.wave.to;
+  backend_options.gtkwave_save_path = wave.save_temp;
+  backend_options.wave_name = o.wave.path;
   backend_options.replay_prefix =
       (std::filesystem::path(o.replay_dir.empty() ? "." : o.replay_dir) / "rastersim-replay").string();
   const RenderResult result = render_triangles(
@@ -190,7 +192,7 @@ int run_render(const RenderOptions& o) {
     write_text_file(dump_tri_temp, o.dump_tri_out, text.str());
   }
   if (!stats_temp.empty()) write_text_file(stats_temp, o.stats_out, stats_to_json(result.stats, profile).dump(2) + "\n");
-  if (!fst_temp.empty()) check_waveform_written(fst_temp, o.fst_out);
+  check_waveform_written(wave, o.wave, result.stats.cycles);
   outputs.commit();
 
   const std::string source = o.input.empty() ? "scene " + (o.scene.empty() ? std::string("default") : o.scene) : o.input;
@@ -201,7 +203,7 @@ int run_render(const RenderOptions& o) {
        << ", " << to_string(profile.traversal) << " traversal\n";
   if (backend == Backend::Cosim) info << "cosim: every setup record, fragment, memory word and cycle count agrees\n";
   print_summary(info, result.stats);
-  for (const std::string* path : {&o.color_out, &o.depth_out, &o.fragments_out, &o.stats_out, &o.dump_tri_out, &o.fst_out})
+  for (const std::string* path : {&o.color_out, &o.depth_out, &o.fragments_out, &o.stats_out, &o.dump_tri_out, &o.wave.path})
     if (!path->empty()) info << "wrote " << (*path == "-" ? "standard output" : *path) << "\n";
   return 0;
 }

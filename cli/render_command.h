@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "frontend/frontend.h"
+#include "outputs.h"
 #include "profile_options.h"
 
 namespace rastersim {
@@ -25,7 +26,7 @@ struct RenderOptions {
   bool ortho = false;
   std::string backend = "model";
   uint64_t seed = 1;          // rtl/cosim: random power-on state
-  std::string fst_out;        // rtl/cosim: waveform
+  WaveOptions wave;           // rtl/cosim: waveform
   std::string replay_dir;  // cosim: where a divergence's replay files go (empty: the working folder)
   ProfileOptions profile;
 };

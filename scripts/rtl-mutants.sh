@@ -88,7 +88,7 @@ open(path, "w").write(text.replace(old, new))
 PY
   echo "mutant $m: ${file[$m]}: '${from[$m]}' -> '${to[$m]}'"
   if ! verilator --cc --exe --build -j 2 -Wno-fatal -Wno-lint -Wno-style --x-assign unique --x-initial unique \
-      -I"$dir/rtl" "$dir"/rtl/*.sv --top-module rastersim_top --prefix Vmutant -Mdir "$dir/obj" \
+      -I"$dir/rtl" "$dir"/rtl/*.sv "$root/testbench/rtl/rastersim_debug.sv" --top-module rastersim_top --prefix Vmutant -Mdir "$dir/obj" \
       -GWIDTH=64 -GHEIGHT=48 -GSUBPIXEL_BITS=4 -GZ_BITS=24 -GMAX_MEMORY_LATENCY=$max_latency ${params[$m]:-} --trace-fst \
       "$root/testbench/mutant_check.cpp" -o mutant_check \
       -CFLAGS "-std=gnu++17 -O1 -I$root -isystem $build/testbench" \
@@ -97,9 +97,42 @@ PY
   fi
   replays="$build/rtl-mutants/$m"
   mkdir -p "$replays"
-  if "$dir/obj/mutant_check" "$replays" "$max_latency" ${check[$m]:-}; then
-    echo "mutant $m: caught"
+  if "$dir/obj/mutant_check" "$replays" "$max_latency" ${check[$m]:-} > "$dir/check.log"; then
+    cat "$dir/check.log"
+    # What cosim gives for a divergence: the replay reproduces it alone, and the waveform window
+    # holds its cycle (the debug monitor's frame_cycle takes that value in the dump).
+    sentence=$(grep '^first divergence: ' "$dir/check.log")
+    read -r _ prefix seed < <(sed -n 's/^replay: mutant_check //p' "$dir/check.log")
+    replayed=$("$dir/obj/mutant_check" --replay "$prefix" "$seed" || true)
+    cycle=$(sed -n 's/^waveform: .*divergence cycle \(-\?[0-9]*\)$/\1/p' "$dir/check.log")
+    if [ "$replayed" != "$sentence" ]; then
+      echo "mutant $m: the replay gives '$replayed', not the catch's '$sentence'"; status=1
+    elif ! python3 - "$prefix.vcd" "$cycle" <<'PY'
+import sys
+path, cycle = sys.argv[1], int(sys.argv[2])
+ids, scope, values = {}, [], set()
+for line in open(path):
+    w = line.split()
+    if not w:
+        continue
+    if w[0] == "$scope":
+        scope.append(w[2])
+    elif w[0] == "$upscope":
+        scope.pop()
+    elif w[0] == "$var" and scope[-1:] == ["debug"] and w[4] == "frame_cycle":
+        ids[w[3]] = True
+    elif w[0][0] == "b" and len(w) == 2 and w[1] in ids:
+        values.add(int(w[0][1:], 2))
+if cycle >= 0 and cycle not in values:
+    sys.exit(f"{path}: frame_cycle takes {min(values, default=None)}..{max(values, default=None)}, not {cycle}")
+PY
+    then
+      echo "mutant $m: the waveform window misses the divergence cycle $cycle"; status=1
+    else
+      echo "mutant $m: caught (the replay reproduces it alone; the waveform window holds cycle $cycle)"
+    fi
   else
+    cat "$dir/check.log"
     echo "mutant $m: NOT caught"; status=1
   fi
 done

@@ -1,16 +1,24 @@
 // Runs the co-simulation suites against one verilated copy of the RTL with an injected bug
-// (scripts/rtl-mutants.sh builds it as Vmutant) and reports the first divergence. Exit 0 when the
-// bug is caught, 1 when every frame still agreed with the model (the harness missed it).
+// (scripts/rtl-mutants.sh builds it as Vmutant) and reports the first divergence, as `cosim` does:
+// with a replay and a waveform window around the divergence. Exit 0 when the bug is caught, 1 when
+// every frame still agreed with the model (the harness missed it).
 // Usage: mutant_check REPLAY_DIR MAX_MEMORY_LATENCY [--cosim-only]
-// First the frames of `rastersim cosim --count 100` on the mutant's profile (the directed and
-// coverage frames, then 100 random ones, seed 1), then, unless --cosim-only, directed and random
-// frames at each traversal with memory latencies 2 and 4.
+//   First the frames of `rastersim cosim --count 100` on the mutant's profile (the directed and
+//   coverage frames, then 100 random ones, seed 1), then, unless --cosim-only, directed and random
+//   frames at each traversal with memory latencies 2 and 4. On a catch it writes REPLAY_DIR/
+//   mutant_replay.{tri,json} and mutant_replay.{vcd,gtkw} (frame cycles around the divergence).
+// Usage: mutant_check --replay PREFIX SEED
+//   Runs the frame of PREFIX.tri with the profile PREFIX.json and the power-on seed alone and prints
+//   its first divergence (the replay of a catch; exit 0 when it diverges).
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "Vmutant.h"
 #include "Vmutant__Syms.h"
+#include "model/profile.h"
 #include "testbench/cosim_cases.h"
 #include "testbench/rtl_harness.h"
 
@@ -19,23 +27,65 @@ using namespace rastersim::rtl;
 
 namespace {
 
-bool caught(const CosimCase& c, const std::string& replay_dir, const std::string& suite) {
+bool caught(const CosimCase& c, uint64_t seed, const std::string& replay_dir, const std::string& suite) {
+  RtlOptions options;
+  options.seed = seed;
   const RtlResult model = run_model(c.profile, c.triangles);
-  const RtlResult rtl = detail::run_verilated<Vmutant>(c.profile, c.triangles, RtlOptions{});
+  const RtlResult rtl = detail::run_verilated<Vmutant>(c.profile, c.triangles, options);
   const Divergence d = compare(model, rtl);
   if (!d.found) return false;
-  const std::string command = write_replay(replay_dir + "/mutant_replay", c.profile, c.triangles);
-  std::printf("caught by %s in %s (traversal %s, memory_latency %d): %s\nreplay: %s\n", suite.c_str(),
-              c.name.c_str(), to_string(c.profile.traversal), c.profile.memory_latency, d.sentence.c_str(),
-              command.c_str());
+  const std::string prefix = replay_dir + "/mutant_replay";
+  write_replay(prefix, c.profile, c.triangles, seed);
+  // The frame again, with a waveform window around the divergence (as `cosim` writes it).
+  RtlOptions wave = options;
+  std::tie(wave.wave_from, wave.wave_to) = divergence_window(d, model);
+  wave.wave_path = prefix + ".vcd";
+  wave.wave_vcd = true;
+  wave.gtkwave_save_path = prefix + ".gtkw";
+  detail::run_verilated<Vmutant>(c.profile, c.triangles, wave);
+  std::printf("caught by %s in %s (traversal %s, memory_latency %d):\n%s\n", suite.c_str(), c.name.c_str(),
+              to_string(c.profile.traversal), c.profile.memory_latency, d.sentence.c_str());
+  std::printf("replay: mutant_check --replay %s %llu\n", prefix.c_str(), (unsigned long long)seed);
+  std::printf("waveform: %s.vcd frame cycles %lld..%lld, divergence cycle %lld\n", prefix.c_str(),
+              (long long)wave.wave_from, (long long)wave.wave_to, (long long)d.cycle);
   return true;
+}
+
+// The replay files write_replay() made: the profile, then one triangle per line (x y z three
+// times, then nine colour values), snapped as the command line snaps them.
+int replay(const std::string& prefix, uint64_t seed) {
+  Profile p;
+  load_profile_file(p, prefix + ".json");
+  std::ifstream in(prefix + ".tri");
+  std::vector<SnappedTriangle> triangles;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    ScreenTriangle t;
+    int rgb[9];
+    for (ScreenVertex& v : t.v) fields >> v.x >> v.y >> v.z;
+    for (int& c : rgb) fields >> c;
+    if (!fields) {
+      std::fprintf(stderr, "%s.tri: a line this program did not write: %s\n", prefix.c_str(), line.c_str());
+      return 2;
+    }
+    for (int k = 0; k < 3; ++k) t.v[k].color = Rgb{uint8_t(rgb[3 * k]), uint8_t(rgb[3 * k + 1]), uint8_t(rgb[3 * k + 2])};
+    triangles.push_back(snap(t, p));
+  }
+  RtlOptions options;
+  options.seed = seed;
+  const Divergence d = compare(run_model(p, triangles), detail::run_verilated<Vmutant>(p, triangles, options));
+  std::printf("%s\n", d.found ? d.sentence.c_str() : "model and RTL agree");
+  return d.found ? 0 : 1;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 4 && std::string(argv[1]) == "--replay") return replay(argv[2], std::strtoull(argv[3], nullptr, 10));
   if (argc < 3) {
-    std::fprintf(stderr, "usage: mutant_check REPLAY_DIR MAX_MEMORY_LATENCY [--cosim-only]\n");
+    std::fprintf(stderr, "usage: mutant_check REPLAY_DIR MAX_MEMORY_LATENCY [--cosim-only]\n"
+                         "       mutant_check --replay PREFIX SEED\n");
     return 2;
   }
   const std::string replay_dir = argv[1];
@@ -49,9 +99,11 @@ int main(int argc, char** argv) {
   p.z_bits = int(Core::P_Z_BITS);
   p.setup_interval = int(Core::P_SETUP_INTERVAL);
 
+  // As `cosim`: frame k's power-on seed is seed + k, seed 1.
   const CosimPlan plan(p, {}, max_latency, 1, 16, true);
   for (int64_t k = 0; k < plan.directed_count() + 100; ++k)
-    if (caught(plan.frame(k), replay_dir, "the frames of cosim --count 100 (frame " + std::to_string(k) + ")"))
+    if (caught(plan.frame(k), 1 + uint64_t(k), replay_dir,
+               "the frames of cosim --count 100 (frame " + std::to_string(k) + ")"))
       return 0;
   if (cosim_only) {
     std::printf("NOT caught by the frames of cosim --count 100\n");
@@ -65,7 +117,7 @@ int main(int argc, char** argv) {
       std::vector<CosimCase> cases = directed_cases(p);
       for (uint64_t seed = 1; seed <= 3; ++seed) cases.push_back(random_case(p, seed, 40));
       for (const CosimCase& c : cases)
-        if (caught(c, replay_dir, "the mutant suites")) return 0;
+        if (caught(c, 1, replay_dir, "the mutant suites")) return 0;
     }
   }
   std::printf("NOT caught: every frame agreed with the model\n");

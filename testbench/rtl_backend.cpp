@@ -1,10 +1,12 @@
 #include "testbench/rtl_backend.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "testbench/rtl_configs.h"
 #include "testbench/setup_record.h"
@@ -264,7 +266,7 @@ Divergence compare(const RtlResult& model, const RtlResult& rtl) {
 }
 
 std::string write_replay(const std::string& prefix, const Profile& profile,
-                         const std::vector<SnappedTriangle>& triangles) {
+                         const std::vector<SnappedTriangle>& triangles, uint64_t seed) {
   const double scale = std::ldexp(1.0, profile.subpixel_bits);
   const double z_max = double(profile.depth_max());
   std::ostringstream tri;
@@ -303,7 +305,15 @@ std::string write_replay(const std::string& prefix, const Profile& profile,
     out << text;
     if (!out) throw std::runtime_error("cannot write " + path);
   }
-  return "rastersim render " + prefix + ".tri --profile " + prefix + ".json --backend cosim";
+  return "rastersim render " + prefix + ".tri --profile " + prefix + ".json --backend cosim --seed " +
+         std::to_string(seed);
+}
+
+std::pair<int64_t, int64_t> divergence_window(const Divergence& divergence, const RtlResult& model) {
+  constexpr int64_t kAround = 32;
+  const int64_t last = std::max<int64_t>(0, model.stats.cycles - 1);
+  const int64_t at = divergence.cycle >= 0 ? divergence.cycle : last;
+  return {std::max<int64_t>(0, at - kAround), at + kAround};
 }
 
 CosimReport cosim(const Profile& profile, const std::vector<SnappedTriangle>& triangles, const RtlOptions& options,
@@ -313,8 +323,20 @@ CosimReport cosim(const Profile& profile, const std::vector<SnappedTriangle>& tr
   report.rtl = run_rtl(profile, triangles, options);
   report.divergence = compare(report.model, report.rtl);
   report.passed = !report.divergence.found;
-  if (!report.passed && !replay_prefix.empty())
-    report.replay_command = write_replay(replay_prefix, profile, triangles);
+  if (!report.passed && !replay_prefix.empty()) {
+    report.replay_command = write_replay(replay_prefix, profile, triangles, options.seed);
+    // The frame again, with a waveform window around the divergence.
+    RtlOptions again = options;
+    std::tie(again.wave_from, again.wave_to) = divergence_window(report.divergence, report.model);
+    again.wave_path = replay_prefix + ".fst";
+    again.wave_vcd = false;
+    again.gtkwave_save_path = replay_prefix + ".gtkw";
+    again.wave_name.clear();
+    run_rtl(profile, triangles, again);
+    report.waveform = again.wave_path;
+    report.wave_from = again.wave_from;
+    report.wave_to = again.wave_to;
+  }
   return report;
 }
 
@@ -322,6 +344,9 @@ std::string CosimReport::message() const {
   if (passed) return "model and RTL agree";
   std::string text = divergence.sentence;
   if (!replay_command.empty()) text += "; replay: " + replay_command;
+  if (!waveform.empty())
+    text += "; waveform: " + waveform + " (frame cycles " + std::to_string(wave_from) + ".." +
+            std::to_string(wave_to) + ", GTKWave: gtkwave " + waveform.substr(0, waveform.size() - 4) + ".gtkw)";
   return text;
 }
 

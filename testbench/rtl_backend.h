@@ -15,7 +15,15 @@ namespace rastersim::rtl {
 
 struct RtlOptions {
   uint64_t seed = 1;       // random power-on state (registers and memories), printed on failure
-  std::string fst_path;    // write a waveform when not empty
+  // A waveform of the frame when not empty: FST, or VCD when wave_vcd. With wave_from / wave_to
+  // >= 0 only the frame cycles in [wave_from, wave_to] are dumped (otherwise from the start of
+  // reset, memory clear included, to the end). One time unit per half clock from the start of
+  // reset; the debug monitor's frame_cycle signal gives the frame cycle (docs/debugging.md).
+  std::string wave_path;
+  bool wave_vcd = false;
+  int64_t wave_from = -1, wave_to = -1;
+  // A GTKWave save file for the waveform when not empty, naming wave_name as the file to open.
+  std::string gtkwave_save_path, wave_name;
   int64_t max_cycles = 0;  // 0: a generous bound from the triangles' bounding boxes
   // Read the final memories through the RTL's synchronous read-back port (W H cycles) instead of
   // directly from the verilated memory arrays; both give the same words (tests/rtl checks it).
@@ -64,9 +72,14 @@ struct Divergence {
 Divergence compare(const RtlResult& model, const RtlResult& rtl);
 
 // Writes a replay of the case: <prefix>.tri (%.17g coordinates that snap back to exactly these
-// vertices, nine colour values) and <prefix>.json (the profile). Returns the replay command.
+// vertices, nine colour values) and <prefix>.json (the profile). Returns the replay command, which
+// carries the power-on seed.
 std::string write_replay(const std::string& prefix, const Profile& profile,
-                         const std::vector<SnappedTriangle>& triangles);
+                         const std::vector<SnappedTriangle>& triangles, uint64_t seed);
+
+// The frame cycles a divergence's waveform window covers: 32 cycles either side of its cycle (of
+// the frame's last cycle for a frame-level field), clipped to the frame.
+std::pair<int64_t, int64_t> divergence_window(const Divergence& divergence, const RtlResult& model);
 
 // Model and RTL on one frame, compared. On a divergence, when replay_prefix is not empty, writes
 // the replay files there and puts the replay command in the report.
@@ -74,6 +87,10 @@ struct CosimReport {
   bool passed = true;
   Divergence divergence;
   std::string replay_command;
+  // On a divergence with a replay prefix: <prefix>.fst and <prefix>.gtkw, the frame cycles
+  // [wave_from, wave_to] around the divergence (docs/debugging.md).
+  std::string waveform;
+  int64_t wave_from = -1, wave_to = -1;
   RtlResult model, rtl;
   std::string message() const;  // one paragraph: the sentence, the seed hint and the replay command
 };

@@ -7,12 +7,14 @@
 #include <verilated_fst_c.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <memory>
 #include <stdexcept>
 #include <type_traits>
 
 #include "testbench/rtl_backend.h"
 #include "testbench/core_ports.h"
+#include "testbench/waveform.h"
 
 namespace rastersim::rtl::detail {
 
@@ -33,19 +35,23 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
   auto context = std::make_unique<VerilatedContext>();
   context->randReset(2);
   context->randSeed(int(options.seed % 2147483647u) + 1);
-  context->traceEverOn(!options.fst_path.empty());
+  context->traceEverOn(!options.wave_path.empty());
   auto top = std::make_unique<V>(context.get(), "rastersim_top");
+  // A VCD is the FST rewritten once the frame is done.
+  const std::string fst_path = options.wave_vcd ? options.wave_path + ".fst-part" : options.wave_path;
   std::unique_ptr<VerilatedFstC> fst;
-  if (!options.fst_path.empty()) {
+  if (!options.wave_path.empty()) {
     fst = std::make_unique<VerilatedFstC>();
     top->trace(fst.get(), 99);
-    fst->open(options.fst_path.c_str());
+    fst->open(fst_path.c_str());
   }
+  const bool windowed = options.wave_from >= 0 || options.wave_to >= 0;
+  bool dumping = !windowed;  // reset and the memory clear are in the dump only without a window
   uint64_t time = 0;
   auto half_cycle = [&](int clk) {
     top->clk = clk;
     top->eval();
-    if (fst) fst->dump(time);
+    if (fst && dumping) fst->dump(time);
     ++time;
   };
 
@@ -81,6 +87,7 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
       out.note = "the RTL did not finish within " + std::to_string(bound) + " cycles";
       break;
     }
+    if (windowed) dumping = cycle >= std::max<int64_t>(0, options.wave_from) && (options.wave_to < 0 || cycle <= options.wave_to);
     const size_t next = observer.next_triangle();
     top->cmd_valid = next < tris.size();
     if (next < tris.size()) drive_command(*top, tris[next], coord_bits);
@@ -91,6 +98,7 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
     if (observer.done()) break;
   }
   observer.finish();
+  if (windowed) dumping = options.wave_to < 0;
 
   // The final memories: a word not written since the clear reads as the clear value (depth) or 0.
   const size_t words = size_t(p.width) * size_t(p.height);
@@ -114,7 +122,16 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
       out.color[a] = color_written ? uint32_t(t.zmem__DOT__color_mem[a]) : 0u;
     }
   }
-  if (fst) fst->close();
+  if (fst) {
+    fst->close();
+    if (!options.gtkwave_save_path.empty())
+      write_gtkwave_save(fst_path, options.wave_name.empty() ? options.wave_path : options.wave_name,
+                         options.gtkwave_save_path);
+    if (options.wave_vcd) {
+      fst_to_vcd(fst_path, options.wave_path);
+      std::remove(fst_path.c_str());
+    }
+  }
   top->final();
   return out;
 }

@@ -12,6 +12,7 @@
 #include <array>
 #include <fstream>
 #include <map>
+#include <sstream>
 
 #include "cli_test_support.h"
 
@@ -665,7 +666,13 @@ TEST(CliRtl, WaveformWrongUsesAreErrorsAndAWaveformIsWrittenWhole) {
     const char* message;
   };
   const Case wrong[] = {
-      {{"--fst", "w.fst"}, "--fst needs --backend rtl or cosim"},
+      {{"--fst", "w.fst"}, "--wave needs --backend rtl or cosim"},
+      {{"--backend", "rtl", "--wave", "w.txt"}, "must end in .fst or .vcd"},
+      {{"--backend", "rtl", "--wave-from", "5"}, "--wave-from needs --wave FILE"},
+      {{"--backend", "rtl", "--wave", "w.vcd", "--wave-from", "10", "--wave-to", "5"}, "is after --wave-to 5"},
+      {{"--backend", "rtl", "--wave", "w.vcd", "--wave-from", "-3"}, "0 or more"},
+      {{"--backend", "rtl", "--wave", "w.vcd", "--wave-from", "100000000"}, "is past the frame's last cycle"},
+      {{"--backend", "rtl", "--wave", "w.fst", "--stats", "w.gtkw"}, "named by two outputs"},
       {{"--backend", "rtl", "--fst", dir.path("missing/w.fst")}, "does not exist"},
       {{"--backend", "rtl", "--fst", dir.path("")}, "it is a folder"},
       {{"--backend", "rtl", "--fst", "-"}, "cannot go to standard output"},
@@ -683,12 +690,121 @@ TEST(CliRtl, WaveformWrongUsesAreErrorsAndAWaveformIsWrittenWhole) {
     EXPECT_EQ(read_text(dir.path(backend + ".fst")).substr(0, 1), std::string(1, '\0')) << "an FST header";
     EXPECT_GT(read_text(dir.path(backend + ".fst")).size(), 1000u);
   }
-  EXPECT_EQ(dir.listing(), (std::set<std::string>{"rtl.fst", "cosim.fst"})) << "no temporaries left";
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"rtl.fst", "rtl.gtkw", "cosim.fst", "cosim.gtkw"}))
+      << "no temporaries left";
   const RunResult cosim = run_rastersim(dir, {"cosim", "--count", "1", "--no-directed", "--no-coverage-gate", "--width",
                                               "64", "--height", "48", "--fst", "frames.fst"});
   ASSERT_EQ(cosim.exit_code, 0) << cosim.err;
   EXPECT_GT(read_text(dir.path("frames.fst")).size(), 1000u);
   EXPECT_EQ(run_rastersim(dir, {"cosim", "--count", "1", "--width", "64", "--height", "48", "--fst", "-"}).exit_code, 2);
+}
+
+// A VCD waveform's signals by full name ("scope.scope.name[9:0]" as GTKWave spells them) and the
+// values each took, for the frame-cycle counter.
+struct Vcd {
+  std::set<std::string> names;
+  std::vector<int64_t> frame_cycles;
+  std::map<int64_t, int64_t> frame_cycle_time;  // value -> time of its first appearance
+  std::string without_date;  // the file without its $date block (two runs' dumps compare equal)
+};
+Vcd read_vcd(const fs::path& path) {
+  Vcd vcd;
+  std::ifstream in(path);
+  std::vector<std::string> scope;
+  std::set<std::string> frame_cycle_ids;
+  bool in_date = false;
+  int64_t time = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("$date", 0) == 0) in_date = true;
+    if (!in_date) vcd.without_date += line + "\n";
+    if (in_date && line.find("$end") != std::string::npos) in_date = false;
+    std::istringstream words(line);
+    std::vector<std::string> w;
+    for (std::string word; words >> word;) w.push_back(word);
+    if (w.empty()) continue;
+    if (w[0] == "$scope" && w.size() > 2) scope.push_back(w[2]);
+    else if (w[0] == "$upscope" && !scope.empty()) scope.pop_back();
+    else if (w[0] == "$var" && w.size() > 5) {
+      std::string name;
+      for (const std::string& s : scope) name += s + ".";
+      name += w[4] + (w[5] != "$end" ? w[5] : "");
+      vcd.names.insert(name);
+      if (!scope.empty() && scope.back() == "debug" && w[4] == "frame_cycle") frame_cycle_ids.insert(w[3]);
+    } else if (w[0][0] == '#') {
+      time = std::stoll(w[0].substr(1));
+    } else if (w[0][0] == 'b' && w.size() == 2 && frame_cycle_ids.count(w[1])) {
+      vcd.frame_cycles.push_back(std::stoll(w[0].substr(1), nullptr, 2));
+      vcd.frame_cycle_time.emplace(vcd.frame_cycles.back(), time);
+    }
+  }
+  return vcd;
+}
+
+// --wave FILE.vcd with a window: the dump holds exactly frame cycles 100..120 (the debug monitor's
+// frame_cycle goes from 100 to 121 at the last rising edge), and the GTKWave save file beside it
+// opens it and names only signals the dump has, grouped per unit.
+TEST(CliRtl, WaveWindowAsVcdWithAGtkwaveSaveFile) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"render", "--scene", "fan", "--width", "64", "--height", "48", "--backend", "rtl",
+                                          "--wave", "w.vcd", "--wave-from", "100", "--wave-to", "120"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Vcd vcd = read_vcd(dir.path("w.vcd"));
+  ASSERT_FALSE(vcd.frame_cycles.empty());
+  EXPECT_EQ(*std::min_element(vcd.frame_cycles.begin(), vcd.frame_cycles.end()), 100);
+  EXPECT_EQ(*std::max_element(vcd.frame_cycles.begin(), vcd.frame_cycles.end()), 121);
+  // docs/debugging.md: frame cycle c's rising edge is at time 2 (4 + ceil(W H / 64) + c) + 1 and
+  // shows frame_cycle c + 1 (4 reset cycles, 48 clear cycles at 64 x 48).
+  EXPECT_EQ(vcd.frame_cycle_time.at(101), 2 * (4 + 48 + 100) + 1);
+  const std::string save = read_text(dir.path("w.gtkw"));
+  EXPECT_TRUE(contains(save, "[dumpfile] \"" + fs::absolute(dir.path("w.vcd")).string() + "\"")) << save;
+  int signals = 0;
+  std::set<std::string> groups;
+  std::istringstream lines(save);
+  std::string previous;
+  for (std::string line; std::getline(lines, line); previous = line) {
+    if (previous == "@800200") groups.insert(line.substr(1));
+    if (line.empty() || line[0] == '@' || line[0] == '[' || line[0] == '-') continue;
+    ++signals;
+    EXPECT_TRUE(vcd.names.count(line)) << "the save file names " << line << ", which the dump lacks";
+  }
+  EXPECT_GT(signals, 50);
+  EXPECT_EQ(groups, (std::set<std::string>{"frame", "triangle_setup", "setup_fifo", "scanline_walker", "z_adder",
+                                           "zbuffer", "zbuffer_memory"}));
+  EXPECT_TRUE(contains(save, ".debug.frame_cycle[31:0]")) << save;
+}
+
+// cosim --export writes any frame as replay files; the printed command (power-on seed included)
+// runs the very same frame: its waveform equals the one `cosim --frame K` dumps.
+TEST(CliRtl, CosimExportedFrameReplaysExactly) {
+  ScratchDir dir;
+  const std::vector<std::string> run = {"cosim", "--count", "5", "--width", "64", "--height", "48", "--seed", "40"};
+  std::vector<std::string> args = run;
+  fs::create_directory(dir.path("frames"));
+  args.insert(args.end(), {"--frame", "32", "--export", "frames"});
+  RunResult r = run_rastersim(dir, args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, "--seed 72")) << r.out;  // frame k's power-on seed is seed + k
+  EXPECT_EQ(read_text(dir.path("frames/frame-32.txt")).rfind("frame 32: random seed 72", 0), 0u);
+  args = run;
+  args.insert(args.end(), {"--frame", "32", "--wave", "cosim.vcd"});
+  r = run_rastersim(dir, args);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_TRUE(contains(r.out, "1 passed, 0 failed")) << r.out;
+  EXPECT_TRUE(contains(r.out, "(one frame: not gated)")) << r.out;
+  r = run_rastersim(dir, {"render", "frames/frame-32.tri", "--profile", "frames/frame-32.json", "--backend", "rtl",
+                          "--seed", "72", "--wave", "replay.vcd"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Vcd original = read_vcd(dir.path("cosim.vcd")), replayed = read_vcd(dir.path("replay.vcd"));
+  EXPECT_GT(original.frame_cycles.size(), 10u);
+  EXPECT_TRUE(original.without_date == replayed.without_date) << "the replay's waveform differs";
+  // Wrong uses.
+  for (const std::vector<std::string>& extra : {std::vector<std::string>{"--frame", "99"},
+                                                std::vector<std::string>{"--export", "no/such/folder"},
+                                                std::vector<std::string>{"--frame", "1", "--shard", "1/2"}}) {
+    args = run;
+    args.insert(args.end(), extra.begin(), extra.end());
+    EXPECT_EQ(run_rastersim(dir, args).exit_code, 2) << extra[0];
+  }
 }
 
 // A count whose frame indices overflow once ran no frame and reported "0 passed, 0 failed", exit 0.

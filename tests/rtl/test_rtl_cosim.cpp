@@ -276,11 +276,11 @@ TEST(RtlCompare, ReportsTheFirstDivergenceAsASentence) {
 TEST(RtlWaveform, WritesAnFstFile) {
   Profile p = small_profile();
   RtlOptions options;
-  options.fst_path = replay_prefix("waveform") + ".fst";
-  std::filesystem::remove(options.fst_path);
+  options.wave_path = replay_prefix("waveform") + ".fst";
+  std::filesystem::remove(options.wave_path);
   const CosimCase c = random_case(p, 4, 3);
   const RtlResult traced = run_rtl(p, c.triangles, options);
-  EXPECT_GT(std::filesystem::file_size(options.fst_path), 1000u);
+  EXPECT_GT(std::filesystem::file_size(options.wave_path), 1000u);
   // Tracing does not change what the RTL does.
   EXPECT_FALSE(compare(run_model(p, c.triangles), traced).found);
 }
@@ -305,7 +305,7 @@ TEST(RtlReplay, WritesATriAndAProfileThatSnapBack) {
   Profile p = hires_profile();
   const CosimCase c = random_case(p, 8, 25);
   const std::string prefix = replay_prefix("replay_test");
-  const std::string command = write_replay(prefix, p, c.triangles);
+  const std::string command = write_replay(prefix, p, c.triangles, 1);
   EXPECT_NE(command.find(prefix + ".tri"), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(prefix + ".tri"));
   EXPECT_TRUE(std::filesystem::exists(prefix + ".json"));

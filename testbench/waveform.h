@@ -1,0 +1,18 @@
+// Waveform files of the RTL backend: an FST written by Verilator, converted to VCD on request, and a
+// GTKWave save file that opens it with the units' ports grouped (docs/debugging.md).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace rastersim::rtl {
+
+// Rewrites the FST at `fst_path` as a VCD at `vcd_path` (the same signals and times).
+void fst_to_vcd(const std::string& fst_path, const std::string& vcd_path);
+
+// A GTKWave save file for the FST at `fst_path` (read for its signal names), naming `dumpfile` as
+// the file to open: a group "frame" (clock, reset, the command handshake, the debug monitor's frame
+// cycle and triangle indices) and a group per unit of the pipeline with its ports.
+void write_gtkwave_save(const std::string& fst_path, const std::string& dumpfile, const std::string& save_path);
+
+}  // namespace rastersim::rtl
