@@ -2,12 +2,15 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <mutex>
 #include <sstream>
+#include <thread>
 
 #include "model/input_error.h"
 #include "outputs.h"
@@ -178,6 +181,9 @@ CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
       ->type_name("FILE");
   cmd->add_flag_callback("--no-coverage-gate", [&o] { o.coverage_gate = false; },
                          "exit 0 even when a reachable coverage bin stays at zero (a whole run exits 1 by default)");
+  cmd->add_option("--jobs", o.jobs,
+                  "frames run in parallel, each on its own model and RTL (the report is the same as with 1; default 1)")
+      ->type_name("N");
   cmd->add_option("--frame", o.frame, "run only frame K (as numbered in reports: the directed frames from 0, then the random ones)")
       ->type_name("K");
   cmd->add_option("--export", o.export_dir,
@@ -231,6 +237,7 @@ int run_cosim(const CosimOptions& o) {
   const int64_t directed = plan.directed_count();
   const bool tty = isatty(STDERR_FILENO) != 0;
   const int64_t total = directed + o.count;
+  if (o.jobs < 1 || o.jobs > 256) throw InputError("--jobs " + std::to_string(o.jobs) + " is outside 1..256");
   if (o.frame >= total)
     throw InputError("--frame " + std::to_string(o.frame) + ": this run has frames 0.." + std::to_string(total - 1) +
                      " (" + std::to_string(directed) + " directed, then --count " + std::to_string(o.count) + " random)");
@@ -254,42 +261,125 @@ int run_cosim(const CosimOptions& o) {
   int64_t passed = 0, failed = 0, directed_run = 0;
   // With the JUnit XML or the coverage on standard output, the report goes to standard error.
   std::ostream& info = outputs.writes_stdout() ? std::cerr : std::cout;
-  rtl::RtlResult last_model;
-  for (int64_t k = first; k < total; k += step) {
-    const uint64_t frame_seed = o.seed + uint64_t(k);
+
+  // One frame through the model and the RTL; `outputs`: with the waveform and, on a divergence,
+  // the replay files and the waveform window.
+  struct Outcome {
+    int64_t k = 0;
+    std::string name;
+    size_t triangles = 0;
+    double seconds = 0;
+    bool passed = true;
+    std::string message;
+    rtl::CoverageCounts hits;
+    int64_t cycles = 0;
+  };
+  auto run_frame = [&](int64_t k, bool with_outputs) {
     rtl::CosimCase c = plan.frame(k);
-    directed_run += k < directed;
     if (!varied.empty() || k < directed) c.name += " (" + settings_summary(c.profile) + ")";
-    if (tty)
-      std::fprintf(stderr, "\rcosim: %lld / %lld frames, %lld failed (%s)\033[K", (long long)(passed + failed),
-                   (long long)in_shard, (long long)failed, c.name.c_str());
     rtl::RtlOptions options;
-    options.seed = frame_seed;
-    options.wave_path = wave.wave_temp;
-    options.wave_vcd = wave.vcd;
-    options.wave_from = o.wave.from;
-    options.wave_to = o.wave.to;
-    options.gtkwave_save_path = wave.save_temp;
-    options.wave_name = o.wave.path;
-    const std::string prefix = (std::filesystem::path(o.replay_dir) / ("rastersim-replay-" + std::to_string(k))).string();
+    options.seed = o.seed + uint64_t(k);
+    if (with_outputs) {
+      options.wave_path = wave.wave_temp;
+      options.wave_vcd = wave.vcd;
+      options.wave_from = o.wave.from;
+      options.wave_to = o.wave.to;
+      options.gtkwave_save_path = wave.save_temp;
+      options.wave_name = o.wave.path;
+    }
+    const std::string prefix =
+        with_outputs ? (std::filesystem::path(o.replay_dir) / ("rastersim-replay-" + std::to_string(k))).string() : "";
     const auto start = std::chrono::steady_clock::now();
     const rtl::CosimReport report = rtl::cosim(c.profile, c.triangles, options, prefix);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    results.push_back(FrameResult{k, c.name, seconds, report.passed, report.passed ? "" : report.message()});
+    Outcome out;
+    out.k = k;
+    out.name = c.name;
+    out.triangles = c.triangles.size();
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out.passed = report.passed;
+    out.message = report.passed ? "" : report.message();
     // What a frame's stimulus reached, from the model's run of it.
-    rtl::CoverageCounts hits = rtl::frame_coverage(c.profile, c.triangles, report.model, max_latency);
-    last_model.stats = report.model.stats;
-    for (size_t b = 0; b < bins.size(); ++b) total_hits[b] += hits[b], frames_hit[b] += hits[b] > 0;
-    if (!o.coverage_out.empty()) frame_hits.emplace_back(k, std::move(hits));
-    if (report.passed) {
+    out.hits = rtl::frame_coverage(c.profile, c.triangles, report.model, max_latency);
+    out.cycles = report.model.stats.cycles;
+    return out;
+  };
+  std::vector<int64_t> frames;
+  for (int64_t k = first; k < total; k += step) frames.push_back(k);
+  std::vector<Outcome> outcomes(frames.size());
+  std::mutex progress_mutex;
+  int64_t done = 0, failures = 0;
+  auto progress = [&](const std::string& name) {
+    if (!tty) return;
+    std::lock_guard<std::mutex> lock(progress_mutex);
+    std::fprintf(stderr, "\rcosim: %lld / %lld frames, %lld failed (%s)\033[K", (long long)done, (long long)in_shard,
+                 (long long)failures, name.c_str());
+  };
+  size_t kept = frames.size();  // outcomes[0, kept) are the frames the run reports
+  if (o.jobs == 1) {
+    for (size_t i = 0; i < frames.size(); ++i) {
+      progress("frame " + std::to_string(frames[i]));
+      outcomes[i] = run_frame(frames[i], true);
+      ++done;
+      if (!outcomes[i].passed) {
+        ++failures;
+        if (!o.keep_going) {
+          kept = i + 1;
+          break;
+        }
+      }
+    }
+  } else {
+    // Frames in parallel, each on its own verilated model; the report is the same as one job's:
+    // frames in order, and without --keep-going none after the first divergence.
+    std::atomic<size_t> next{0};
+    std::atomic<size_t> first_failure{frames.size()};
+    std::exception_ptr error;
+    auto worker = [&] {
+      try {
+        for (size_t i = next++; i < frames.size() && i < first_failure; i = next++) {
+          outcomes[i] = run_frame(frames[i], false);
+          {
+            std::lock_guard<std::mutex> lock(progress_mutex);
+            ++done;
+            if (!outcomes[i].passed) {
+              ++failures;
+              if (!o.keep_going && i < first_failure) first_failure = i;
+            }
+          }
+          progress(outcomes[i].name);
+        }
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(progress_mutex);
+        if (!error) error = std::current_exception();
+        first_failure = 0;
+      }
+    };
+    std::vector<std::thread> threads;
+    for (int j = 0; j < o.jobs; ++j) threads.emplace_back(worker);
+    for (std::thread& t : threads) t.join();
+    if (error) std::rethrow_exception(error);
+    if (!o.keep_going && first_failure < frames.size()) kept = first_failure + 1;
+    // The files a frame leaves, as one job leaves them: a divergence's replay and waveform window,
+    // and the last frame's waveform.
+    for (size_t i = 0; i < kept; ++i)
+      if (!outcomes[i].passed || (i + 1 == kept && !wave.wave_temp.empty())) outcomes[i] = run_frame(frames[i], true);
+  }
+  int64_t last_cycles = 0;
+  for (size_t i = 0; i < kept; ++i) {
+    Outcome& f = outcomes[i];
+    directed_run += f.k < directed;
+    results.push_back(FrameResult{f.k, f.name, f.seconds, f.passed, f.message});
+    last_cycles = f.cycles;
+    for (size_t b = 0; b < bins.size(); ++b) total_hits[b] += f.hits[b], frames_hit[b] += f.hits[b] > 0;
+    if (!o.coverage_out.empty()) frame_hits.emplace_back(f.k, std::move(f.hits));
+    if (f.passed) {
       ++passed;
       continue;
     }
     ++failed;
     if (tty) std::fprintf(stderr, "\r\033[K");
-    info << "frame " << k << " (" << c.name << ", " << c.triangles.size() << " triangles, power-on seed "
-              << frame_seed << "): " << report.message() << "\n";
-    if (!o.keep_going) break;
+    info << "frame " << f.k << " (" << f.name << ", " << f.triangles << " triangles, power-on seed "
+         << o.seed + uint64_t(f.k) << "): " << f.message << "\n";
   }
   if (tty) std::fprintf(stderr, "\r\033[K");
   const std::vector<std::string> holes = rtl::coverage_holes(bins, total_hits);
@@ -301,7 +391,7 @@ int run_cosim(const CosimOptions& o) {
     write_text_file(coverage_temp, o.coverage_out,
                     coverage_json(bins, total_hits, frames_hit, frame_hits, holes, gated).dump(2) + "\n");
   // The last frame's waveform is kept whether it passed or not: it is what a divergence is debugged with.
-  if (!wave.wave_temp.empty() && passed + failed > 0) check_waveform_written(wave, o.wave, last_model.stats.cycles);
+  if (!wave.wave_temp.empty() && passed + failed > 0) check_waveform_written(wave, o.wave, last_cycles);
   if (!junit_temp.empty() || !coverage_temp.empty() || (!wave.wave_temp.empty() && passed + failed > 0)) outputs.commit();
   print_coverage(info, bins, total_hits, frames_hit);
   info << "profile " << profile_summary(profile) << ", " << settings_summary(profile) << "; shard " << o.shard

@@ -27,6 +27,7 @@ struct CosimOptions {
   std::string replay_dir = ".";
   WaveOptions wave;             // the RTL waveform of the last frame run
   int64_t frame = -1;           // run only this frame (>= 0)
+  int jobs = 1;                 // frames run in parallel
   std::string export_dir;       // write the frames as replay files instead of running them
   std::string coverage_out;     // the functional coverage as JSON, when not empty
   bool coverage_gate = true;    // a whole run exits 1 when a reachable coverage bin stays at zero

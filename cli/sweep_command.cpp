@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -10,8 +11,10 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <mutex>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include "backend.h"
 #include "hw_cost.h"
@@ -292,6 +295,8 @@ CLI::App* add_sweep_command(CLI::App& app, SweepOptions& o) {
   cmd->add_option("--rtl-dir", o.rtl_dir, "RTL sources for --hw-cost (default: the source tree's rtl/)")
       ->type_name("DIR");
   cmd->add_flag("!--no-plots", o.plots, "write the CSV and the gnuplot script only");
+  cmd->add_option("--jobs", o.jobs, "points rendered in parallel (the results are the same as with 1; default 1)")
+      ->type_name("N");
   add_profile_options(*cmd, o.scene.profile);
   return cmd;
 }
@@ -305,6 +310,9 @@ int run_sweep(const SweepOptions& o) {
   }
   const Profile base = resolve_profile(o.scene.profile);
   const Backend backend = select_backend(o.backend);
+  if (o.jobs < 1 || o.jobs > 256) throw InputError("--jobs " + std::to_string(o.jobs) + " is outside 1..256");
+  if (o.jobs > 1 && backend == Backend::Systemc)
+    throw InputError("--jobs with the SystemC backend: SystemC runs one simulation per process");
   // Every point's profile and camera are checked before anything runs.
   size_t total = 1;
   for (const SweepAxis& a : axes) total *= a.values.size();
@@ -342,7 +350,23 @@ int run_sweep(const SweepOptions& o) {
   if (ec || !fs::is_directory(o.out_dir)) throw InputError("--out " + o.out_dir + ": cannot create the folder");
   const std::string rtl_dir = o.rtl_dir.empty() ? std::string(RASTERSIM_SOURCE_DIR) + "/rtl" : o.rtl_dir;
 
-  for (size_t i = 0; i < total; ++i) {
+  // Points in parallel with --jobs; each one's line is printed in point order.
+  std::mutex mutex;            // the printing state and --hw-cost (its syntheses run one at a time)
+  size_t printed = 0;
+  std::vector<bool> done(total, false);
+  auto print_ready = [&] {
+    for (; printed < total && done[printed]; ++printed) {
+      const Point& point = points[printed];
+      std::cout << "[" << printed + 1 << "/" << total << "]";
+      for (size_t a = 0; a < axes.size(); ++a) std::cout << " " << axes[a].key << "=" << point.values[a];
+      std::cout << ": " << point.stats.cycles << " cycles, " << point.stats.depth_fail << " depth fails, "
+                << point.wrong_depth_tests << " wrong depth tests, max depth error " << point.max_depth_error;
+      if (o.hw_cost)
+        std::cout << ", " << point.cost.ice40_luts << " iCE40 LUTs" << (point.cost.from_cache ? " (cached)" : "");
+      std::cout << std::endl;
+    }
+  };
+  auto run_point = [&](size_t i) {
     Point& point = points[i];
     const Profile& p = profiles[i];
     const std::vector<ScreenTriangle> screen = load_input(o.scene.input, o.scene.scene, p, camera_options(scenes[i]));
@@ -354,15 +378,27 @@ int run_sweep(const SweepOptions& o) {
     point.stats = render_triangles(backend, p, snapped, &meter, nullptr, backend_options).stats;
     point.max_depth_error = meter.max_depth_error();
     point.wrong_depth_tests = meter.wrong_depth_tests();
+    std::lock_guard<std::mutex> lock(mutex);
     if (o.hw_cost) point.cost = hardware_cost(p, rtl_dir, o.hw_cost_cache);
-    std::cout << "[" << i + 1 << "/" << total << "]";
-    for (size_t a = 0; a < axes.size(); ++a) std::cout << " " << axes[a].key << "=" << point.values[a];
-    std::cout << ": " << point.stats.cycles << " cycles, " << point.stats.depth_fail << " depth fails, "
-              << point.wrong_depth_tests << " wrong depth tests, max depth error " << point.max_depth_error;
-    if (o.hw_cost)
-      std::cout << ", " << point.cost.ice40_luts << " iCE40 LUTs" << (point.cost.from_cache ? " (cached)" : "");
-    std::cout << std::endl;
-  }
+    done[i] = true;
+    print_ready();
+  };
+  std::atomic<size_t> next{0};
+  std::exception_ptr error;
+  auto worker = [&] {
+    try {
+      for (size_t i = next++; i < total; i = next++) run_point(i);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!error) error = std::current_exception();
+      next = total;
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int j = 1; j < o.jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (std::thread& t : threads) t.join();
+  if (error) std::rethrow_exception(error);
 
   // The CSV and the plot script, written to temporaries and renamed together.
   OutputFiles outputs;

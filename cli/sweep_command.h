@@ -24,6 +24,7 @@ struct SweepOptions {
   std::string hw_cost_cache;       // empty: $XDG_CACHE_HOME or ~/.cache, then rastersim/hw-cost
   std::string rtl_dir;             // empty: the rtl/ of the source tree this binary was built from
   bool plots = true;
+  int jobs = 1;                    // points rendered in parallel
 };
 
 CLI::App* add_sweep_command(CLI::App& app, SweepOptions& options);

@@ -807,6 +807,34 @@ TEST(CliRtl, CosimExportedFrameReplaysExactly) {
   }
 }
 
+// The JUnit XML without its times (the only part that differs between runs).
+std::string without_times(std::string xml) {
+  for (size_t at = xml.find(" time=\""); at != std::string::npos; at = xml.find(" time=\"", at)) {
+    const size_t end = xml.find('"', at + 7);
+    xml.erase(at, end + 1 - at);
+  }
+  return xml;
+}
+
+// --jobs N runs frames in parallel and reports exactly what one job reports.
+TEST(CliRtl, CosimJobsGiveTheSameReportAsOneJob) {
+  ScratchDir dir;
+  std::map<int, RunResult> runs;
+  for (const int jobs : {1, 2, 3}) {
+    const std::string j = std::to_string(jobs);
+    runs[jobs] = run_rastersim(dir, {"cosim", "--count", "12", "--width", "64", "--height", "48", "--setup-interval", "2",
+                                     "--jobs", j, "--junit", "j" + j + ".xml", "--coverage", "c" + j + ".json"});
+    ASSERT_EQ(runs[jobs].exit_code, 0) << runs[jobs].err;
+  }
+  for (const int jobs : {2, 3}) {
+    const std::string j = std::to_string(jobs);
+    EXPECT_EQ(runs[jobs].out, runs[1].out) << jobs;
+    EXPECT_EQ(without_times(read_text(dir.path("j" + j + ".xml"))), without_times(read_text(dir.path("j1.xml")))) << jobs;
+    EXPECT_EQ(read_text(dir.path("c" + j + ".json")), read_text(dir.path("c1.json"))) << jobs;
+  }
+  EXPECT_EQ(run_rastersim(dir, {"cosim", "--count", "1", "--width", "64", "--height", "48", "--jobs", "0"}).exit_code, 2);
+}
+
 // A count whose frame indices overflow once ran no frame and reported "0 passed, 0 failed", exit 0.
 TEST(CliRtl, CosimRefusesACountItCannotRun) {
   ScratchDir dir;

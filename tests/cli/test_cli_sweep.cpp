@@ -98,6 +98,25 @@ int plot_frame_width(const Image& plot) {
 // Four axes: twelve curves with long names. gnuplot's colours repeat every 8 linetypes ("unless
 // explicitly defined"), so no two curves may share colour, point shape and dash; and the key at the
 // right must leave the plot about the 300 px the key of docs/studies.md's memory study leaves it.
+// --jobs N renders points in parallel: the same CSV and the same lines, in point order.
+TEST(CliSweep, JobsGiveTheSameResultsAsOneJob) {
+  ScratchDir dir;
+  std::map<std::string, RunResult> runs;
+  for (const std::string jobs : {"1", "3"}) {
+    runs[jobs] = run_rastersim(dir, {"sweep", "--scene", "overlap", "--width", "64", "--height", "48", "--vary",
+                                     "memory_latency=1,4", "--vary", "traversal=bbox,span", "--vary", "setup_interval=0,2",
+                                     "--out", "s" + jobs, "--no-plots", "--jobs", jobs});
+    ASSERT_EQ(runs[jobs].exit_code, 0) << runs[jobs].err;
+  }
+  EXPECT_EQ(read_text(dir.path("s3/sweep.csv")), read_text(dir.path("s1/sweep.csv")));
+  auto points = [](const std::string& out) { return out.substr(0, out.find("wrote")); };
+  EXPECT_EQ(points(runs["3"].out), points(runs["1"].out));
+  EXPECT_TRUE(contains(runs["3"].out, "[8/8]")) << runs["3"].out;
+  EXPECT_EQ(run_rastersim(dir, {"sweep", "--scene", "overlap", "--vary", "memory_latency=1,4", "--out", "x", "--jobs", "0"})
+                .exit_code,
+            2);
+}
+
 TEST(CliSweep, ManyLongNamedCurvesStayDistinctAndLeaveRoomForThePlot) {
   ScratchDir dir;
   const RunResult r = run_rastersim(dir, {"sweep", "--scene", "overlap", "--width", "16", "--height", "8", "--vary",
