@@ -9,10 +9,12 @@
 #include <fstream>
 #include <iostream>
 #include <mutex>
+#include <set>
 #include <sstream>
 #include <thread>
 
 #include "model/input_error.h"
+#include "model/text_file.h"
 #include "outputs.h"
 #ifdef RASTERSIM_HAVE_RTL
 #include "testbench/cosim_cases.h"
@@ -410,6 +412,62 @@ int run_cosim(const CosimOptions& o) {
   info << passed << " passed, " << failed << " failed\n";
   return failed == 0 && (holes.empty() || !gated) ? 0 : 1;
 #endif
+}
+
+CLI::App* add_junit_merge_command(CLI::App& app, JunitMergeOptions& o) {
+  CLI::App* cmd = app.add_subcommand("junit-merge", "merge the JUnit files of a sharded cosim run into one");
+  cmd->add_option("-o,--output", o.out, "the merged JUnit XML")->required()->type_name("FILE");
+  cmd->add_option("inputs", o.inputs, "the shards' JUnit files (cosim --junit)")->required()->type_name("IN...");
+  return cmd;
+}
+
+int run_junit_merge(const JunitMergeOptions& o) {
+  // A number attribute of an opening tag: name="value".
+  auto attribute = [](const std::string& tag, const std::string& name, const std::string& file) {
+    const std::string key = " " + name + "=\"";
+    const size_t at = tag.find(key);
+    if (at == std::string::npos) throw InputError(file, 0, "a <testsuite> without " + name);
+    return std::stod(tag.substr(at + key.size(), tag.find('"', at + key.size()) - at - key.size()));
+  };
+  std::string suites;
+  double tests = 0, failures = 0, time = 0;
+  std::set<std::string> frames;
+  for (const std::string& file : o.inputs) {
+    const std::string xml = read_text_file(file, "junit-merge", size_t(1) << 30);
+    if (xml.find("<testsuite name=\"rastersim.cosim.") == std::string::npos)
+      throw InputError(file, 0, "not a JUnit file of rastersim cosim (no rastersim.cosim testsuite)");
+    for (size_t at = xml.find("<testsuite "); at != std::string::npos; at = xml.find("<testsuite ", at + 1)) {
+      const size_t end = xml.find("</testsuite>", at);
+      const size_t tag_end = xml.find('>', at);
+      if (end == std::string::npos || tag_end == std::string::npos)
+        throw InputError(file, 0, "a <testsuite> that does not end");
+      const std::string tag = xml.substr(at, tag_end - at);
+      tests += attribute(tag, "tests", file);
+      failures += attribute(tag, "failures", file);
+      time += attribute(tag, "time", file);
+      const std::string block = xml.substr(at, end + 12 - at);
+      const std::string name_key = "<testcase classname=\"rastersim.cosim\" name=\"";
+      for (size_t c = block.find(name_key); c != std::string::npos; c = block.find(name_key, c + 1)) {
+        const size_t begin = c + name_key.size();
+        const std::string name = block.substr(begin, block.find('"', begin) - begin);
+        if (!frames.insert(name).second)
+          throw InputError(file, 0, "'" + name + "' is in another input too: shards of one run do not overlap");
+      }
+      suites += "  " + block + "\n";
+    }
+  }
+  OutputFiles outputs;
+  const std::string temp = outputs.add(o.out, "--output");
+  std::ostringstream x;
+  x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites tests=\"" << int64_t(tests) << "\" failures=\""
+    << int64_t(failures) << "\" time=\"" << time << "\">\n"
+    << suites << "</testsuites>\n";
+  write_text_file(temp, o.out, x.str());
+  outputs.commit();
+  std::ostream& info = outputs.writes_stdout() ? std::cerr : std::cout;
+  info << "merged " << o.inputs.size() << " files: " << int64_t(tests) << " frames, " << int64_t(failures)
+       << " failed\n";
+  return failures == 0 ? 0 : 1;
 }
 
 }  // namespace rastersim

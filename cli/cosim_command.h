@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -35,6 +36,16 @@ struct CosimOptions {
 };
 
 CLI::App* add_cosim_command(CLI::App& app, CosimOptions& options);
+
+// `rastersim junit-merge -o OUT IN...`: the JUnit files of a sharded cosim run as one (every
+// shard's testsuite, the totals summed); a frame in two inputs is an error.
+struct JunitMergeOptions {
+  std::string out;
+  std::vector<std::string> inputs;
+};
+CLI::App* add_junit_merge_command(CLI::App& app, JunitMergeOptions& options);
+// 0 when no merged frame failed, 1 otherwise; throws InputError for a file that is not a cosim JUnit file.
+int run_junit_merge(const JunitMergeOptions& options);
 // 0 when every frame agrees (and, for a whole run, every reachable coverage bin is hit), 1 when one
 // diverged or a reachable bin stayed at zero; throws InputError for bad usage.
 int run_cosim(const CosimOptions& options);

@@ -29,18 +29,20 @@ int main(int argc, char** argv) {
   CosimOptions cosim_options;
   VectorsOptions vectors_options;
   SweepOptions sweep_options;
+  JunitMergeOptions junit_merge_options;
   CLI::App* render = add_render_command(app, render_options);
   CLI::App* bench = add_bench_command(app, bench_options);
   CLI::App* scenes = add_scenes_command(app);
   CLI::App* cosim = add_cosim_command(app, cosim_options);
   CLI::App* vectors = add_vectors_command(app, vectors_options);
   CLI::App* sweep = add_sweep_command(app, sweep_options);
+  CLI::App* junit_merge = add_junit_merge_command(app, junit_merge_options);
 
   // CLI11 would report an unknown subcommand as a missing one; name it instead.
   bool known_subcommand = false;
-  for (const CLI::App* sub : {render, bench, scenes, cosim, vectors, sweep}) known_subcommand |= argc > 1 && sub->check_name(argv[1]);
+  for (const CLI::App* sub : {render, bench, scenes, cosim, vectors, sweep, junit_merge}) known_subcommand |= argc > 1 && sub->check_name(argv[1]);
   if (argc > 1 && argv[1][0] != '-' && !known_subcommand) {
-    std::cerr << "rastersim: unknown subcommand '" << argv[1] << "' (render, cosim, vectors, sweep, bench, scenes; see --help)\n";
+    std::cerr << "rastersim: unknown subcommand '" << argv[1] << "' (render, cosim, junit-merge, vectors, sweep, bench, scenes; see --help)\n";
     return kExitBadInput;
   }
   try {
@@ -56,6 +58,7 @@ int main(int argc, char** argv) {
     if (cosim->parsed()) return run_cosim(cosim_options);
     if (vectors->parsed()) return run_vectors(vectors_options);
     if (sweep->parsed()) return run_sweep(sweep_options);
+    if (junit_merge->parsed()) return run_junit_merge(junit_merge_options);
   } catch (const InputError& e) {
     std::cerr << "rastersim: " << e.what() << "\n";
     return kExitBadInput;

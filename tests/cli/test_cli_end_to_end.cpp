@@ -552,6 +552,45 @@ TEST(CliRtl, CosimExitsOneWhenAReachableBinStaysAtZero) {
   EXPECT_TRUE(contains(r.out, "(a shard: not gated)")) << r.out;
 }
 
+// junit-merge: the shards' files as one, holding exactly the unsharded run's frames; overlapping
+// inputs and foreign files are refused; a merged failure gives exit 1.
+TEST(CliRtl, JunitMergeOfShardsIsTheWholeRun) {
+  ScratchDir dir;
+  const std::vector<std::string> run = {"cosim", "--count", "6", "--width", "64", "--height", "48", "--seed", "3"};
+  std::vector<std::string> args = run;
+  args.insert(args.end(), {"--junit", "all.xml"});
+  ASSERT_EQ(run_rastersim(dir, args).exit_code, 0);
+  for (const char* k : {"1", "2"}) {
+    args = run;
+    args.insert(args.end(), {"--shard", std::string(k) + "/2", "--junit", std::string("s") + k + ".xml"});
+    ASSERT_EQ(run_rastersim(dir, args).exit_code, 0);
+  }
+  RunResult r = run_rastersim(dir, {"junit-merge", "-o", "merged.xml", "s1.xml", "s2.xml"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::vector<std::string> merged = junit_testcases(dir.path("merged.xml")), all = junit_testcases(dir.path("all.xml"));
+  std::sort(merged.begin(), merged.end());
+  std::sort(all.begin(), all.end());
+  EXPECT_EQ(merged, all);
+  EXPECT_TRUE(contains(read_text(dir.path("merged.xml")), "<testsuites tests=\"" + std::to_string(all.size()) +
+                                                              "\" failures=\"0\""));
+  EXPECT_TRUE(contains(r.out, "merged 2 files: " + std::to_string(all.size()) + " frames, 0 failed")) << r.out;
+  r = run_rastersim(dir, {"junit-merge", "-o", "twice.xml", "s1.xml", "s1.xml"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(contains(r.err, "is in another input too")) << r.err;
+  dir.write("other.xml", "<testsuites><testsuite name=\"other\" tests=\"1\"></testsuite></testsuites>\n");
+  EXPECT_EQ(run_rastersim(dir, {"junit-merge", "-o", "x.xml", "other.xml"}).exit_code, 2);
+  // A shard whose frame failed (its file edited as a failing run writes it).
+  std::string failing = read_text(dir.path("s2.xml"));
+  failing.replace(failing.find("failures=\"0\""), 14, "failures=\"1\"");
+  failing.replace(failing.find("failures=\"0\"", failing.find("<testsuite ")), 14, "failures=\"1\"");
+  dir.write("failing.xml", failing);
+  r = run_rastersim(dir, {"junit-merge", "-o", "m2.xml", "s1.xml", "failing.xml"});
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_TRUE(contains(r.out, "1 failed")) << r.out;
+  EXPECT_FALSE(fs::exists(dir.path("twice.xml")));
+  EXPECT_FALSE(fs::exists(dir.path("x.xml")));
+}
+
 TEST(CliRtl, CosimRejectsABadShardAndWritesNothing) {
   ScratchDir dir;
   for (const char* shard : {"0/2", "3/2", "1/0", "a/b", "1/2/3"}) {
