@@ -178,6 +178,14 @@ def cell_counts(stat_json, top):
     return luts, ffs, brams, carries
 
 
+def ecp5_counts(stat_json, top):
+    """LUT4s, flip-flops, 18x18 multipliers, carry cells (two bits each) and block RAMs of synth_ecp5."""
+    cells = json.load(open(stat_json))["modules"]["\\" + top]["num_cells_by_type"]
+    return {"ecp5_lut4": cells.get("LUT4", 0), "ecp5_ffs": cells.get("TRELLIS_FF", 0),
+            "ecp5_mult18": cells.get("MULT18X18D", 0), "ecp5_ccu2c": cells.get("CCU2C", 0),
+            "ecp5_dp16kd": cells.get("DP16KD", 0)}
+
+
 def check_problems(log):
     """The problems yosys's `check` passes found (undriven nets, conflicting drivers, logic loops):
     their total and the first few warning lines."""
@@ -234,7 +242,8 @@ def cost_unit(unit, args, profile, work):
         read = os.path.join(work, top + ".v")
         with open(read, "w") as f:
             f.write(SHIMS[unit])
-        parameters = dict(profile)
+        parameters = {p: profile[p] for p in PROFILE_PARAMETERS
+                      if re.search(r"parameter\s+integer\s+" + p + r"\b", SHIMS[unit])}
     else:
         top = unit
         parameters = {p: profile[p] for p in module_parameters(unit)}
@@ -245,6 +254,9 @@ def cost_unit(unit, args, profile, work):
     row = {"unit": unit, "contents": UNITS[unit], "device": args.device, **{p.lower(): v for p, v in profile.items()},
            "memory_bits": memory_bits, "luts": None, "ffs": None, "brams": None, "carries": None,
            "check_problems": None, "fmax_mhz": None, "note": "", "synth_s": None, "pnr_s": None}
+    if args.ecp5:
+        row.update({"ecp5_lut4": None, "ecp5_ffs": None, "ecp5_mult18": None, "ecp5_ccu2c": None,
+                    "ecp5_dp16kd": None, "ecp5_synth_s": None})
     memory_fits = memory_bits <= device_brams * BRAM_BITS
     if not memory_fits and not args.synthesize_memory:
         row["note"] = (f"not synthesized: does not fit (frame memory {memory_bits} bits = "
@@ -276,6 +288,20 @@ def cost_unit(unit, args, profile, work):
                      else "memory synthesized beyond the block RAM (--synthesize-memory)")
     elif unit == "rastersim_core":
         notes.append(f"frame memory ({frame_bits} bits) not included: external behind the memory port")
+    if args.ecp5:
+        # The same unit through synth_ecp5 (LUT4s and MULT18X18D multipliers; no ECP5 place and route
+        # is installed here).
+        ecp5 = (f"read_verilog -sv -I{RTL} {rtl_sources()} {read}\nchparam {chparam} {top}\nhierarchy -top {top}\n"
+                f"synth_ecp5 -top {top}\ntee -q -o stat_ecp5.json stat -json\n")
+
+        def synthesize_ecp5():
+            start = time.monotonic()
+            yosys(ecp5, os.path.join(unit_dir, "synth_ecp5.log"), unit_dir)
+            result = ecp5_counts(os.path.join(unit_dir, "stat_ecp5.json"), top)
+            result["ecp5_synth_s"] = round(time.monotonic() - start)
+            return result
+        row.update(cached(os.path.join(unit_dir, "synth_ecp5.json"), cache_key(unit, read and SHIMS[unit], ecp5),
+                          synthesize_ecp5))
     if not args.no_pnr:
         if row["luts"] > device_luts or row["brams"] > device_brams:
             lut_ratio, bram_ratio = row["luts"] / device_luts, row["brams"] / device_brams
@@ -326,6 +352,9 @@ def main():
                              "device's block RAM (small profiles only: yosys builds what does not map to block RAM "
                              "from flip-flops)")
     parser.add_argument("--no-pnr", action="store_true", help="counts only, no nextpnr (no Fmax)")
+    parser.add_argument("--ecp5", action="store_true",
+                        help="also synthesize each unit with yosys synth_ecp5: LUT4, flip-flop, MULT18X18D, CCU2C "
+                             "and DP16KD counts in the ecp5_* columns (no ECP5 place and route)")
     parser.add_argument("--rtl-dir", default=RTL, help="RTL sources (default: the source tree's rtl/)")
     parser.add_argument("--out", default=".", help="folder for hw-cost.csv and hw-cost.json")
     parser.add_argument("--work", default="", help="folder for the tools' files and the per-unit results that a "
@@ -349,6 +378,9 @@ def main():
         rows.append(row)
         counts = (f"{row['luts']} LUT, {row['ffs']} FF, {row['brams']} BRAM, Fmax {row['fmax_mhz']} MHz, "
                   f"yosys {row['synth_s']} s, wrapper + nextpnr {row['pnr_s']} s" if row["luts"] is not None else "")
+        if args.ecp5 and row["ecp5_lut4"] is not None:
+            counts += (f"; ECP5: {row['ecp5_lut4']} LUT4, {row['ecp5_ffs']} FF, {row['ecp5_mult18']} MULT18X18D, "
+                       f"{row['ecp5_ccu2c']} CCU2C, {row['ecp5_dp16kd']} DP16KD (yosys {row['ecp5_synth_s']} s)")
         print(f"hw-cost: {unit} [{row['contents']}]: {counts}{'; ' if counts and row['note'] else ''}{row['note']}",
               file=sys.stderr, flush=True)
 
