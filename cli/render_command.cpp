@@ -95,6 +95,11 @@ void add_scene_options(CLI::App& app, RenderOptions& o) {
       ->type_name("INPUT");
   cmd->add_option("--scene", o.scene, "built-in scene to render when no INPUT is given (see `rastersim scenes`)")
       ->type_name("NAME");
+  add_camera_options(app, o);
+}
+
+void add_camera_options(CLI::App& app, RenderOptions& o) {
+  CLI::App* cmd = &app;
   const char* const camera = "Camera (3D inputs: .obj, .json scenes, 3D built-in scenes)";
   for (auto [flag, vec, help] : {std::tuple{"--eye", &o.eye, "camera position X,Y,Z (world space)"},
                                  std::tuple{"--target", &o.target, "point the camera looks at X,Y,Z"},
@@ -105,6 +110,25 @@ void add_scene_options(CLI::App& app, RenderOptions& o) {
                                    std::tuple{"--far", &o.far, "far plane distance, > near"}})
     cmd->add_option(flag, *value, help)->expected(1)->type_name("NUMBER")->group(camera);
   cmd->add_flag("--ortho", o.ortho, "orthographic projection")->group(camera);
+}
+
+std::string camera_words(const RenderOptions& o) {
+  std::ostringstream words;
+  words.precision(17);
+  auto vec = [&](const char* flag, const std::vector<double>& v) {
+    if (!v.empty()) words << " " << flag << " " << v[0] << "," << v[1] << "," << v[2];
+  };
+  auto one = [&](const char* flag, const std::vector<double>& v) {
+    if (!v.empty()) words << " " << flag << " " << v[0];
+  };
+  vec("--eye", o.eye);
+  vec("--target", o.target);
+  vec("--up", o.up);
+  one("--fov", o.fov);
+  one("--near", o.near);
+  one("--far", o.far);
+  if (o.ortho) words << " --ortho";
+  return words.str().empty() ? "" : words.str().substr(1);
 }
 
 frontend::CameraOptions camera_options(const RenderOptions& o) {

@@ -34,6 +34,10 @@ struct RenderOptions {
 CLI::App* add_render_command(CLI::App& app, RenderOptions& options);
 // INPUT, --scene and the camera flags (shared with `rastersim sweep`).
 void add_scene_options(CLI::App& command, RenderOptions& options);
+// The camera flags alone (`rastersim vectors` takes them too).
+void add_camera_options(CLI::App& command, RenderOptions& options);
+// The camera flags given, as command-line words ("--eye 3,2,4 --fov 40"; empty when none).
+std::string camera_words(const RenderOptions& options);
 // The camera flags given, for the front end.
 frontend::CameraOptions camera_options(const RenderOptions& options);
 // Returns the exit code; throws InputError (bad input or usage) and std::exception.

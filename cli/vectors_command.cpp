@@ -38,6 +38,7 @@ CLI::App* add_vectors_command(CLI::App& app, VectorsOptions& o) {
                                             "relative to the package (the checked-in vectors/ use ../../rtl)")
       ->type_name("REL");
   cmd->add_flag("--force", o.force, "replace the package already in --out");
+  add_camera_options(*cmd, o.camera);
   add_profile_options(*cmd, o.profile);
   return cmd;
 }
@@ -47,6 +48,9 @@ int run_vectors(const VectorsOptions& o) {
   const bool random = o.random_option && o.random_option->count() > 0;
   const int sources = int(!o.input.empty()) + int(!o.scene.empty()) + int(random) + int(!o.suite.empty());
   if (sources > 1) throw InputError("give one of INPUT, --scene, --random and --suite");
+  if ((random || !o.suite.empty()) && !camera_words(o.camera).empty())
+    throw InputError("the camera flags apply to 3D inputs (.obj, .json scenes, 3D built-in scenes), not to --random "
+                     "or --suite");
   if (o.seed_option && o.seed_option->count() > 0 && !random) throw InputError("--seed goes with --random");
   if (random && (o.random < 1 || o.random > 1000000)) throw InputError("--random must be in 1..1000000");
   if (!o.rtl_path.empty() && std::filesystem::path(o.rtl_path).is_absolute())
@@ -72,7 +76,9 @@ int run_vectors(const VectorsOptions& o) {
   } else {
     if (o.input.empty()) source = {"scene", o.scene.empty() ? "default" : o.scene, 0, 0};
     else source = {"file", std::filesystem::path(o.input).filename().string(), 0, 0};
-    for (const ScreenTriangle& t : load_input(o.input, o.scene, profile)) triangles.push_back(snap(t, profile));
+    source.camera = camera_words(o.camera);
+    for (const ScreenTriangle& t : load_input(o.input, o.scene, profile, camera_options(o.camera)))
+      triangles.push_back(snap(t, profile));
   }
   // The package's size is known only once the frame is rendered: count its fragments with the
   // model first (no trace: little memory) and refuse, before anything is held, a frame beyond the

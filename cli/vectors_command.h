@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "profile_options.h"
+#include "render_command.h"
 
 namespace rastersim {
 
@@ -22,6 +23,7 @@ struct VectorsOptions {
   bool force = false;         // replace an existing package
   CLI::Option* random_option = nullptr;
   CLI::Option* seed_option = nullptr;
+  RenderOptions camera;       // the camera flags (3D inputs)
   ProfileOptions profile;
 };
 

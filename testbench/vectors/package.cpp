@@ -48,8 +48,9 @@ std::string generator_name() { return std::string("rastersim ") + RASTERSIM_VERS
 std::string Source::arguments() const {
   if (kind == "random") return "--random " + std::to_string(count) + " --seed " + std::to_string(seed);
   if (kind == "suite") return "--suite " + name;
-  if (kind == "scene") return "--scene " + name;
-  return name;  // a file
+  const std::string camera_words = camera.empty() ? "" : " " + camera;
+  if (kind == "scene") return "--scene " + name + camera_words;
+  return name + camera_words;  // a file
 }
 
 namespace {
@@ -289,6 +290,7 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
     m["source"]["seed"] = source.seed;
   } else {
     m["source"]["name"] = source.name;
+    if (!source.camera.empty()) m["source"]["camera"] = source.camera;
   }
   m["regenerate"] = facts.regenerate_command;
   m["profile"] = Json::parse(profile_to_json(profile));

@@ -23,6 +23,7 @@ struct Source {
   std::string name;   // scene or suite name, or the input file's name (without its folder)
   int64_t count = 0;  // random: triangles
   uint64_t seed = 0;  // random: seed
+  std::string camera; // scene or file: the camera flags given (3D inputs), as command-line words
   // The words of `rastersim vectors` that select these triangles (a file by its bare name).
   std::string arguments() const;
 };

@@ -618,7 +618,7 @@ std::string readme_text(const PackageFacts& k) {
     << " (0: derived), MAX_MEMORY_LATENCY = " << p.memory_latency
     << " and the ports of rastersim/rtl/rastersim_top.sv. A port\nwith the same module name, parameters and ports "
     << "runs unchanged: `RTL_DIR=path/to/port ./run_icarus.sh`. The setup\nrecord (setup.hex) is read from the "
-    << "internal wires `dut.rec_*`; a port without them is run with\n`SIM_FLAGS=-DRS_NO_SETUP_RECORD`, which skips "
+    << "internal wires `dut.core.rec_*`; a port without them is run with\n`SIM_FLAGS=-DRS_NO_SETUP_RECORD`, which skips "
     << "those vectors (`N passed, M failed, K skipped`).\n\n"
     << "What the testbench drives and expects, cycle by cycle:\n\n"
     << "- `rst` is high for four rising edges, with the `cfg_*` inputs at the profile's values (held for the frame).\n"

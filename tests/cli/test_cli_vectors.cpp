@@ -49,6 +49,31 @@ TEST(CliVectors, WritesAPackageFromEachSource) {
   EXPECT_EQ(random["cycles"]["per_triangle"].size(), 5u);
 }
 
+// Camera flags on a 3D input (once refused): the package holds the frame `render` draws with the
+// same flags, and its manifest records them in the source and the regenerate command.
+TEST(CliVectors, CameraFlagsApplyToA3DInput) {
+  ScratchDir dir;
+  dir.write("quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3\nf 1 3 4\n");
+  const std::vector<std::string> camera = {"--eye", "0.5,0.25,3", "--fov", "40"};
+  std::vector<std::string> args = {"vectors", "quad.obj", "--width", "32", "--height", "24", "--out", "pkg"};
+  args.insert(args.end(), camera.begin(), camera.end());
+  RunResult r = run_rastersim(dir, args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json manifest = nlohmann::json::parse(read_text(dir.path("pkg") / "manifest.json"));
+  EXPECT_EQ(manifest["source"]["camera"], "--eye 0.5,0.25,3 --fov 40");
+  EXPECT_TRUE(contains(manifest["regenerate"].get<std::string>(), "quad.obj --eye 0.5,0.25,3 --fov 40 "));
+  std::vector<std::string> render = {"render", "quad.obj", "--width", "32", "--height", "24", "--stats", "s.json"};
+  render.insert(render.end(), camera.begin(), camera.end());
+  r = run_rastersim(dir, render);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(manifest["stats"]["fragments"], read_json(dir.path("s.json"))["fragments"]);
+  EXPECT_GT(manifest["stats"]["fragments"].get<int64_t>(), 0);
+  args = {"vectors", "--random", "3", "--eye", "1,2,3", "--width", "32", "--height", "24", "--out", "pkg2"};
+  r = run_rastersim(dir, args);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(contains(r.err, "camera flags apply to 3D inputs")) << r.err;
+}
+
 TEST(CliVectors, TheSameCommandGivesTheSameBytesAndForceReplaces) {
   ScratchDir dir;
   const std::vector<std::string> args = {"vectors", "--random", "4", "--seed", "9", "--width", "16", "--height", "12"};
