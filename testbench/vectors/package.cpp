@@ -273,6 +273,7 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   package.files.push_back({kTestbenchFile, testbench_text(facts), false});
   package.files.push_back({"run_icarus.sh", icarus_script(facts), true});
   package.files.push_back({"run_verilator.sh", verilator_script(facts), true});
+  package.files.push_back({"check_manifest.py", check_manifest_script(), true});
   for (size_t k = 0; k < files.size(); ++k) package.files.push_back({files[k].path, lines(*files[k].layout, *contents[k]), false});
   if (facts.rtl_included)
     for (const EmbeddedFile& f : embedded_rtl())
@@ -343,6 +344,8 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
     } else if (f.path == "run_icarus.sh" || f.path == "run_verilator.sh") {
       e["meaning"] = f.path == "run_icarus.sh" ? "runs the testbench with Icarus Verilog"
                                                : "runs the testbench with verilator --binary";
+    } else if (f.path == "check_manifest.py") {
+      e["meaning"] = "checks every file's size and CRC-32 against this manifest (the run scripts call it first)";
     } else {
       e["meaning"] = "RTL source of rastersim_top";
     }

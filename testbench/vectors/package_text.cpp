@@ -541,7 +541,8 @@ std::string script_preamble(const PackageFacts& k, const std::string& tool) {
   const std::string rtl_default = "$here/" + k.rtl_folder;
   return "#!/usr/bin/env bash\n"
          "# Runs this package's testbench (" + std::string(kTestbenchFile) + ") with " + tool + ".\n"
-         "# Exit 0 when the last line is \"N passed, 0 failed\"; 1 when a vector failed; 2 when it cannot build.\n"
+         "# Exit 0 when the last line is \"N passed, 0 failed\"; 1 when a vector failed; 2 when it cannot build\n"
+         "# or a file differs from manifest.json.\n"
          "# RTL_DIR: the pipeline's Verilog (default " + k.rtl_folder + "/ beside this script); every .sv and .v\n"
          "# file in it is compiled, with it as the include folder. SIM_FLAGS: more compiler arguments\n"
          "# (e.g. -DRS_NO_SETUP_RECORD for a port without the setup record wires).\n"
@@ -553,6 +554,13 @@ std::string script_preamble(const PackageFacts& k, const std::string& tool) {
          "if [ ${#sources[@]} -eq 0 ]; then\n"
          "  echo \"$0: no .sv or .v files in $rtl\" >&2\n"
          "  exit 2\n"
+         "fi\n"
+         "# Every file as the manifest lists it (size and CRC-32): a changed file fails here, not as\n"
+         "# mismatches that its expected outputs do not explain.\n"
+         "if command -v python3 > /dev/null; then\n"
+         "  python3 \"$here/check_manifest.py\" || exit 2\n"
+         "else\n"
+         "  echo \"$0: python3 not found: the files are not checked against manifest.json\" >&2\n"
          "fi\n"
          "work=\"$(mktemp -d)\"\n"
          "trap 'rm -rf \"$work\"' EXIT\n";
@@ -592,6 +600,37 @@ std::string verilator_script(const PackageFacts& k) {
          script_run("\"$work/obj/tb\" | grep -v '^- .*: Verilog \\$finish$'",
                     "# Verilator reports $finish on a line of its own; the summary stays the last line.\n"
                     "# shellcheck disable=SC2016  # a literal $finish\n");
+}
+
+std::string check_manifest_script() {
+  return R"PY(#!/usr/bin/env python3
+"""Checks every file of this package against manifest.json: its size and CRC-32 (zlib's, the
+IEEE 802.3 polynomial). Exit 0 when all match; 2 naming each file that is missing or changed.
+run_icarus.sh and run_verilator.sh run it first."""
+import json
+import os
+import sys
+import zlib
+
+here = os.path.dirname(os.path.abspath(__file__))
+manifest = json.load(open(os.path.join(here, "manifest.json")))
+problems = []
+for entry in manifest["files"]:
+    path = os.path.join(here, entry["path"])
+    if not os.path.isfile(path):
+        problems.append(f"{entry['path']}: missing")
+        continue
+    data = open(path, "rb").read()
+    crc = f"0x{zlib.crc32(data):08x}"
+    if len(data) != entry["bytes"] or crc != entry["crc32"]:
+        problems.append(f"{entry['path']}: {len(data)} bytes, CRC-32 {crc}; the manifest says {entry['bytes']} bytes, "
+                        f"CRC-32 {entry['crc32']} (changed since the package was made)")
+for p in problems:
+    print(f"check_manifest: {p}", file=sys.stderr)
+if problems:
+    sys.exit(2)
+print(f"check_manifest: {len(manifest['files'])} files match manifest.json")
+)PY";
 }
 
 std::string readme_text(const PackageFacts& k) {
@@ -642,6 +681,7 @@ std::string readme_text(const PackageFacts& k) {
        "the cycles of every triangle |\n"
     << "| " << kTestbenchFile << " | | | the self-checking testbench (top module " << kTestbenchTop << ") |\n"
     << "| run_icarus.sh, run_verilator.sh | | | build and run it |\n"
+    << "| check_manifest.py | | | checks every file's size and CRC-32 against manifest.json (the run scripts call it first) |\n"
     << (k.rtl_included ? "| rtl/ | | | the RTL it was generated against |\n" : "")
     << "\nEvery `.hex` file is read with `$readmemh`: one word per line, lowercase hex, no header; the line number "
        "from 0 is the\nvector index the testbench reports. A word is a concatenation of fields, the first field at "

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs this package's testbench (rastersim_vectors_tb.v) with Icarus Verilog 11 or later.
-# Exit 0 when the last line is "N passed, 0 failed"; 1 when a vector failed; 2 when it cannot build.
+# Exit 0 when the last line is "N passed, 0 failed"; 1 when a vector failed; 2 when it cannot build
+# or a file differs from manifest.json.
 # RTL_DIR: the pipeline's Verilog (default ../../rtl/ beside this script); every .sv and .v
 # file in it is compiled, with it as the include folder. SIM_FLAGS: more compiler arguments
 # (e.g. -DRS_NO_SETUP_RECORD for a port without the setup record wires).
@@ -12,6 +13,13 @@ sources=("$rtl"/*.sv "$rtl"/*.v)
 if [ ${#sources[@]} -eq 0 ]; then
   echo "$0: no .sv or .v files in $rtl" >&2
   exit 2
+fi
+# Every file as the manifest lists it (size and CRC-32): a changed file fails here, not as
+# mismatches that its expected outputs do not explain.
+if command -v python3 > /dev/null; then
+  python3 "$here/check_manifest.py" || exit 2
+else
+  echo "$0: python3 not found: the files are not checked against manifest.json" >&2
 fi
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
