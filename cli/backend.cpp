@@ -7,10 +7,18 @@
 #include "testbench/rtl_backend.h"
 #endif
 #ifdef RASTERSIM_HAVE_SYSTEMC
+#include "plugins.h"
 #include "testbench/systemc/systemc_backend.h"
 #endif
 
 namespace rastersim {
+
+#ifdef RASTERSIM_HAVE_SYSTEMC
+namespace {
+// librastersim_systemc.so, loaded the first time the SystemC backend is used.
+const systemc::Api& systemc_backend() { return *static_cast<const systemc::Api*>(systemc_api()); }
+}  // namespace
+#endif
 
 const std::vector<std::string>& backend_names() {
   static const std::vector<std::string> names = {"model", "rtl", "cosim", "systemc"};
@@ -35,7 +43,7 @@ void check_backend_profile(Backend backend, const Profile& profile) {
   if (backend == Backend::Model) return;
 #ifdef RASTERSIM_HAVE_SYSTEMC
   if (backend == Backend::Systemc) {
-    const std::string problem = systemc::configuration_error(profile);
+    const std::string problem = systemc_backend().configuration_error(profile);
     if (!problem.empty()) throw InputError(problem);
     return;
   }
@@ -109,7 +117,7 @@ RenderResult render_triangles(Backend backend, const Profile& profile, const std
     case Backend::Systemc: {
       systemc::SystemcOptions systemc_options;
       systemc_options.seed = options.seed;
-      const rtl::RtlResult r = systemc::run_systemc(profile, triangles, systemc_options);
+      const rtl::RtlResult r = systemc_backend().run_systemc(profile, triangles, systemc_options);
       if (!r.finished) throw std::runtime_error("the SystemC system did not finish: " + r.note);
       if (progress) progress(triangles.size());
       return from_rtl(profile, r, sink);

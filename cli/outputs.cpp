@@ -15,10 +15,9 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 
 #include "model/input_error.h"
+#include "plugins.h"
 
 namespace rastersim {
 namespace fs = std::filesystem;
@@ -51,20 +50,9 @@ void write_bytes(const std::string& path, const std::string& shown_path, const c
 
 template <typename T>
 void write_image(const std::string& final_path, const std::string& temp_path, int width, int height, int channels,
-                 OIIO::TypeDesc type, const std::vector<T>& pixels) {
-  // Encoded in memory, then written with checked writes: OpenImageIO 2.4's PNG and TIFF writers
-  // report success on a file cut short by a full disk. The writer is chosen by the final path's
-  // extension.
-  std::vector<unsigned char> encoded;
-  OIIO::Filesystem::IOVecOutput memory(encoded);
-  auto out = OIIO::ImageOutput::create(final_path, &memory);
-  if (!out) throw std::runtime_error(final_path + ": no image writer for this extension: " + OIIO::geterror());
-  if (!out->supports("ioproxy"))
-    throw std::runtime_error(final_path + ": the " + out->format_name() + " writer cannot encode to memory");
-  OIIO::ImageSpec spec(width, height, channels, type);
-  if (!out->open(final_path, spec)) throw std::runtime_error(final_path + ": " + out->geterror());
-  if (!out->write_image(type, pixels.data())) throw std::runtime_error(final_path + ": " + out->geterror());
-  if (!out->close()) throw std::runtime_error(final_path + ": " + out->geterror());
+                 PixelType type, const std::vector<T>& pixels) {
+  // Encoded in memory by the writer the final path's extension selects, then written with checked writes.
+  const std::vector<unsigned char> encoded = encode_image(final_path, width, height, channels, type, pixels.data());
   write_bytes(temp_path, final_path, reinterpret_cast<const char*>(encoded.data()), encoded.size());
 }
 
@@ -266,9 +254,7 @@ void remove_temporaries_on_signals() {
 }
 
 void check_image_format(const std::string& path, const std::string& what) {
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) {
-    OIIO::geterror();  // clear OpenImageIO's pending error
+  if (!image_format_writable(path)) {
     throw InputError(path, 0, "cannot write " + what + ": no image format for the extension '" +
                                   lower_extension(path) + "' (use png, exr, tif, ...)");
   }
@@ -282,7 +268,7 @@ void write_color_image(const std::string& final_path, const std::string& temp_pa
     rgb[3 * i + 1] = uint8_t(words[i] >> 8);
     rgb[3 * i + 2] = uint8_t(words[i]);
   }
-  write_image(final_path, temp_path, buffers.width, buffers.height, 3, OIIO::TypeDesc::UINT8, rgb);
+  write_image(final_path, temp_path, buffers.width, buffers.height, 3, PixelType::UInt8, rgb);
 }
 
 bool depth_image_is_float(const std::string& path) {
@@ -297,11 +283,11 @@ void write_depth_image(const std::string& final_path, const std::string& temp_pa
   if (depth_image_is_float(final_path)) {
     std::vector<float> values(depth.size());
     for (size_t i = 0; i < depth.size(); ++i) values[i] = float(double(depth[i]) / double(depth_max));
-    write_image(final_path, temp_path, buffers.width, buffers.height, 1, OIIO::TypeDesc::FLOAT, values);
+    write_image(final_path, temp_path, buffers.width, buffers.height, 1, PixelType::Float, values);
   } else {
     std::vector<uint16_t> values(depth.size());
     for (size_t i = 0; i < depth.size(); ++i) values[i] = uint16_t((depth[i] * uint64_t(65535) + depth_max / 2) / depth_max);
-    write_image(final_path, temp_path, buffers.width, buffers.height, 1, OIIO::TypeDesc::UINT16, values);
+    write_image(final_path, temp_path, buffers.width, buffers.height, 1, PixelType::UInt16, values);
   }
 }
 

@@ -40,6 +40,12 @@ int64_t simulated_cycles() { return system(SystemcOptions{}).simulated_cycles();
 
 }  // namespace rastersim::systemc
 
+const rastersim::systemc::Api* rastersim_systemc_api() {
+  static const rastersim::systemc::Api api = {&rastersim::systemc::configuration_error,
+                                              &rastersim::systemc::run_systemc};
+  return &api;
+}
+
 // libsystemc.so calls sc_main from its own main(); rastersim has its own main and never calls it,
 // but the symbol must exist for the link. Programs with their own sc_main override this one.
 RASTERSIM_SYSTEMC_API int sc_main(int, char*[]) { return 1; }

@@ -42,4 +42,14 @@ RASTERSIM_SYSTEMC_API rtl::RtlResult run_systemc(const Profile& profile, const s
 // Clock cycles simulated by this process's system so far (resets and clears included), for speed figures.
 RASTERSIM_SYSTEMC_API int64_t simulated_cycles();
 
+// The functions above as one table, for a program that loads this library with dlopen (rastersim
+// does, so that its commands start without SystemC unless they run it).
+struct Api {
+  std::string (*configuration_error)(const Profile& profile);
+  rtl::RtlResult (*run_systemc)(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
+                                const SystemcOptions& options);
+};
+
 }  // namespace rastersim::systemc
+
+extern "C" RASTERSIM_SYSTEMC_API const rastersim::systemc::Api* rastersim_systemc_api();

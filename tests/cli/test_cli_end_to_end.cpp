@@ -614,6 +614,27 @@ TEST(CliRtl, CosimJunitOnStandardOutput) {
   EXPECT_TRUE(dir.listing().empty());
 }
 
+// Start-up: a command loads OpenImageIO (about 250 libraries) only to write an image, and SystemC
+// only to run it; `rastersim scenes` once took 0.6 s loading 264 libraries.
+TEST(Cli, HeavyLibrariesAreLoadedOnlyByTheCommandsThatUseThem) {
+  ScratchDir dir;
+  auto loaded = [&](const std::vector<std::string>& args) {
+    setenv("LD_DEBUG", "files", 1);  // the dynamic loader names every library it opens on stderr
+    const RunResult r = run_rastersim(dir, args);
+    unsetenv("LD_DEBUG");
+    EXPECT_EQ(r.exit_code, 0) << r.err.substr(r.err.size() > 2000 ? r.err.size() - 2000 : 0);
+    return std::pair<bool, bool>{contains(r.err, "libOpenImageIO"), contains(r.err, "libsystemc")};
+  };
+  EXPECT_EQ(loaded({"scenes"}), std::make_pair(false, false));
+  EXPECT_EQ(loaded({"render", "--scene", "fan", "--stats", "s.json"}), std::make_pair(false, false));
+  EXPECT_EQ(loaded({"render", "--scene", "fan", "-o", "fan.png"}), std::make_pair(true, false));
+#ifdef RASTERSIM_HAVE_SYSTEMC
+  EXPECT_EQ(loaded({"render", "--scene", "overlap", "--backend", "systemc", "--stats", "t.json"}),
+            std::make_pair(false, true));
+#endif
+  EXPECT_GT(read_text(dir.path("fan.png")).size(), 100u);
+}
+
 TEST(Cli, VersionNamesTheReleaseAndTheCommit) {
   ScratchDir dir;
   const RunResult r = run_rastersim(dir, {"--version"});

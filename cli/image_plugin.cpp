@@ -1,0 +1,55 @@
+// librastersim_images.so: the image writers of OpenImageIO behind a C interface (image_plugin.h),
+// so that rastersim loads OpenImageIO only when a command writes an image.
+#include "image_plugin.h"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#define RASTERSIM_IMAGES_API __attribute__((visibility("default")))
+
+namespace {
+
+void set_error(char* error, size_t error_size, const std::string& message) {
+  if (error_size == 0) return;
+  std::strncpy(error, message.c_str(), error_size - 1);
+  error[error_size - 1] = '\0';
+}
+
+}  // namespace
+
+extern "C" RASTERSIM_IMAGES_API int rastersim_image_writable(const char* path) {
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) OIIO::geterror();  // clear OpenImageIO's pending error
+  return out ? 1 : 0;
+}
+
+extern "C" RASTERSIM_IMAGES_API int rastersim_image_encode(const char* path, int width, int height, int channels,
+                                                           int type, const void* pixels, unsigned char** data,
+                                                           size_t* size, char* error, size_t error_size) {
+  const OIIO::TypeDesc types[] = {OIIO::TypeDesc::UINT8, OIIO::TypeDesc::UINT16, OIIO::TypeDesc::FLOAT};
+  if (type < 0 || type > 2) return set_error(error, error_size, "unknown pixel type"), 1;
+  // Encoded in memory: OpenImageIO 2.4's PNG and TIFF writers report success on a file cut short
+  // by a full disk, so the caller writes the bytes with checked writes.
+  std::vector<unsigned char> encoded;
+  OIIO::Filesystem::IOVecOutput memory(encoded);
+  auto out = OIIO::ImageOutput::create(path, &memory);
+  const std::string shown(path);
+  if (!out) return set_error(error, error_size, shown + ": no image writer for this extension: " + OIIO::geterror()), 1;
+  if (!out->supports("ioproxy"))
+    return set_error(error, error_size, shown + ": the " + out->format_name() + " writer cannot encode to memory"), 1;
+  OIIO::ImageSpec spec(width, height, channels, types[type]);
+  if (!out->open(path, spec) || !out->write_image(types[type], pixels) || !out->close())
+    return set_error(error, error_size, shown + ": " + out->geterror()), 1;
+  *size = encoded.size();
+  *data = static_cast<unsigned char*>(std::malloc(encoded.size() ? encoded.size() : 1));
+  if (!*data) return set_error(error, error_size, shown + ": out of memory"), 1;
+  if (!encoded.empty()) std::memcpy(*data, encoded.data(), encoded.size());
+  return 0;
+}
+
+extern "C" RASTERSIM_IMAGES_API void rastersim_image_free(unsigned char* data) { std::free(data); }

@@ -1,0 +1,73 @@
+#include "plugins.h"
+
+#include <dlfcn.h>
+
+#include <mutex>
+#include <stdexcept>
+
+#include "image_plugin.h"
+
+namespace rastersim {
+namespace {
+
+// dlopen searches the program's run path (the build folders, or $ORIGIN/../lib once installed).
+void* load(const char* file, const char* what) {
+  void* handle = dlopen(file, RTLD_NOW | RTLD_LOCAL);
+  if (!handle) throw std::runtime_error(std::string("cannot load ") + what + " (" + file + "): " + dlerror());
+  return handle;
+}
+
+template <class F>
+F symbol(void* handle, const char* name, const char* file) {
+  void* s = dlsym(handle, name);
+  if (!s) throw std::runtime_error(std::string(file) + " has no " + name + ": a library of another version?");
+  return reinterpret_cast<F>(s);
+}
+
+struct Images {
+  decltype(&rastersim_image_writable) writable;
+  decltype(&rastersim_image_encode) encode;
+  decltype(&rastersim_image_free) free;
+};
+
+const Images& images() {
+  static std::once_flag once;
+  static Images table;
+  std::call_once(once, [] {
+    const char* file = "librastersim_images.so";
+    void* h = load(file, "the image writers (OpenImageIO)");
+    table = {symbol<decltype(table.writable)>(h, "rastersim_image_writable", file),
+             symbol<decltype(table.encode)>(h, "rastersim_image_encode", file),
+             symbol<decltype(table.free)>(h, "rastersim_image_free", file)};
+  });
+  return table;
+}
+
+}  // namespace
+
+bool image_format_writable(const std::string& path) { return images().writable(path.c_str()) != 0; }
+
+std::vector<unsigned char> encode_image(const std::string& path, int width, int height, int channels, PixelType type,
+                                        const void* pixels) {
+  unsigned char* data = nullptr;
+  size_t size = 0;
+  char error[512];
+  if (images().encode(path.c_str(), width, height, channels, int(type), pixels, &data, &size, error, sizeof error) != 0)
+    throw std::runtime_error(error);
+  std::vector<unsigned char> bytes(data, data + size);
+  images().free(data);
+  return bytes;
+}
+
+const void* systemc_api() {
+  static std::once_flag once;
+  static const void* api = nullptr;
+  std::call_once(once, [] {
+    const char* file = "librastersim_systemc.so";
+    void* h = load(file, "the SystemC backend");
+    api = symbol<const void* (*)()>(h, "rastersim_systemc_api", file)();
+  });
+  return api;
+}
+
+}  // namespace rastersim

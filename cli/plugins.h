@@ -1,0 +1,25 @@
+// Heavy libraries as modules loaded on first use: OpenImageIO (about 250 shared libraries of
+// image codecs) behind the image outputs, SystemC behind `--backend systemc`. A command that needs
+// neither starts without them (docs/performance.md, "Start-up").
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rastersim {
+
+// The image module (librastersim_images.so, cli/image_plugin.cpp).
+enum class PixelType { UInt8 = 0, UInt16 = 1, Float = 2 };
+// True when OpenImageIO has a writer for the path's extension.
+bool image_format_writable(const std::string& path);
+// The image encoded in memory by the writer the path's extension selects; throws with its message.
+std::vector<unsigned char> encode_image(const std::string& path, int width, int height, int channels, PixelType type,
+                                        const void* pixels);
+
+// The SystemC backend's library (librastersim_systemc.so): its rastersim_systemc_api() table, as
+// a `const rastersim::systemc::Api*` (testbench/systemc/systemc_backend.h).
+const void* systemc_api();
+
+}  // namespace rastersim
