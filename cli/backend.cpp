@@ -66,16 +66,6 @@ RenderResult from_rtl(const Profile& profile, const rtl::RtlResult& r, FragmentS
 }
 #endif
 
-#ifdef RASTERSIM_HAVE_RTL
-void set_wave(rtl::RtlOptions& rtl_options, const BackendOptions& options) {
-  rtl_options.wave_path = options.wave_path;
-  rtl_options.wave_vcd = options.wave_vcd;
-  rtl_options.wave_from = options.wave_from;
-  rtl_options.wave_to = options.wave_to;
-  rtl_options.gtkwave_save_path = options.gtkwave_save_path;
-  rtl_options.wave_name = options.wave_name;
-}
-#endif
 
 }  // namespace
 
@@ -96,7 +86,7 @@ RenderResult render_triangles(Backend backend, const Profile& profile, const std
     case Backend::Rtl: {
       rtl::RtlOptions rtl_options;
       rtl_options.seed = options.seed;
-      set_wave(rtl_options, options);
+      set_wave_fields(rtl_options, options.wave_files, options.wave);
       const rtl::RtlResult r = rtl::run_rtl(profile, triangles, rtl_options);
       if (!r.finished) throw std::runtime_error("the RTL did not finish: " + r.note);
       if (progress) progress(triangles.size());
@@ -105,7 +95,7 @@ RenderResult render_triangles(Backend backend, const Profile& profile, const std
     case Backend::Cosim: {
       rtl::RtlOptions rtl_options;
       rtl_options.seed = options.seed;
-      set_wave(rtl_options, options);
+      set_wave_fields(rtl_options, options.wave_files, options.wave);
       const rtl::CosimReport report = rtl::cosim(profile, triangles, rtl_options, options.replay_prefix);
       if (progress) progress(triangles.size());
       RenderResult result = from_rtl(profile, report.model, sink);

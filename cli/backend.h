@@ -26,10 +26,9 @@ void check_backend_profile(Backend backend, const Profile& profile);
 
 struct BackendOptions {
   uint64_t seed = 1;         // RTL random power-on state (rtl, cosim; systemc: the process's first frame)
-  // RTL waveform (rtl, cosim), when wave_path is not empty: rtl::RtlOptions's fields.
-  std::string wave_path, gtkwave_save_path, wave_name;
-  bool wave_vcd = false;
-  int64_t wave_from = -1, wave_to = -1;
+  // RTL waveform (rtl, cosim), when wave_files.wave_temp is not empty.
+  WaveFiles wave_files;
+  WaveOptions wave;
   std::string replay_prefix; // cosim: where a divergence's replay files go
 };
 

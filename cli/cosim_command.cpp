@@ -281,14 +281,7 @@ int run_cosim(const CosimOptions& o) {
     if (!varied.empty() || k < directed) c.name += " (" + settings_summary(c.profile) + ")";
     rtl::RtlOptions options;
     options.seed = o.seed + uint64_t(k);
-    if (with_outputs) {
-      options.wave_path = wave.wave_temp;
-      options.wave_vcd = wave.vcd;
-      options.wave_from = o.wave.from;
-      options.wave_to = o.wave.to;
-      options.gtkwave_save_path = wave.save_temp;
-      options.wave_name = o.wave.path;
-    }
+    if (with_outputs) set_wave_fields(options, wave, o.wave);
     const std::string prefix =
         with_outputs ? (std::filesystem::path(o.replay_dir) / ("rastersim-replay-" + std::to_string(k))).string() : "";
     const auto start = std::chrono::steady_clock::now();

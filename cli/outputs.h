@@ -88,6 +88,16 @@ struct WaveFiles {
   bool vcd = false;
 };
 WaveFiles add_waveform(OutputFiles& outputs, const WaveOptions& options);
+// The waveform fields of rtl::RtlOptions from a command's waveform outputs.
+template <class RtlOptions>
+void set_wave_fields(RtlOptions& options, const WaveFiles& files, const WaveOptions& wave) {
+  options.wave_path = files.wave_temp;
+  options.wave_vcd = files.vcd;
+  options.wave_from = wave.from;
+  options.wave_to = wave.to;
+  options.gtkwave_save_path = files.save_temp;
+  options.wave_name = wave.path;
+}
 // Throws when the simulation left no waveform (a failed write is an error, not silence), or when
 // the window starts past the frame's last cycle (`frame_cycles` cycles: 0 .. frame_cycles - 1).
 void check_waveform_written(const WaveFiles& files, const WaveOptions& options, int64_t frame_cycles);

@@ -188,12 +188,8 @@ int run_render(const RenderOptions& o) {
   ProgressLine progress(snapped.size(), isatty(STDERR_FILENO) != 0);
   BackendOptions backend_options;
   backend_options.seed = o.seed;
-  backend_options.wave_path = wave.wave_temp;
-  backend_options.wave_vcd = wave.vcd;
-  backend_options.wave_from = o.wave.from;
-  backend_options.wave_to = o.wave.to;
-  backend_options.gtkwave_save_path = wave.save_temp;
-  backend_options.wave_name = o.wave.path;
+  backend_options.wave_files = wave;
+  backend_options.wave = o.wave;
   backend_options.replay_prefix =
       (std::filesystem::path(o.replay_dir.empty() ? "." : o.replay_dir) / "rastersim-replay").string();
   const RenderResult result = render_triangles(

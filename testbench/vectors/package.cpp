@@ -273,7 +273,8 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   package.files.push_back({kTestbenchFile, testbench_text(facts), false});
   package.files.push_back({"run_icarus.sh", icarus_script(facts), true});
   package.files.push_back({"run_verilator.sh", verilator_script(facts), true});
-  package.files.push_back({"check_manifest.py", check_manifest_script(), true});
+  for (const EmbeddedFile& f : embedded_package_tools())
+    package.files.push_back({f.name, std::string(reinterpret_cast<const char*>(f.data), f.size), true});
   for (size_t k = 0; k < files.size(); ++k) package.files.push_back({files[k].path, lines(*files[k].layout, *contents[k]), false});
   if (facts.rtl_included)
     for (const EmbeddedFile& f : embedded_rtl())

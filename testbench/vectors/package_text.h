@@ -31,8 +31,6 @@ std::string testbench_text(const PackageFacts& facts);
 std::string icarus_script(const PackageFacts& facts);
 std::string verilator_script(const PackageFacts& facts);
 std::string readme_text(const PackageFacts& facts);
-// check_manifest.py: every file of the package against manifest.json's sizes and CRC-32s.
-std::string check_manifest_script();
 
 // The vector files in package order: name, layout, what one word is.
 struct VectorFile {

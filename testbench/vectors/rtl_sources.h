@@ -1,5 +1,6 @@
-// The RTL sources (rtl/*.sv, rtl/*.vh) compiled into the binary at build time, so that a package
-// can carry the exact Verilog it was generated against (embed_files.cmake writes the definition).
+// The RTL sources (rtl/*.sv, rtl/*.vh) and the package tools compiled into the binary at build
+// time, so that a package carries the exact Verilog it was generated against and its own checker
+// (embed_files.cmake writes the definitions).
 #pragma once
 
 #include <cstddef>
@@ -15,5 +16,7 @@ struct EmbeddedFile {
 
 // In name order.
 const std::vector<EmbeddedFile>& embedded_rtl();
+// The package's own tools (testbench/vectors/check_manifest.py), copied into every package.
+const std::vector<EmbeddedFile>& embedded_package_tools();
 
 }  // namespace rastersim::vectors
