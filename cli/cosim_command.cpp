@@ -69,7 +69,7 @@ std::string profile_summary(const Profile& p) {
   return s.str();
 }
 
-std::string settings_summary(const Profile& p) {
+[[maybe_unused]] std::string settings_summary(const Profile& p) {
   std::ostringstream s;
   s << to_string(p.traversal) << ", " << to_string(p.shading) << ", depth " << to_string(p.depth_func)
     << (p.depth_write ? "" : " no-write") << ", clear " << p.depth_clear_value() << ", cull " << to_string(p.cull)
@@ -78,7 +78,7 @@ std::string settings_summary(const Profile& p) {
 }
 
 // One <testsuite> of the frames this shard ran: any JUnit consumer merges shards by concatenation.
-std::string junit_xml(const std::vector<FrameResult>& frames, const Profile& profile, const CosimOptions& o) {
+[[maybe_unused]] std::string junit_xml(const std::vector<FrameResult>& frames, const Profile& profile, const CosimOptions& o) {
   int64_t failures = 0;
   double total = 0;
   for (const FrameResult& f : frames) failures += !f.passed, total += f.seconds;

@@ -2,7 +2,9 @@
 
 #include <dlfcn.h>
 
+#include <filesystem>
 #include <mutex>
+#include <sstream>
 #include <stdexcept>
 
 #include "image_plugin.h"
@@ -10,11 +12,32 @@
 namespace rastersim {
 namespace {
 
-// dlopen searches the program's run path (the build folders, or $ORIGIN/../lib once installed).
+// Where a module can be: beside the program and in ../LIBDIR (installed), in the build folders this
+// binary was built from, then wherever dlopen looks by itself. The paths are explicit because a
+// sanitizer's dlopen interceptor makes dlopen search its run path instead of the program's.
+std::vector<std::string> candidates(const char* file) {
+  std::vector<std::string> paths;
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    paths.push_back((exe.parent_path() / file).string());
+    paths.push_back((exe.parent_path() / ".." / RASTERSIM_INSTALL_LIBDIR / file).string());
+  }
+  std::istringstream build_dirs(RASTERSIM_PLUGIN_BUILD_DIRS);
+  for (std::string dir; std::getline(build_dirs, dir, ':');)
+    if (!dir.empty()) paths.push_back((std::filesystem::path(dir) / file).string());
+  paths.push_back(file);
+  return paths;
+}
+
 void* load(const char* file, const char* what) {
-  void* handle = dlopen(file, RTLD_NOW | RTLD_LOCAL);
-  if (!handle) throw std::runtime_error(std::string("cannot load ") + what + " (" + file + "): " + dlerror());
-  return handle;
+  std::string error;
+  for (const std::string& path : candidates(file)) {
+    if (path != file && !std::filesystem::exists(path)) continue;
+    if (void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL)) return handle;
+    error = dlerror();
+  }
+  throw std::runtime_error(std::string("cannot load ") + what + " (" + file + "): " + error);
 }
 
 template <class F>

@@ -64,18 +64,18 @@ int run_vectors(const VectorsOptions& o) {
   vectors::Source source;
   std::vector<SnappedTriangle> triangles;
   if (random) {
-    source = {"random", "", o.random, o.seed};
+    source = {"random", "", o.random, o.seed, ""};
     triangles = rtl::random_case(profile, o.seed, int(o.random)).triangles;
   } else if (!o.suite.empty()) {
-    source = {"suite", o.suite, 0, 0};
+    source = {"suite", o.suite, 0, 0, ""};
     try {
       triangles = vectors::suite_triangles(o.suite, profile);
     } catch (const std::invalid_argument& e) {
       throw InputError(std::string("--suite: ") + e.what());
     }
   } else {
-    if (o.input.empty()) source = {"scene", o.scene.empty() ? "default" : o.scene, 0, 0};
-    else source = {"file", std::filesystem::path(o.input).filename().string(), 0, 0};
+    if (o.input.empty()) source = {"scene", o.scene.empty() ? "default" : o.scene, 0, 0, ""};
+    else source = {"file", std::filesystem::path(o.input).filename().string(), 0, 0, ""};
     source.camera = camera_words(o.camera);
     for (const ScreenTriangle& t : load_input(o.input, o.scene, profile, camera_options(o.camera)))
       triangles.push_back(snap(t, profile));
