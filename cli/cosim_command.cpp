@@ -5,17 +5,18 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <mutex>
 #include <set>
 #include <sstream>
-#include <thread>
 
 #include "model/input_error.h"
 #include "model/text_file.h"
 #include "outputs.h"
+#include "parallel.h"
 #ifdef RASTERSIM_HAVE_RTL
 #include "testbench/cosim_cases.h"
 #include "testbench/cosim_coverage.h"
@@ -326,12 +327,10 @@ int run_cosim(const CosimOptions& o) {
   } else {
     // Frames in parallel, each on its own verilated model; the report is the same as one job's:
     // frames in order, and without --keep-going none after the first divergence.
-    std::atomic<size_t> next{0};
     std::atomic<size_t> first_failure{frames.size()};
-    std::exception_ptr error;
-    auto worker = [&] {
-      try {
-        for (size_t i = next++; i < frames.size() && i < first_failure; i = next++) {
+    parallel_for(
+        o.jobs, frames.size(),
+        [&](size_t i) {
           outcomes[i] = run_frame(frames[i], false);
           {
             std::lock_guard<std::mutex> lock(progress_mutex);
@@ -342,17 +341,8 @@ int run_cosim(const CosimOptions& o) {
             }
           }
           progress(outcomes[i].name);
-        }
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(progress_mutex);
-        if (!error) error = std::current_exception();
-        first_failure = 0;
-      }
-    };
-    std::vector<std::thread> threads;
-    for (int j = 0; j < o.jobs; ++j) threads.emplace_back(worker);
-    for (std::thread& t : threads) t.join();
-    if (error) std::rethrow_exception(error);
+        },
+        [&] { return first_failure.load(); });
     if (!o.keep_going && first_failure < frames.size()) kept = first_failure + 1;
     // The files a frame leaves, as one job leaves them: a divergence's replay and waveform window,
     // and the last frame's waveform.
@@ -420,7 +410,12 @@ int run_junit_merge(const JunitMergeOptions& o) {
     const std::string key = " " + name + "=\"";
     const size_t at = tag.find(key);
     if (at == std::string::npos) throw InputError(file, 0, "a <testsuite> without " + name);
-    return std::stod(tag.substr(at + key.size(), tag.find('"', at + key.size()) - at - key.size()));
+    const std::string text = tag.substr(at + key.size(), tag.find('"', at + key.size()) - at - key.size());
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || !(value >= 0))
+      throw InputError(file, 0, "a <testsuite> whose " + name + " is '" + text + "', not a number");
+    return value;
   };
   std::string suites;
   double tests = 0, failures = 0, time = 0;
@@ -450,6 +445,7 @@ int run_junit_merge(const JunitMergeOptions& o) {
     }
   }
   OutputFiles outputs;
+  for (const std::string& file : o.inputs) outputs.protect(file);  // -o naming an input is refused
   const std::string temp = outputs.add(o.out, "--output");
   std::ostringstream x;
   x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites tests=\"" << int64_t(tests) << "\" failures=\""

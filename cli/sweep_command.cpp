@@ -3,7 +3,6 @@
 #include <sys/wait.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,13 +13,13 @@
 #include <mutex>
 #include <set>
 #include <sstream>
-#include <thread>
 
 #include "backend.h"
 #include "hw_cost.h"
 #include "inputs.h"
 #include "model/input_error.h"
 #include "outputs.h"
+#include "parallel.h"
 
 #ifndef RASTERSIM_SOURCE_DIR
 #define RASTERSIM_SOURCE_DIR "."
@@ -383,22 +382,7 @@ int run_sweep(const SweepOptions& o) {
     done[i] = true;
     print_ready();
   };
-  std::atomic<size_t> next{0};
-  std::exception_ptr error;
-  auto worker = [&] {
-    try {
-      for (size_t i = next++; i < total; i = next++) run_point(i);
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(mutex);
-      if (!error) error = std::current_exception();
-      next = total;
-    }
-  };
-  std::vector<std::thread> threads;
-  for (int j = 1; j < o.jobs; ++j) threads.emplace_back(worker);
-  worker();
-  for (std::thread& t : threads) t.join();
-  if (error) std::rethrow_exception(error);
+  parallel_for(o.jobs, total, run_point);
 
   // The CSV and the plot script, written to temporaries and renamed together.
   OutputFiles outputs;

@@ -587,6 +587,16 @@ TEST(CliRtl, JunitMergeOfShardsIsTheWholeRun) {
   r = run_rastersim(dir, {"junit-merge", "-o", "m2.xml", "s1.xml", "failing.xml"});
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_TRUE(contains(r.out, "1 failed")) << r.out;
+  // An output naming an input, and a number that is not one, are refused with the file named.
+  const std::string shard1 = read_text(dir.path("s1.xml"));
+  EXPECT_EQ(run_rastersim(dir, {"junit-merge", "-o", "s1.xml", "s1.xml", "s2.xml"}).exit_code, 2);
+  EXPECT_EQ(read_text(dir.path("s1.xml")), shard1);
+  std::string garbled = shard1;
+  garbled.replace(garbled.find("tests=\"", garbled.find("<testsuite ")), 7, "tests=\"x");
+  dir.write("garbled.xml", garbled);
+  r = run_rastersim(dir, {"junit-merge", "-o", "g.xml", "garbled.xml"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(contains(r.err, "garbled.xml")) << r.err;
   EXPECT_FALSE(fs::exists(dir.path("twice.xml")));
   EXPECT_FALSE(fs::exists(dir.path("x.xml")));
 }
