@@ -59,6 +59,11 @@ void write_image(const std::string& final_path, const std::string& temp_path, in
 }  // namespace
 
 OutputFiles::~OutputFiles() {
+  for (const std::string& path : scratch_) {
+    std::error_code ec;
+    fs::remove(path, ec);
+    forget_temporary(path);
+  }
   if (committed_) return;
   for (const Entry& e : entries_) {
     if (e.direct) continue;  // never remove what the user named
@@ -97,6 +102,7 @@ WaveFiles add_waveform(OutputFiles& outputs, const WaveOptions& o) {
   if (o.from >= 0 && o.to >= 0 && o.from > o.to)
     throw InputError("--wave-from " + std::to_string(o.from) + " is after --wave-to " + std::to_string(o.to));
   files.vcd = extension == ".vcd";
+  if (files.vcd) files.fst_scratch = outputs.add_scratch(files.wave_temp + ".fst-part");
   files.save_temp = outputs.add(fs::path(o.path).replace_extension(".gtkw").string(), "--wave's GTKWave save file");
   return files;
 }
@@ -158,6 +164,12 @@ std::string OutputFiles::add(const std::string& final_path, const std::string& w
   entries_.push_back({final_path, target.string(), (folder / temp_name).string(), false});
   remember_temporary(entries_.back().temp_path);
   return entries_.back().temp_path;
+}
+
+std::string OutputFiles::add_scratch(const std::string& path) {
+  remember_temporary(path);
+  scratch_.push_back(path);
+  return path;
 }
 
 void OutputFiles::commit() {

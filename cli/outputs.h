@@ -46,6 +46,9 @@ class OutputFiles {
   bool writes_stdout() const { return writes_stdout_; }
   // Renames every temporary into place.
   void commit();
+  // A scratch file of the run (not an output): removed when the run ends, committed or not, and on
+  // SIGINT, SIGTERM and SIGHUP. Returns the path.
+  std::string add_scratch(const std::string& path);
 
  private:
   struct Entry {
@@ -56,6 +59,7 @@ class OutputFiles {
   };
   std::vector<Entry> entries_;
   std::vector<std::string> protected_;
+  std::vector<std::string> scratch_;
   bool committed_ = false;
   bool writes_stdout_ = false;
 };
@@ -86,6 +90,7 @@ void add_wave_options(CLI::App& command, WaveOptions& options, const std::string
 struct WaveFiles {
   std::string wave_temp, save_temp;
   bool vcd = false;
+  std::string fst_scratch;  // a VCD is an FST first, written here
 };
 WaveFiles add_waveform(OutputFiles& outputs, const WaveOptions& options);
 // The waveform fields of rtl::RtlOptions from a command's waveform outputs.
@@ -97,6 +102,7 @@ void set_wave_fields(RtlOptions& options, const WaveFiles& files, const WaveOpti
   options.wave_to = wave.to;
   options.gtkwave_save_path = files.save_temp;
   options.wave_name = wave.path;
+  options.wave_fst_scratch = files.fst_scratch;
 }
 // Throws when the simulation left no waveform (a failed write is an error, not silence), or when
 // the window starts past the frame's last cycle (`frame_cycles` cycles: 0 .. frame_cycles - 1).

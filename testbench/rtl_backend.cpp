@@ -330,10 +330,12 @@ CosimReport cosim(const Profile& profile, const std::vector<SnappedTriangle>& tr
     std::tie(again.wave_from, again.wave_to) = divergence_window(report.divergence, report.model);
     again.wave_path = replay_prefix + ".fst";
     again.wave_vcd = false;
+    again.wave_fst_scratch.clear();
     again.gtkwave_save_path = replay_prefix + ".gtkw";
     again.wave_name.clear();
     run_rtl(profile, triangles, again);
     report.waveform = again.wave_path;
+    report.gtkwave_save = again.gtkwave_save_path;
     report.wave_from = again.wave_from;
     report.wave_to = again.wave_to;
   }
@@ -346,7 +348,7 @@ std::string CosimReport::message() const {
   if (!replay_command.empty()) text += "; replay: " + replay_command;
   if (!waveform.empty())
     text += "; waveform: " + waveform + " (frame cycles " + std::to_string(wave_from) + ".." +
-            std::to_string(wave_to) + ", GTKWave: gtkwave " + waveform.substr(0, waveform.size() - 4) + ".gtkw)";
+            std::to_string(wave_to) + ", GTKWave: gtkwave " + gtkwave_save + ")";
   return text;
 }
 

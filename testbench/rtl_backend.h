@@ -21,6 +21,7 @@ struct RtlOptions {
   // reset; the debug monitor's frame_cycle signal gives the frame cycle (docs/debugging.md).
   std::string wave_path;
   bool wave_vcd = false;
+  std::string wave_fst_scratch;  // with wave_vcd: the FST written first (default wave_path + ".fst-part")
   int64_t wave_from = -1, wave_to = -1;
   // A GTKWave save file for the waveform when not empty, naming wave_name as the file to open.
   std::string gtkwave_save_path, wave_name;
@@ -89,7 +90,7 @@ struct CosimReport {
   std::string replay_command;
   // On a divergence with a replay prefix: <prefix>.fst and <prefix>.gtkw, the frame cycles
   // [wave_from, wave_to] around the divergence (docs/debugging.md).
-  std::string waveform;
+  std::string waveform, gtkwave_save;
   int64_t wave_from = -1, wave_to = -1;
   RtlResult model, rtl;
   std::string message() const;  // one paragraph: the sentence, the seed hint and the replay command

@@ -38,7 +38,9 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
   context->traceEverOn(!options.wave_path.empty());
   auto top = std::make_unique<V>(context.get(), "rastersim_top");
   // A VCD is the FST rewritten once the frame is done.
-  const std::string fst_path = options.wave_vcd ? options.wave_path + ".fst-part" : options.wave_path;
+  const std::string fst_path = !options.wave_vcd               ? options.wave_path
+                               : options.wave_fst_scratch.empty() ? options.wave_path + ".fst-part"
+                                                                  : options.wave_fst_scratch;
   std::unique_ptr<VerilatedFstC> fst;
   if (!options.wave_path.empty()) {
     fst = std::make_unique<VerilatedFstC>();

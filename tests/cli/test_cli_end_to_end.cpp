@@ -818,6 +818,7 @@ TEST(CliRtl, WaveWindowAsVcdWithAGtkwaveSaveFile) {
   const RunResult r = run_rastersim(dir, {"render", "--scene", "fan", "--width", "64", "--height", "48", "--backend", "rtl",
                                           "--wave", "w.vcd", "--wave-from", "100", "--wave-to", "120"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"w.vcd", "w.gtkw"})) << "no FST scratch file left";
   const Vcd vcd = read_vcd(dir.path("w.vcd"));
   ASSERT_FALSE(vcd.frame_cycles.empty());
   EXPECT_EQ(*std::min_element(vcd.frame_cycles.begin(), vcd.frame_cycles.end()), 100);
