@@ -56,7 +56,7 @@ int64_t FastWalk::walk(Pipeline& p, const SetupResult& s, int64_t load_cycle, Tr
   if (p.avx512_walk_) return walk_avx512(p, s, load_cycle, record);
 #endif
   Sink<false> sink{p, record};
-  return p.walker_.walk(s, p.adders_, load_cycle, sink, p.walker_counters_);
+  return p.walker_.walk(s, p.adders_, load_cycle, p.walker_idle_load_, sink, p.walker_counters_);
 }
 
 #ifdef RASTERSIM_HAVE_AVX512_KERNEL
@@ -64,7 +64,7 @@ int64_t FastWalk::walk(Pipeline& p, const SetupResult& s, int64_t load_cycle, Tr
 RASTERSIM_AVX512 __attribute__((flatten)) int64_t FastWalk::walk_avx512(Pipeline& p, const SetupResult& s,
                                                                          int64_t load_cycle, TriangleRecord& record) {
   Sink<true> sink{p, record};
-  return p.walker_.walk(s, p.adders_, load_cycle, sink, p.walker_counters_);
+  return p.walker_.walk(s, p.adders_, load_cycle, p.walker_idle_load_, sink, p.walker_counters_);
 }
 #else
 int64_t FastWalk::walk_avx512(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record) {

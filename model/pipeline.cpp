@@ -22,7 +22,8 @@ void Pipeline::reset() {
   walker_counters_ = {};
   stats_ = {};
   next_index_ = 0;
-  setup_free_ = walker_free_ = 0;
+  setup_free_ = 0;
+  walker_free_ = -1;
   std::fill(credit_release_.begin(), credit_release_.end(), -1);
   drawn_ = 0;
   setup_busy_until_ = -1;
@@ -41,7 +42,7 @@ struct Pipeline::TracedSink {
 
 int64_t Pipeline::walk_traced(const SetupResult& s, int64_t load_cycle, TriangleRecord& record) {
   TracedSink sink{*this, record};
-  return walker_.walk(s, adders_, load_cycle, sink, walker_counters_);
+  return walker_.walk(s, adders_, load_cycle, walker_idle_load_, sink, walker_counters_);
 }
 
 void Pipeline::submit(const SnappedTriangle& tri) {
@@ -75,13 +76,15 @@ void Pipeline::submit(const SnappedTriangle& tri) {
   } else {
     ++stats_.triangles_drawn;
     // The record leaves the output register at once (to the walker or into the FIFO); the walker
-    // takes it once it is valid, the walker is free and the records before it are taken.
+    // takes it once it is valid and the records before it are taken, as early as in the cycle of
+    // the previous triangle's last candidate.
     record.walker_load = std::max(record.setup_done, walker_free_);
+    walker_idle_load_ = record.walker_load > walker_free_;
     credit_release_[size_t(drawn_++ % int64_t(credit_release_.size()))] = record.walker_load;
     zbuffer_.begin_triangle(record.walker_load);  // the walker presents fragments after loading
     record.walker_end = sink_ ? walk_traced(s, record.walker_load, record)
                               : FastWalk::walk(*this, s, record.walker_load, record);
-    walker_free_ = record.walker_end + 1;
+    walker_free_ = record.walker_end;
     if (record.fragments > 0) record.last_write = zbuffer_.last_busy_cycle();
     last_busy_ = std::max({last_busy_, record.setup_done, record.walker_end, zbuffer_.last_busy_cycle()});
   }

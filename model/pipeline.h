@@ -122,7 +122,8 @@ class Pipeline {
   // a record credit from its accept to its load, and the setup unit accepts only with a free credit.
   std::vector<int64_t> credit_release_;
   int64_t drawn_ = 0;            // drawn triangles so far (ring position)
-  int64_t walker_free_ = 0;      // first cycle the walker can load
+  int64_t walker_free_ = -1;     // first cycle the walker can load: the last drawn triangle's walker_end
+  bool walker_idle_load_ = true;  // the walker loads the current record in a cycle of its own
   int64_t last_busy_ = -1;       // last cycle any unit was busy
 };
 

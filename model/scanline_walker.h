@@ -2,7 +2,8 @@
 // updated by additions only, one candidate pixel per clock. Two traversals (profile.traversal):
 //  - bbox: every pixel of the bounding box, row by row, left to right; the edge test decides.
 //  - span: per row, the exact first and last covered pixel come from the edges by stepping a
-//    quotient and remainder (a DDA, additions only); one row cycle, then only covered pixels.
+//    quotient and remainder (a DDA, additions only), computed while the row before goes out; one
+//    cycle per covered pixel, one for a row with none.
 // Both emit the same fragments in the same order; they differ in cycles (docs/cycle-model.md).
 #pragma once
 
@@ -18,7 +19,7 @@
 namespace rastersim {
 
 struct WalkerCounters {
-  int64_t busy = 0;        // load, row and candidate cycles
+  int64_t busy = 0;        // candidate, empty-row and (idle) load cycles
   int64_t stall = 0;       // cycles a fragment waited for the z-buffer
   int64_t candidates = 0;  // pixel candidates visited (bbox: all bbox pixels; span: span pixels)
   int64_t rows = 0;
@@ -37,16 +38,18 @@ struct TakesRuns<Sink, std::void_t<decltype(std::declval<Sink&>().run(0, 0, int6
 class ScanlineWalker {
  public:
   ScanlineWalker(const Profile& profile, const Widths& widths)
-      : traversal_(profile.traversal), load_cycles_(widths.walker_load_cycles), row_cycles_(widths.span_row_cycles) {}
+      : traversal_(profile.traversal), load_cycles_(widths.walker_load_cycles) {}
 
-  // Walks one set-up triangle whose record the walker loads in cycle `load_cycle`. For each covered
-  // pixel it calls sink.fragment(x, y, adders, cycle), which returns the cycle the z-buffer
-  // accepted the fragment (>= cycle; the walker holds meanwhile). Returns the walker's last busy
-  // cycle for this triangle.
+  // Walks one set-up triangle whose record the walker loads in cycle `load_cycle`: in a cycle of
+  // its own when `idle_load` (the walker had nothing else to do), else in the previous triangle's
+  // last candidate cycle. For each covered pixel it calls sink.fragment(x, y, adders, cycle), which
+  // returns the cycle the z-buffer accepted the fragment (>= cycle; the walker holds meanwhile).
+  // Returns walker_end: the cycle in which the triangle's last candidate (or empty row) moved on.
   template <class Sink>
-  int64_t walk(const SetupResult& s, ZAdder& adders, int64_t load_cycle, Sink& sink, WalkerCounters& counters) const {
+  int64_t walk(const SetupResult& s, ZAdder& adders, int64_t load_cycle, bool idle_load, Sink& sink,
+               WalkerCounters& counters) const {
     adders.load(s);
-    counters.busy += load_cycles_;
+    if (idle_load) counters.busy += load_cycles_;
     int64_t cycle = load_cycle + load_cycles_;
     if (traversal_ == Traversal::BBox) cycle = walk_bbox(s, adders, cycle, sink, counters);
     else cycle = walk_span(s, adders, cycle, sink, counters);
@@ -122,20 +125,22 @@ class ScanlineWalker {
     }
     const int64_t last = s.x1 - s.x0;
     for (int y = s.y0; y <= s.y1; ++y) {
-      // Row cycle: offsets t from x0 with E(t) = row_value + t step_x >= 0 on every edge.
+      // The row's span, computed before it starts: offsets t from x0 with E(t) = row_value + t step_x
+      // >= 0 on every edge.
       int64_t lo = 0, hi = last;
       for (const EdgeState& e : edge) {
         if (e.step_x > 0) lo = std::max(lo, -e.quot);       // t >= ceil(-E / d) = -floor(E / d)
         else if (e.step_x < 0) hi = std::min(hi, e.quot);   // t <= floor(E / d)
         else if (e.row_value < 0) hi = -1;                  // horizontal edge, row outside
       }
-      cycle += row_cycles_;
-      counters.busy += row_cycles_;
       if (lo <= hi) {
         adders.enter_row_at(lo);
         cycle = emit_run(int(s.x0 + lo), y, hi - lo + 1, adders, cycle, sink, counters);
         counters.candidates += hi - lo + 1;
         counters.busy += hi - lo + 1;
+      } else {
+        ++cycle;  // the empty-row cycle
+        ++counters.busy;
       }
       for (EdgeState& e : edge) {
         e.row_value += e.step_y;
@@ -152,7 +157,6 @@ class ScanlineWalker {
 
   Traversal traversal_;
   int load_cycles_;
-  int row_cycles_;
 };
 
 }  // namespace rastersim

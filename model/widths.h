@@ -26,8 +26,7 @@ struct Widths {
   int y_bits;            // pixel y counter, u
   int addr_bits;         // z-buffer word address y * W + x
   // Cycle-model constants (docs/cycle-model.md); the setup unit's are in SetupTiming below.
-  int walker_load_cycles;   // cycles to load a setup record
-  int span_row_cycles;      // per-row span computation (span traversal only)
+  int walker_load_cycles;   // cycles from a record load to the first candidate (and of an idle load)
 };
 
 constexpr int ceil_log2(i128 v) {  // smallest b with 2^b >= v, v >= 1
@@ -63,7 +62,6 @@ constexpr Widths derive_widths(int width, int height, int subpixel_bits, int z_b
   w.y_bits = unsigned_bits(H - 1);
   w.addr_bits = unsigned_bits(W * H - 1);
   w.walker_load_cycles = 1;
-  w.span_row_cycles = 1;
   return w;
 }
 

@@ -1,6 +1,7 @@
 // One plane register of the Z adder (model/z_adder.h PlaneRegister): a wrapping two's-complement
 // value of REG_BITS with GUARD_BITS fraction bits, a row register keeping the row start, and the
-// per-pixel steps. Additions only, except the span walker's once-per-row offset multiply.
+// per-pixel steps. Additions only, except the span walker's once-per-row offset multiply (at load
+// for the first row, at row_enter for the others).
 module plane_register #(
   parameter integer REG_BITS = 37,    // s(OUT_BITS+1).GUARD_BITS
   parameter integer GUARD_BITS = 12,  // F
@@ -8,10 +9,10 @@ module plane_register #(
   parameter integer OFFSET_BITS = 10  // span row offset t, u
 ) (
   input  wire clk,
-  input  wire load,       // value = row = start; take the steps
+  input  wire load,       // row = start; value = start + offset * step_x_in; take the steps
   input  wire step_x,     // value += step_x
   input  wire next_row,   // row += step_y; value = row (bbox row wrap)
-  input  wire row_enter,  // value = row + offset * step_x; row += step_y (span row cycle)
+  input  wire row_enter,  // row += step_y; value = row + offset * step_x (span: the next row)
   input  wire [OFFSET_BITS-1:0] offset,
   input  wire [REG_BITS-1:0] start,
   input  wire [REG_BITS-1:0] step_x_in,
@@ -24,17 +25,18 @@ module plane_register #(
   wire [REG_BITS-1:0] next_row_value = row + step_y_q;
   // Only the low REG_BITS of the product matter (modular register).
   /* verilator lint_off UNUSEDSIGNAL */
-  wire [REG_BITS+OFFSET_BITS-1:0] offset_product = {{OFFSET_BITS{1'b0}}, step_x_q} * {{REG_BITS{1'b0}}, offset};
+  wire [REG_BITS-1:0] offset_step = load ? step_x_in : step_x_q;
+  wire [REG_BITS+OFFSET_BITS-1:0] offset_product = {{OFFSET_BITS{1'b0}}, offset_step} * {{REG_BITS{1'b0}}, offset};
   /* verilator lint_on UNUSEDSIGNAL */
 
   always @(posedge clk) begin
     if (load) begin
-      value <= start;
+      value <= start + offset_product[REG_BITS-1:0];
       row <= start;
       step_x_q <= step_x_in;
       step_y_q <= step_y_in;
     end else if (row_enter) begin
-      value <= row + offset_product[REG_BITS-1:0];
+      value <= next_row_value + offset_product[REG_BITS-1:0];
       row <= next_row_value;
     end else if (next_row) begin
       value <= next_row_value;

@@ -92,7 +92,6 @@ module rastersim_core #(
   localparam integer SETUP_REJECTED_LATENCY /*verilator public*/ =
       rs_setup_rejected_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, SETUP_INTERVAL);
   localparam integer WALKER_LOAD_CYCLES /*verilator public*/ = 1;
-  localparam integer SPAN_ROW_CYCLES /*verilator public*/ = 1;
   // The profile parameters themselves, for the harness.
   localparam integer P_WIDTH /*verilator public*/ = WIDTH;
   localparam integer P_HEIGHT /*verilator public*/ = HEIGHT;

@@ -2,12 +2,15 @@
 // triangle's bounding box, edge functions are updated by additions only, one candidate per clock.
 // cfg_traversal selects the traversal at run time (both emit the same fragments in the same order):
 //  0 bbox: every bounding-box pixel, row-major; the counters wrap to the next row in the same cycle.
-//  1 span: per row one ROW cycle takes the span bounds from the DDA registers (quotient and
-//    remainder of each edge by |step_x|, additions only) and moves the plane registers to the span
-//    start; then one PIXEL cycle per covered pixel.
+//  1 span: one cycle per covered pixel, one for a row with none. A row's span bounds come from the
+//    DDA registers (quotient and remainder of each edge by |step_x|, additions only) in the cycle
+//    before the row: the first row's from the record in the load cycle, each next row's in the
+//    previous row's last cycle, when the DDA registers step on and the plane registers move to
+//    the span start. So the DDA registers always hold the row after the current one.
 // A covered candidate is presented on frag_*; the walker holds it until frag_ready.
-// Cycles: the record is taken in cycle walker_load (in_valid & in_ready, the LOAD cycle), the first
-// candidate (or row) follows in walker_load + 1, `last` marks walker_end; IDLE (ready) after it.
+// Cycles (docs/cycle-model.md): the record is taken in walker_load (in_valid & in_ready), which is
+// the cycle of the previous triangle's last candidate when the record is there by then; the first
+// candidate follows in walker_load + 1; `last` marks walker_end.
 module scanline_walker #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
@@ -25,15 +28,15 @@ module scanline_walker #(
   output wire adder_load,       // take the setup planes (LOAD cycle)
   output wire adder_step_x,     // next pixel of the row
   output wire adder_next_row,   // bbox: wrap to the next row
-  output wire adder_row_enter,  // span ROW cycle: value = row + offset * step_x; row += step_y
+  output wire adder_row_enter,  // span, next row: row += step_y; value = row + offset * step_x
   output wire [rs_ubits32(WIDTH - 1)-1:0] adder_row_offset,
   // Fragment to the z-buffer.
   output wire frag_valid,
   input  wire frag_ready,
   output reg  [rs_ubits32(WIDTH - 1)-1:0]  frag_x,
   output reg  [rs_ubits32(HEIGHT - 1)-1:0] frag_y,
-  // Activity, for the cycle counters: busy = LOAD, ROW or candidate cycle; candidate = a PIXEL
-  // cycle that moves on (not a stall); last = walker_end.
+  // Activity, for the cycle counters: busy = a candidate or empty row that moves on, or a load;
+  // candidate = a bbox candidate or span pixel that moves on (not a stall); last = walker_end.
   output wire busy,
   output wire candidate,
   output wire last
@@ -75,35 +78,64 @@ module scanline_walker #(
   wire [3*SYB-1:0] in_span_step_quot = in_record[LSB_SPAN_STEP_QUOT +: 3*SYB];
   wire [3*RB-1:0] in_span_step_rem = in_record[LSB_SPAN_STEP_REM +: 3*RB];
 
-  localparam [1:0] IDLE = 2'd0, ROW = 2'd1, PIXEL = 2'd2;
-  reg [1:0] state;
+  reg walking;  // a triangle is loaded and not finished
 
   reg [XB-1:0] x0, x1, x_end;
   reg [YB-1:0] y1;
-  reg signed [EB-1:0]  edge_row [0:2];    // edge value at (x0, y): bbox row start, span row value
+  reg          row_empty;                // span: the current row has no covered pixel
+  reg signed [EB-1:0]  edge_row [0:2];    // edge value at x0: bbox the current row, span the next
   reg signed [EB-1:0]  edge_value [0:2];  // bbox: edge value at (x, y)
   reg signed [EB-1:0]  step_x [0:2];     // sign-extended to EB at load
   reg signed [EB-1:0]  step_y [0:2];
-  reg signed [EB-1:0]  quot [0:2];        // span DDA: floor(edge_row / d), d = |step_x|
+  reg signed [EB-1:0]  quot [0:2];        // span DDA of the next row: floor(edge_row / d), d = |step_x|
   reg [RB-1:0]         rem [0:2];         // edge_row - quot * d, in [0, d)
   reg signed [EB-1:0]  step_quot [0:2];
   reg [RB-1:0]         step_rem [0:2];
   reg [RB-1:0]         divisor [0:2];
 
-  wire load = in_valid && in_ready;
-  assign in_ready = state == IDLE;
-
-  // ---- bbox candidate ----
+  // ---- the current candidate ----
   wire covered = !edge_value[0][EB-1] && !edge_value[1][EB-1] && !edge_value[2][EB-1];
-  wire bbox_pixel = state == PIXEL && !cfg_traversal;
-  wire span_pixel = state == PIXEL && cfg_traversal;
-  assign frag_valid = span_pixel || (bbox_pixel && covered);
-  wire advance = state == PIXEL && (frag_ready || !frag_valid);
-  wire row_done = state == PIXEL && (cfg_traversal ? frag_x == x_end : frag_x == x1);
+  assign frag_valid = walking && (cfg_traversal ? !row_empty : covered);
+  wire advance = walking && (frag_ready || !frag_valid);
+  wire row_done = cfg_traversal ? row_empty || frag_x == x_end : frag_x == x1;
   wire last_row = frag_y == y1;
+  assign last = advance && row_done && last_row;
+  assign in_ready = !walking || last;
+  wire load = in_valid && in_ready;
+  wire next_row = advance && row_done && !last_row;
 
-  // ---- span bounds of the current row: offsets t from x0 with every edge >= 0 ----
-  wire [XB-1:0] last_offset_x = x1 - x0;
+  // ---- the DDA and span of the row about to start: the record's first row in the load cycle,
+  // else the registers' next row ----
+  wire signed [EB-1:0] src_edge_row [0:2];
+  wire signed [EB-1:0] src_step_x [0:2];
+  wire signed [EB-1:0] src_step_y [0:2];
+  wire signed [EB-1:0] src_quot [0:2];
+  wire [RB-1:0]        src_rem [0:2];
+  wire signed [EB-1:0] src_step_quot [0:2];
+  wire [RB-1:0]        src_step_rem [0:2];
+  wire [RB-1:0]        src_divisor [0:2];
+  genvar g;
+  generate
+    for (g = 0; g < 3; g = g + 1) begin : source
+      wire signed [EB-1:0] in_step_x_wide = $signed({{(EB-SXB){in_edge_step_x[g*SXB + SXB - 1]}}, in_edge_step_x[g*SXB +: SXB]});
+      wire signed [EB-1:0] in_step_y_wide = $signed({{(EB-SYB){in_edge_step_y[g*SYB + SYB - 1]}}, in_edge_step_y[g*SYB +: SYB]});
+      wire signed [EB-1:0] in_step_quot_wide = $signed({{(EB-SYB){in_span_step_quot[g*SYB + SYB - 1]}}, in_span_step_quot[g*SYB +: SYB]});
+      wire [RB-1:0] in_divisor = in_edge_step_x[g*SXB + SXB - 1] ? -in_edge_step_x[g*SXB +: RB] : in_edge_step_x[g*SXB +: RB];
+      assign src_edge_row[g] = load ? in_edge_start[g*EB +: EB] : edge_row[g];
+      assign src_step_x[g] = load ? in_step_x_wide : step_x[g];
+      assign src_step_y[g] = load ? in_step_y_wide : step_y[g];
+      assign src_quot[g] = load ? in_span_quot[g*EB +: EB] : quot[g];
+      assign src_rem[g] = load ? in_span_rem[g*RB +: RB] : rem[g];
+      assign src_step_quot[g] = load ? in_step_quot_wide : step_quot[g];
+      assign src_step_rem[g] = load ? in_span_step_rem[g*RB +: RB] : step_rem[g];
+      assign src_divisor[g] = load ? in_divisor : divisor[g];
+    end
+  endgenerate
+  wire [XB-1:0] src_x0 = load ? in_x0 : x0;
+  wire [XB-1:0] src_x1 = load ? in_x1 : x1;
+
+  // Span bounds: offsets t from x0 with every edge >= 0.
+  wire [XB-1:0] last_offset_x = src_x1 - src_x0;
   wire signed [QB-1:0] last_offset = $signed({{(QB-XB){1'b0}}, last_offset_x});
   reg signed [QB-1:0] span_lo, span_hi;
   integer k;
@@ -111,45 +143,38 @@ module scanline_walker #(
     span_lo = {QB{1'b0}};
     span_hi = last_offset;
     for (k = 0; k < 3; k = k + 1) begin
-      if (step_x[k] > 0) begin
+      if (src_step_x[k] > 0) begin
         // t >= ceil(-E / d) = -floor(E / d)
-        if (-$signed({{2{quot[k][EB-1]}}, quot[k]}) > span_lo) span_lo = -$signed({{2{quot[k][EB-1]}}, quot[k]});
-      end else if (step_x[k] < 0) begin
+        if (-$signed({{2{src_quot[k][EB-1]}}, src_quot[k]}) > span_lo) span_lo = -$signed({{2{src_quot[k][EB-1]}}, src_quot[k]});
+      end else if (src_step_x[k] < 0) begin
         // t <= floor(E / d)
-        if ($signed({{2{quot[k][EB-1]}}, quot[k]}) < span_hi) span_hi = $signed({{2{quot[k][EB-1]}}, quot[k]});
-      end else if (edge_row[k] < 0) begin
+        if ($signed({{2{src_quot[k][EB-1]}}, src_quot[k]}) < span_hi) span_hi = $signed({{2{src_quot[k][EB-1]}}, src_quot[k]});
+      end else if (src_edge_row[k] < 0) begin
         span_hi = -1;  // horizontal edge with the row outside
       end
     end
   end
-  wire span_row = state == ROW;
   wire span_nonempty = span_lo <= span_hi;
+  wire enter_span_row = cfg_traversal && (load || next_row);
 
   assign adder_load = load;
   assign adder_step_x = advance && !row_done;
-  assign adder_next_row = advance && row_done && !cfg_traversal;
-  assign adder_row_enter = span_row;
-  assign adder_row_offset = span_lo[XB-1:0];
+  assign adder_next_row = next_row && !cfg_traversal;
+  assign adder_row_enter = next_row && cfg_traversal;
+  // The first row's offset at load (0 for bbox: the plane registers start at x0).
+  assign adder_row_offset = cfg_traversal ? span_lo[XB-1:0] : {XB{1'b0}};
 
-  assign busy = load || state == ROW || advance;
-  assign candidate = advance;
-  assign last = (advance && row_done && last_row) || (span_row && !span_nonempty && last_row);
+  assign busy = load || advance;
+  assign candidate = advance && (frag_valid || !cfg_traversal);
 
-  integer i;
   always @(posedge clk) begin
-    if (rst) begin
-      state <= IDLE;
-    end else begin
-      case (state)
-        IDLE: if (in_valid) state <= cfg_traversal ? ROW : PIXEL;
-        ROW: if (span_nonempty) state <= PIXEL;
-             else if (last_row) state <= IDLE;
-        default: if (advance && row_done) state <= !last_row ? (cfg_traversal ? ROW : PIXEL) : IDLE;
-      endcase
-    end
+    if (rst) walking <= 1'b0;
+    else if (load) walking <= 1'b1;
+    else if (last) walking <= 1'b0;
   end
 
-  // Counters and edge registers (no reset: loaded in the LOAD cycle before use).
+  // Counters and edge registers (no reset: loaded in the load cycle before use).
+  integer i;
   always @(posedge clk) begin
     if (load) begin
       x0 <= in_x0;
@@ -158,18 +183,15 @@ module scanline_walker #(
       frag_x <= in_x0;
       frag_y <= in_y0;
       for (i = 0; i < 3; i = i + 1) begin
-        edge_row[i] <= in_edge_start[i*EB +: EB];
-        edge_value[i] <= in_edge_start[i*EB +: EB];
-        step_x[i] <= $signed({{(EB-SXB){in_edge_step_x[i*SXB + SXB - 1]}}, in_edge_step_x[i*SXB +: SXB]});
-        step_y[i] <= $signed({{(EB-SYB){in_edge_step_y[i*SYB + SYB - 1]}}, in_edge_step_y[i*SYB +: SYB]});
-        quot[i] <= in_span_quot[i*EB +: EB];
-        rem[i] <= in_span_rem[i*RB +: RB];
-        step_quot[i] <= $signed({{(EB-SYB){in_span_step_quot[i*SYB + SYB - 1]}}, in_span_step_quot[i*SYB +: SYB]});
-        step_rem[i] <= in_span_step_rem[i*RB +: RB];
-        divisor[i] <= in_edge_step_x[i*SXB + SXB - 1] ? -in_edge_step_x[i*SXB +: RB] : in_edge_step_x[i*SXB +: RB];
+        edge_row[i] <= src_edge_row[i];
+        edge_value[i] <= src_edge_row[i];
+        step_x[i] <= src_step_x[i];
+        step_y[i] <= src_step_y[i];
+        step_quot[i] <= src_step_quot[i];
+        step_rem[i] <= src_step_rem[i];
+        divisor[i] <= src_divisor[i];
       end
-    end
-    if (advance) begin
+    end else if (advance) begin
       if (!row_done) begin
         frag_x <= frag_x + 1'b1;
         for (i = 0; i < 3; i = i + 1) edge_value[i] <= edge_value[i] + step_x[i];
@@ -184,24 +206,24 @@ module scanline_walker #(
         end
       end
     end
-    if (span_row) begin
-      // Span of this row, then the DDA steps every edge to the next row.
-      if (span_nonempty) begin
-        frag_x <= x0 + span_lo[XB-1:0];
-        x_end <= x0 + span_hi[XB-1:0];
-      end else if (!last_row) begin
-        frag_y <= frag_y + 1'b1;
-      end
+    if (enter_span_row) begin
+      // The row about to start: its span; the DDA steps every edge to the row after it.
+      frag_x <= src_x0 + span_lo[XB-1:0];
+      x_end <= src_x0 + span_hi[XB-1:0];
+      row_empty <= !span_nonempty;
       for (i = 0; i < 3; i = i + 1) begin
-        edge_row[i] <= edge_row[i] + step_y[i];
-        if (step_x[i] != 0) begin
-          if ({1'b0, rem[i]} + {1'b0, step_rem[i]} >= {1'b0, divisor[i]}) begin
-            rem[i] <= rem[i] + step_rem[i] - divisor[i];
-            quot[i] <= quot[i] + step_quot[i] + CARRY;  // all EB bits: modular, sign-agnostic
+        edge_row[i] <= src_edge_row[i] + src_step_y[i];
+        if (src_step_x[i] != 0) begin
+          if ({1'b0, src_rem[i]} + {1'b0, src_step_rem[i]} >= {1'b0, src_divisor[i]}) begin
+            rem[i] <= src_rem[i] + src_step_rem[i] - src_divisor[i];
+            quot[i] <= src_quot[i] + src_step_quot[i] + CARRY;  // all EB bits: modular, sign-agnostic
           end else begin
-            rem[i] <= rem[i] + step_rem[i];
-            quot[i] <= quot[i] + step_quot[i];
+            rem[i] <= src_rem[i] + src_step_rem[i];
+            quot[i] <= src_quot[i] + src_step_quot[i];
           end
+        end else begin
+          rem[i] <= src_rem[i];
+          quot[i] <= src_quot[i];
         end
       end
     end

@@ -10,7 +10,8 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(cd "${1:?usage: rtl-mutants.sh BUILD_DIR [mutant ...]}" && pwd)"
 shift
 mutants=("$@")
-[ ${#mutants[@]} -eq 0 ] && mutants=(edge_compare walker_backpressure z_adder_carry hazard_stall
+[ ${#mutants[@]} -eq 0 ] && mutants=(edge_compare walker_backpressure walker_no_overlap walker_first_row_span
+                                     walker_empty_row z_adder_first_row z_adder_carry hazard_stall
                                      serial_floor serial_remainder_correction serial_multiplier_bits
                                      serial_bias_carry setup_slot_counter setup_floor_correction setup_missing_step
                                      setup_credit_count setup_fifo_empty setup_edge_sign)
@@ -23,10 +24,24 @@ file[edge_compare]=scanline_walker.sv
 from[edge_compare]='!edge_value[0][EB-1]'
 to[edge_compare]='(edge_value[0] > 0)'            # edge test E >= 0 becomes E > 0
 file[walker_backpressure]=scanline_walker.sv
-from[walker_backpressure]='wire advance = state == PIXEL && (frag_ready || !frag_valid);'
-to[walker_backpressure]='wire advance = state == PIXEL;'  # the walker ignores the z-buffer's back-pressure
+from[walker_backpressure]='wire advance = walking && (frag_ready || !frag_valid);'
+to[walker_backpressure]='wire advance = walking;'  # the walker ignores the z-buffer's back-pressure
 params[walker_backpressure]="-GSETUP_INTERVAL=4"  # back-to-back triangles: hazard stalls happen
 check[walker_backpressure]=--cosim-only  # once it survived 100 random frames; the coverage frames reach hazards
+# The walker's overlapped load and its span look-ahead.
+file[walker_no_overlap]=scanline_walker.sv
+from[walker_no_overlap]='assign in_ready = !walking || last;'
+to[walker_no_overlap]='assign in_ready = !walking;'  # the next record waits for a cycle of its own
+params[walker_no_overlap]="-GSETUP_INTERVAL=4"  # records waiting in the FIFO: loads overlap
+file[walker_first_row_span]=scanline_walker.sv
+from[walker_first_row_span]='assign src_quot[g] = load ? in_span_quot[g*EB +: EB] : quot[g];'
+to[walker_first_row_span]='assign src_quot[g] = quot[g];'  # the first row's span from the last triangle's DDA
+file[walker_empty_row]=scanline_walker.sv
+from[walker_empty_row]='row_empty <= !span_nonempty;'
+to[walker_empty_row]='row_empty <= 1'"'"'b0;'  # an empty row presents a fragment
+file[z_adder_first_row]=plane_register.sv
+from[z_adder_first_row]='value <= start + offset_product[REG_BITS-1:0];'
+to[z_adder_first_row]='value <= start;'  # the first row's planes not moved to its span start
 file[z_adder_carry]=plane_register.sv
 from[z_adder_carry]='value <= value + step_x_q;'
 to[z_adder_carry]='value <= value + step_x_q + 1'"'"'b1;'  # carry-in of the x-step adder flipped

@@ -203,12 +203,6 @@ class TraceObserver {
       waiting_.push_back(in_setup_.front());
       in_setup_.pop_front();
     }
-    if (s.walker_load && !waiting_.empty()) {
-      in_walker_ = waiting_.front();
-      waiting_.pop_front();
-      out_.triangles[size_t(in_walker_)].walker_load = cycle;
-      out_.setups[size_t(in_walker_)] = read_record();
-    }
     if (s.frag_valid && s.frag_ready) {
       Fragment f;
       f.tri = in_walker_;
@@ -240,6 +234,14 @@ class TraceObserver {
       ++(f.pass ? stats.depth_pass : stats.depth_fail);
     }
     if (s.walker_last && in_walker_ >= 0) out_.triangles[size_t(in_walker_)].walker_end = cycle;
+    // After the fragment and walker_end: a load can be in the cycle of the previous triangle's last
+    // candidate.
+    if (s.walker_load && !waiting_.empty()) {
+      in_walker_ = waiting_.front();
+      waiting_.pop_front();
+      out_.triangles[size_t(in_walker_)].walker_load = cycle;
+      out_.setups[size_t(in_walker_)] = read_record();
+    }
     if (s.walker_candidate) ++stats.candidates;
     const bool stall = s.frag_valid && !s.frag_ready;
     stats.setup.busy += s.setup_busy;

@@ -63,13 +63,10 @@ std::vector<CoverageBin> coverage_bins(const Profile& p, const std::set<std::str
   if (!free("cull") && p.cull == CullMode::None) unreachable(kCulled, "cull is pinned to none");
   const bool can_bbox = free("traversal") || p.traversal == Traversal::BBox;
   const bool can_span = free("traversal") || p.traversal == Traversal::Span;
-  const int most_latency = free("memory_latency") ? max_latency : p.memory_latency;
-  // A hazard needs the next triangle's first fragment on the last one's pixel within the latency:
-  // the walker's load cycle (and the span walker's row cycle) come between them.
+  // A hazard needs the next triangle's first fragment on the last one's pixel within the latency;
+  // with the load in the last candidate's cycle they can be in consecutive cycles (latency 1).
   if (!can_bbox) unreachable(kHazardBBox, "traversal is pinned to span");
-  else if (most_latency < 2) unreachable(kHazardBBox, "a hazard needs memory_latency >= 2 with bbox");
   if (!can_span) unreachable(kHazardSpan, "traversal is pinned to bbox");
-  else if (most_latency < 3) unreachable(kHazardSpan, "a hazard needs memory_latency >= 3 with span");
   // With one record at a time the serial unit starts the next triangle only once the walker took
   // the last record, and finishes it long after a small triangle's walk.
   if (p.setup_interval == 0 && !free("setup_fifo_depth") && p.setup_fifo_depth == 1)
@@ -127,7 +124,7 @@ CoverageCounts frame_coverage(const Profile& p, const std::vector<SnappedTriangl
     }
     hits[kGuardBandDrawn] += outside;
     hits[kGuardBandLimit] += at_limit;
-    if (seen_drawn && record.walker_load == record.setup_done && record.walker_load > previous_walker_end + 1)
+    if (seen_drawn && record.walker_load == record.setup_done && record.walker_load > previous_walker_end)
       ++hits[kFifoEmpty];
     seen_drawn = true;
     previous_walker_end = record.walker_end;

@@ -97,7 +97,7 @@ TEST_P(AbsoluteForm, RegistersEqualTheAbsoluteFormBitForBit) {
     sink.fragments = 0;
     sink.first_error.clear();
     WalkerCounters counters;
-    walker.walk(s, adders, 0, sink, counters);
+    walker.walk(s, adders, 0, true, sink, counters);
     ASSERT_EQ(sink.first_error, "") << test::describe(t);
     fragments += sink.fragments;
   };

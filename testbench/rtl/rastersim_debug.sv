@@ -24,8 +24,9 @@ module rastersim_debug (
   wire take = trace_frag_valid && trace_frag_ready;
   // The triangle the setup unit accepted last (in its accept cycle already).
   wire [31:0] setup_triangle = accept ? accepted_q : accepted_q - 32'd1;
-  // The triangle the walker loaded last (in its load cycle already).
-  wire [31:0] walker_triangle = trace_walker_load ? drawn_index[loaded_q[5:0]] : walker_q;
+  // The triangle of the walker's current candidate (from the cycle after its load: a load can be in
+  // the previous triangle's last candidate cycle).
+  wire [31:0] walker_triangle = walker_q;
   // The triangle of the last fragment the z-buffer accepted.
   wire [31:0] zbuffer_triangle = take ? walker_triangle : zbuffer_q;
 
@@ -49,7 +50,7 @@ module rastersim_debug (
         end
       end
       if (trace_walker_load) loaded_q <= loaded_q + 32'd1;
-      walker_q <= walker_triangle;
+      if (trace_walker_load) walker_q <= drawn_index[loaded_q[5:0]];
       zbuffer_q <= zbuffer_triangle;
     end
   end

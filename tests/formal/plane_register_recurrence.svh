@@ -2,8 +2,9 @@
 // adder's recurrence: whatever sequence of load, step_x, next_row and row_enter (any offset) the
 // walker drives, the register equals the absolute form of its plane. With s, dx, dy taken at the
 // last load and i, j counted here (all modulo 2^REG_BITS, as the register wraps):
-//   value = s + j_value dy + i dx   (i: x steps since the row was entered, j_value: its row)
-//   row   = s + j_row dy            (a span row_enter moves the row register one row ahead)
+//   value = s + j_value dy + i dx   (i: the offset the row was entered at plus the x steps since,
+//                                    j_value: its row)
+//   row   = s + j_row dy            (the row the value was last entered or wrapped to)
 // and the output is clamp((value + 2^(F-1)) >>> F, 0, 2^OUT_BITS - 1), written here independently.
 // Proven by induction (unbounded sequences); the unit's registers are the induction invariant.
   reg f_loaded = 1'b0;
@@ -12,10 +13,11 @@
     if (load) begin
       f_loaded <= 1'b1;
       f_s <= start; f_dx <= step_x_in; f_dy <= step_y_in;
-      f_i <= 0; f_j_value <= 0; f_j_row <= 0;
+      f_i <= {{(REG_BITS-OFFSET_BITS){1'b0}}, offset};  // the span's first row entered at its offset
+      f_j_value <= 0; f_j_row <= 0;
     end else if (row_enter) begin
       f_i <= {{(REG_BITS-OFFSET_BITS){1'b0}}, offset};
-      f_j_value <= f_j_row;
+      f_j_value <= f_j_row + 1'b1;
       f_j_row <= f_j_row + 1'b1;
     end else if (next_row) begin
       f_i <= 0;

@@ -9,4 +9,5 @@
       assert(frag_x <= WIDTH - 1 && frag_y <= HEIGHT - 1);
     end
     if (adder_row_enter && span_nonempty) assert(adder_row_offset <= f_x1 - f_x0);
+    if (adder_load && cfg_traversal && span_nonempty) assert(adder_row_offset <= in_x1 - in_x0);
   end

@@ -2,7 +2,8 @@
 // scanline_walker_inputs.svh. Edge stepping equals the absolute form: at every candidate (x, y)
 // the incrementally stepped edge values are E_k(x, y) = start_k + (x - x0) step_x_k +
 // (y - y0) step_y_k (modulo 2^EB, as the registers wrap), the covered decision is the sign test of
-// those values; in span traversal the edge row registers equal the absolute form of their row.
+// those values; in span traversal the edge row registers equal the absolute form of the row after
+// the current one (the DDA registers run one row ahead).
   // n a modulo 2^EB for a small signed n (an offset inside the box), as shifts and adds: the
   // solver then handles a few adders instead of an EB x EB multiplier.
   function automatic [EB-1:0] times_x(input [XB:0] n, input [EB-1:0] a);
@@ -39,10 +40,10 @@
 
   integer f_e;
   always @* begin
-    if (f_loaded && state == PIXEL && !cfg_traversal) begin
+    if (f_loaded && walking && !cfg_traversal) begin
       for (f_e = 0; f_e < 3; f_e = f_e + 1) assert(edge_value[f_e] == f_at_pixel[f_e]);
       assert(frag_valid == (f_at_pixel[0] >= 0 && f_at_pixel[1] >= 0 && f_at_pixel[2] >= 0));
     end
-    if (f_loaded && state == ROW)
-      for (f_e = 0; f_e < 3; f_e = f_e + 1) assert(edge_row[f_e] == f_at_row[f_e]);
+    if (f_loaded && walking && cfg_traversal)
+      for (f_e = 0; f_e < 3; f_e = f_e + 1) assert(edge_row[f_e] == f_at_row[f_e] + f_step_y[f_e]);
   end

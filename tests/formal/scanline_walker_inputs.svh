@@ -2,7 +2,7 @@
 // walker may assume of its inputs, and a record of the triangle it took at its last load.
 // The setup unit hands over a bounding box inside the screen (x0 <= x1 < WIDTH, y0 <= y1 < HEIGHT),
 // and the traversal does not change mid-walk; edge values, steps and span quotients are free.
-// The proof starts in the reset state (all registers zero: IDLE) and rst stays low.
+// The proof starts in the reset state (all registers zero: not walking) and rst stays low.
   reg f_loaded = 1'b0;
   reg f_traversal;
   reg [XB-1:0] f_x0, f_x1;
@@ -29,8 +29,9 @@
 
   always @* begin
     assume(!rst);
-    if (state == IDLE && in_valid) begin
+    if (load) begin
       assume(in_x0 <= in_x1 && in_x1 <= WIDTH - 1 && in_y0 <= in_y1 && in_y1 <= HEIGHT - 1);
     end
-    if (state != IDLE) assume(cfg_traversal == f_traversal);
+    // Constant while a triangle is walked (a load in its last cycle keeps it for the next one).
+    if (walking) assume(cfg_traversal == f_traversal);
   end

@@ -200,7 +200,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     ZAdder adders(w, p.z_bits, p.shading == Shading::Gouraud);
     WalkSink sink{&check, p.shading == Shading::Gouraud, {}};
     WalkerCounters counters;
-    walker.walk(s, adders, 0, sink, counters);
+    walker.walk(s, adders, 0, true, sink, counters);
     FUZZ_REQUIRE(sink.pixels.size() == expected.size(),
                  std::string(to_string(traversal)) + " walk emits " + std::to_string(sink.pixels.size()) +
                      " fragments, the reference covers " + std::to_string(expected.size()));

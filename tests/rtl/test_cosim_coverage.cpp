@@ -143,13 +143,21 @@ TEST(CosimCoverage, PinnedSettingsMakeBinsUnreachable) {
   p.depth_clear = 0;
   bins = coverage_bins(p, {"traversal", "memory_latency", "cull", "depth_func", "depth_clear"}, 8);
   EXPECT_FALSE(reachable(bins, "walker_hazard_stall_bbox"));  // span only
-  EXPECT_FALSE(reachable(bins, "walker_hazard_stall_span"));  // latency 2 < 3
+  // The next triangle's first fragment can follow the last one's in the next cycle: any latency.
+  EXPECT_TRUE(reachable(bins, "walker_hazard_stall_span"));
   EXPECT_FALSE(reachable(bins, "culled"));
   EXPECT_FALSE(reachable(bins, "depth_greater_write_on"));
   EXPECT_FALSE(reachable(bins, "depth_less_pass"));  // nothing is below 0
   EXPECT_TRUE(reachable(bins, "depth_less_fail"));
   EXPECT_FALSE(reachable(bins, "memory_latency_1"));
   EXPECT_FALSE(reachable(bins, "memory_latency_max"));
+
+  // The serial setup with one record credit starts a triangle only after the walker took the last.
+  p.setup_interval = 0;
+  p.setup_fifo_depth = 1;
+  bins = coverage_bins(p, {"setup_fifo_depth"}, 8);
+  EXPECT_FALSE(reachable(bins, "walker_hazard_stall_bbox"));
+  EXPECT_FALSE(reachable(bins, "walker_hazard_stall_span"));
 }
 
 // The frames of `cosim` at its default count reach every reachable bin on each built geometry.

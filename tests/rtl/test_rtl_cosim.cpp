@@ -95,11 +95,9 @@ TEST_P(SmallDirected, MatchesModel) {
     if (!r.passed) return;
     if (c.name == "directed hazards") hazard_stalls = r.model.stats.zbuffer.stall;
   }
-  // The load cycle (and the span row cycle) separate two triangles' fragments: a stall needs
-  // L >= 2 (bbox) or L >= 3 (span).
-  if (p.memory_latency >= (p.traversal == Traversal::BBox ? 2 : 3)) {
-    EXPECT_GT(hazard_stalls, 0) << "the hazard case must make the z-buffer stall";
-  }
+  // A load in the last candidate's cycle puts two triangles' fragments in consecutive cycles: the
+  // hazard case stalls at every latency.
+  EXPECT_GT(hazard_stalls, 0) << "the hazard case must make the z-buffer stall";
 }
 
 INSTANTIATE_TEST_SUITE_P(BothTraversals, SmallDirected,
@@ -200,10 +198,10 @@ TEST(RtlCycles, WorkedExampleOfTheCycleModel) {
                            12 * w.guard_bits + 11 * p.subpixel_bits;
   ASSERT_EQ(r.rtl.fragments.size(), 2u);
   EXPECT_EQ(r.rtl.triangles[0].walker_load, setup_cycles - 1);
-  EXPECT_EQ(r.rtl.fragments[0].cycle, setup_cycles + 1);  // load, row cycle, pixel
+  EXPECT_EQ(r.rtl.fragments[0].cycle, setup_cycles);  // load, pixel (no row cycle)
   EXPECT_EQ(r.rtl.triangles[1].setup_accept, setup_cycles);
   EXPECT_EQ(r.rtl.triangles[1].setup_done, 2 * setup_cycles - 1);
-  EXPECT_EQ(r.rtl.fragments[1].cycle, 2 * setup_cycles + 1);  // no hazard: long after the write
+  EXPECT_EQ(r.rtl.fragments[1].cycle, 2 * setup_cycles);  // no hazard: long after the write
   EXPECT_EQ(r.rtl.stats.cycles, r.rtl.fragments[1].cycle + p.memory_latency + 1);
 }
 
@@ -223,13 +221,13 @@ TEST(RtlCycles, PipelinedSetupWorkedExample) {
   const int64_t latency = 4 * (1 + (w.coord_bits + 1 + 15) / 16 + 2 + (w.divider_bits + 15) / 16);
   ASSERT_EQ(r.rtl.fragments.size(), 2u);
   EXPECT_EQ(r.rtl.triangles[0].setup_done, latency);
-  EXPECT_EQ(r.rtl.fragments[0].cycle, latency + 2);  // load, row cycle, pixel
+  EXPECT_EQ(r.rtl.fragments[0].cycle, latency + 1);  // load, pixel (no row cycle)
   EXPECT_EQ(r.rtl.triangles[1].setup_accept, 4);
   EXPECT_EQ(r.rtl.triangles[1].setup_done, 4 + latency);
-  // The walker is free after latency + 2; the record comes one slot after the first one's.
+  // The walker is idle after latency + 1; the record comes one slot after the first one's.
   EXPECT_EQ(r.rtl.triangles[1].walker_load, 4 + latency);
-  // Presented in latency + 6 (load, row cycle), held by the hazard until L + 1 after the first.
-  EXPECT_EQ(r.rtl.fragments[1].cycle, latency + 2 + p.memory_latency + 1);
+  // Presented in latency + 5, held by the hazard until L + 1 after the first.
+  EXPECT_EQ(r.rtl.fragments[1].cycle, latency + 1 + p.memory_latency + 1);
   EXPECT_EQ(r.rtl.stats.cycles, r.rtl.fragments[1].cycle + p.memory_latency + 1);
 }
 
