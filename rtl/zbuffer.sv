@@ -49,56 +49,47 @@ module zbuffer #(
 );
 `include "rastersim_widths.vh"
 
-  localparam integer XB = rs_ubits32(WIDTH - 1);
-  localparam integer AB = rs_ubits32(WIDTH * HEIGHT - 1);
-  localparam [AB-1:0] WIDTH_A = WIDTH[AB-1:0];
+  localparam integer X_BITS = rs_ubits32(WIDTH - 1);
+  localparam integer ADDR_BITS = rs_ubits32(WIDTH * HEIGHT - 1);
+  localparam [ADDR_BITS-1:0] WIDTH_A = WIDTH[ADDR_BITS-1:0];
 
-  // In-flight fragments: a ring of 2^RB >= MAX_MEMORY_LATENCY entries, one written every cycle;
-  // the entry of age k (1 .. L) holds the fragment accepted k cycles ago (valid: it was accepted).
-  localparam integer RB = MAX_MEMORY_LATENCY > 2 ? $clog2(MAX_MEMORY_LATENCY) : 1;
-  localparam integer RING = 1 << RB;
-  localparam integer LB = rs_ubits32(MAX_MEMORY_LATENCY);
-  reg [RB-1:0]     now_slot;  // the slot written at the end of this cycle
-  reg              ring_valid [0:RING-1];
-  reg [AB-1:0]     ring_addr [0:RING-1];
-  reg [Z_BITS-1:0] ring_z [0:RING-1];
-  reg [23:0]       ring_rgb [0:RING-1];
+  // In-flight fragments: a ring of RING = 2^RING_BITS >= MAX_MEMORY_LATENCY slots, one written every
+  // cycle (slot now_slot_q). A slot is live from the cycle after its fragment was accepted through
+  // that fragment's data cycle (accepted in c: live in c+1 .. c+L), exactly the window in which a
+  // fragment to the same address must wait; its address stays in flip-flops for the hazard compare,
+  // its depth, colour and address for the write go through a RAM (block RAM on an FPGA) read a
+  // cycle ahead.
+  localparam integer RING_BITS = MAX_MEMORY_LATENCY > 2 ? $clog2(MAX_MEMORY_LATENCY) : 1;
+  localparam integer RING = 1 << RING_BITS;
+  localparam integer LATENCY_BITS = rs_ubits32(MAX_MEMORY_LATENCY);
+  localparam integer DATA_BITS = ADDR_BITS + Z_BITS + 24;  // {address, depth, rgb}
+  reg [RING_BITS-1:0] now_slot_q;  // the slot written at the end of this cycle
+  reg [RING-1:0]      live_q;
+  reg [ADDR_BITS-1:0] ring_addr_q [0:RING-1];
+  reg [DATA_BITS-1:0] ring_data_q [0:RING-1];
 
-  // Ages are taken modulo the ring size: the high bits of wide_age are not needed.
+  // Ages are taken modulo the ring size: the high bits of the latency are not needed for a slot.
   /* verilator lint_off UNUSEDSIGNAL */
-  function automatic [RB-1:0] slot_of_age(input [RB-1:0] now, input [LB-1:0] age);
-    reg [LB:0] wide_age;
+  function automatic [RING_BITS-1:0] slot_of_age(input [RING_BITS-1:0] now, input [LATENCY_BITS-1:0] age);
+    reg [LATENCY_BITS:0] wide_age;
     begin
       wide_age = {1'b0, age};
-      slot_of_age = now - wide_age[RB-1:0];  // modulo RING (a power of two)
+      slot_of_age = now - wide_age[RING_BITS-1:0];  // modulo RING (a power of two)
     end
   endfunction
   /* verilator lint_on UNUSEDSIGNAL */
 
-  wire [AB-1:0] frag_addr = frag_y * WIDTH_A + {{(AB-XB){1'b0}}, frag_x};
+  wire [ADDR_BITS-1:0] frag_addr = frag_y * WIDTH_A + {{(ADDR_BITS-X_BITS){1'b0}}, frag_x};
 
-  // Hazard and in-flight checks compare every ring slot in place, so their cost grows linearly
-  // with the ring: slot s holds the fragment accepted age(s) = now_slot - s cycles ago (modulo
-  // RING; 0 reads as RING, the slot overwritten at the end of this cycle).
-  localparam integer CB = RB + 1 > LB ? RB + 1 : LB;  // ages 1 .. RING and latencies 1 .. MAX
-  wire [CB-1:0] latency = CB'(cfg_memory_latency);
+  // Hazard: a live slot with the fragment's address; one comparator per slot, no age arithmetic.
   reg hazard;
-  reg in_flight;
   integer k;
-  reg [RB-1:0] slot_age;
-  reg [CB-1:0] age;
   always @(*) begin
     hazard = 1'b0;
-    in_flight = 1'b0;
-    for (k = 0; k < RING; k = k + 1) begin
-      slot_age = now_slot - k[RB-1:0];
-      age = slot_age == {RB{1'b0}} ? CB'(RING) : CB'(slot_age);
-      if (age <= latency && ring_valid[k]) begin
-        in_flight = 1'b1;
-        if (ring_addr[k] == frag_addr) hazard = 1'b1;
-      end
-    end
+    for (k = 0; k < RING; k = k + 1)
+      if (live_q[k] && ring_addr_q[k] == frag_addr) hazard = 1'b1;
   end
+  wire in_flight = |live_q;
 
   // The read request does not depend on mem_rd_ready; the fragment is taken with it.
   wire can_accept = mem_clear_done && !hazard;
@@ -109,10 +100,18 @@ module zbuffer #(
   wire accept = frag_valid && frag_ready;
   assign busy = accept || in_flight;
 
-  // The fragment in its data cycle c+L: its word is on mem_rd_depth.
-  wire [RB-1:0]     done_slot = slot_of_age(now_slot, cfg_memory_latency);
-  wire              done_valid = ring_valid[done_slot];
-  wire [Z_BITS-1:0] done_z = ring_z[done_slot];
+  // The fragment in its data cycle c+L: slot done_slot, live until the end of this cycle; its word
+  // is on mem_rd_depth. Its data was read from the RAM in the cycle before (slot next_done_slot
+  // then), or, at L = 1, is the fragment accepted in that cycle, kept in latest_q.
+  wire [RING_BITS-1:0] done_slot = slot_of_age(now_slot_q, cfg_memory_latency);
+  wire [RING_BITS-1:0] next_done_slot = done_slot + 1'b1;  // the same age one cycle on
+  wire                 done_valid = live_q[done_slot];
+  reg  [DATA_BITS-1:0] ram_read_q, latest_q;
+  wire [DATA_BITS-1:0] frag_data = {frag_addr, frag_z, frag_rgb};
+  wire [DATA_BITS-1:0] done_data = cfg_memory_latency == LATENCY_BITS'(1) ? latest_q : ram_read_q;
+  wire [ADDR_BITS-1:0] done_addr = done_data[Z_BITS + 24 +: ADDR_BITS];
+  wire [Z_BITS-1:0]    done_z = done_data[24 +: Z_BITS];
+  wire [23:0]          done_rgb = done_data[23:0];
   reg pass;
   always @(*) begin
     case (cfg_depth_func)
@@ -130,22 +129,26 @@ module zbuffer #(
   assign result_pass = pass;
   assign mem_wr_depth_en = done_valid && pass && cfg_depth_write;
   assign mem_wr_color_en = done_valid && pass;
-  assign mem_wr_addr = ring_addr[done_slot];
+  assign mem_wr_addr = done_addr;
   assign mem_wr_depth = done_z;
-  assign mem_wr_rgb = ring_rgb[done_slot];
+  assign mem_wr_rgb = done_rgb;
 
   always @(posedge clk) begin
     if (rst) begin
-      now_slot <= {RB{1'b0}};
-      for (k = 0; k < RING; k = k + 1) ring_valid[k] <= 1'b0;
+      now_slot_q <= {RING_BITS{1'b0}};
+      live_q <= {RING{1'b0}};
     end else begin
-      now_slot <= now_slot + 1'b1;
-      ring_valid[now_slot] <= accept;
+      now_slot_q <= now_slot_q + 1'b1;
+      // The done slot retires; the slot written now (the same one at L = RING) takes the accept.
+      live_q[done_slot] <= 1'b0;
+      live_q[now_slot_q] <= accept;
     end
   end
+  // Data (no reset: a slot's data is read only while it is live).
   always @(posedge clk) begin
-    ring_addr[now_slot] <= frag_addr;
-    ring_z[now_slot] <= frag_z;
-    ring_rgb[now_slot] <= frag_rgb;
+    ring_addr_q[now_slot_q] <= frag_addr;
+    ring_data_q[now_slot_q] <= frag_data;
+    ram_read_q <= ring_data_q[next_done_slot];
+    latest_q <= frag_data;
   end
 endmodule

@@ -12,6 +12,7 @@ shift
 mutants=("$@")
 [ ${#mutants[@]} -eq 0 ] && mutants=(edge_compare walker_backpressure walker_no_overlap walker_first_row_span
                                      walker_empty_row z_adder_first_row z_adder_carry hazard_stall
+                                     hazard_window_short hazard_address_bit ring_read_slot
                                      serial_floor serial_remainder_correction serial_multiplier_bits
                                      serial_bias_carry setup_slot_counter setup_floor_correction setup_missing_step
                                      setup_credit_count setup_fifo_empty setup_edge_sign)
@@ -49,6 +50,17 @@ file[hazard_stall]=zbuffer.sv
 from[hazard_stall]='wire can_accept = mem_clear_done && !hazard;'
 to[hazard_stall]='wire can_accept = mem_clear_done;'  # read-after-write stall removed
 params[hazard_stall]="-GSETUP_INTERVAL=4"  # a setup fast enough for back-to-back triangles to meet
+# The z-buffer's live bits and its in-flight RAM.
+for m in hazard_window_short hazard_address_bit ring_read_slot; do
+  file[$m]=zbuffer.sv
+  params[$m]="-GSETUP_INTERVAL=4"
+done
+from[hazard_window_short]='live_q[done_slot] <= 1'"'"'b0;'
+to[hazard_window_short]='live_q[next_done_slot] <= 1'"'"'b0;'  # a slot retires a cycle before its data cycle
+from[hazard_address_bit]='if (live_q[k] && ring_addr_q[k] == frag_addr) hazard = 1'"'"'b1;'
+to[hazard_address_bit]='if (live_q[k] && ring_addr_q[k][ADDR_BITS-1:1] == frag_addr[ADDR_BITS-1:1]) hazard = 1'"'"'b1;'  # the compare ignores bit 0
+from[ring_read_slot]='ram_read_q <= ring_data_q[next_done_slot];'
+to[ring_read_slot]='ram_read_q <= ring_data_q[done_slot];'  # the in-flight RAM read a cycle late
 # The serial setup unit.
 for m in serial_floor serial_remainder_correction serial_multiplier_bits serial_bias_carry; do
   file[$m]=triangle_setup.sv

@@ -15,7 +15,7 @@
   localparam integer F_MAX = MAX_MEMORY_LATENCY;
   localparam integer F_WORDS = WIDTH * HEIGHT;
   reg                f_valid [1:F_MAX];
-  reg [AB-1:0]       f_addr [1:F_MAX];
+  reg [ADDR_BITS-1:0]       f_addr [1:F_MAX];
   reg [Z_BITS-1:0]   f_z [1:F_MAX];
   reg [Z_BITS-1:0]   f_depth [0:F_WORDS-1];    // last depth written by the accepted fragments
   reg                f_written [0:F_WORDS-1];
@@ -23,11 +23,11 @@
   reg                f_mem_written [0:F_WORDS-1];
   reg [Z_BITS-1:0]   f_read [1:F_MAX];         // words read, by age
   reg                f_started;
-  reg [LB-1:0]       f_latency;
+  reg [LATENCY_BITS-1:0]       f_latency;
   reg                f_depth_write;
   reg [2:0]          f_depth_func;
   wire [Z_BITS-1:0]  f_clear_value = {Z_BITS{1'b0}};  // the memory's clear value
-  wire [AB-1:0] f_frag_addr = frag_y * WIDTH + frag_x;
+  wire [ADDR_BITS-1:0] f_frag_addr = frag_y * WIDTH + frag_x;
 
   integer f_k;
   reg f_conflict;
@@ -37,7 +37,7 @@
       if (f_k <= cfg_memory_latency && f_valid[f_k] && f_addr[f_k] == f_frag_addr) f_conflict = 1'b1;
   end
   wire f_done_valid = f_valid[cfg_memory_latency];
-  wire [AB-1:0] f_done_addr = f_addr[cfg_memory_latency];
+  wire [ADDR_BITS-1:0] f_done_addr = f_addr[cfg_memory_latency];
   wire [Z_BITS-1:0] f_done_z = f_z[cfg_memory_latency];
   reg f_pass;
   always @* begin
