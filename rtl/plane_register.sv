@@ -14,6 +14,7 @@ module plane_register #(
   input  wire next_row,   // row += step_y; value = row (bbox row wrap)
   input  wire row_enter,  // row += step_y; value = row + offset * step_x (span: the next row)
   input  wire [OFFSET_BITS-1:0] offset,
+  input  wire from_record,  // the product takes step_x_in (high whenever load may be), else step_x
   input  wire [REG_BITS-1:0] start,
   input  wire [REG_BITS-1:0] step_x_in,
   input  wire [REG_BITS-1:0] step_y_in,
@@ -25,7 +26,8 @@ module plane_register #(
   wire [REG_BITS-1:0] next_row_value = row + step_y_q;
   // Only the low REG_BITS of the product matter (modular register).
   /* verilator lint_off UNUSEDSIGNAL */
-  wire [REG_BITS-1:0] offset_step = load ? step_x_in : step_x_q;
+  // The operand follows from_record, not load, so that the product does not wait for the handshake.
+  wire [REG_BITS-1:0] offset_step = from_record ? step_x_in : step_x_q;
   wire [REG_BITS+OFFSET_BITS-1:0] offset_product = {{OFFSET_BITS{1'b0}}, offset_step} * {{REG_BITS{1'b0}}, offset};
   /* verilator lint_on UNUSEDSIGNAL */
 

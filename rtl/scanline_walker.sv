@@ -30,6 +30,7 @@ module scanline_walker #(
   output wire adder_next_row,   // bbox: wrap to the next row
   output wire adder_row_enter,  // span, next row: row += step_y; value = row + offset * step_x
   output wire [rs_ubits32(WIDTH - 1)-1:0] adder_row_offset,
+  output wire adder_from_record, // the offset product is the record's (a load can happen), not the registers'
   // Fragment to the z-buffer.
   output wire frag_valid,
   input  wire frag_ready,
@@ -50,7 +51,6 @@ module scanline_walker #(
   localparam integer RB = rs_span_rem_bits(HEIGHT, S);
   localparam integer XB = rs_ubits32(WIDTH - 1);
   localparam integer YB = rs_ubits32(HEIGHT - 1);
-  localparam integer QB = EB + 2;  // span bounds: -quot and quot compared at full width
   localparam [EB-1:0] CARRY = {{(EB-1){1'b0}}, 1'b1};
 
   // The record's fields at their places (rastersim_widths.vh).
@@ -98,14 +98,16 @@ module scanline_walker #(
   assign frag_valid = walking && (cfg_traversal ? !row_empty : covered);
   wire advance = walking && (frag_ready || !frag_valid);
   wire row_done = cfg_traversal ? row_empty || frag_x == x_end : frag_x == x1;
-  wire last_row = frag_y == y1;
+  reg  last_row;  // frag_y == y1, kept as a register (set with frag_y)
   assign last = advance && row_done && last_row;
   assign in_ready = !walking || last;
   wire load = in_valid && in_ready;
   wire next_row = advance && row_done && !last_row;
 
-  // ---- the DDA and span of the row about to start: the record's first row in the load cycle,
-  // else the registers' next row ----
+  // ---- the DDA and span of the row about to start: the record's first row while the walker is
+  // idle or on its last row (a load can only happen then), else the registers' next row. The choice
+  // does not wait for the z-buffer's ready: `load` and `next_row` only enable the registers. ----
+  wire use_record = !walking || last_row;
   wire signed [EB-1:0] src_edge_row [0:2];
   wire signed [EB-1:0] src_step_x [0:2];
   wire signed [EB-1:0] src_step_y [0:2];
@@ -121,40 +123,64 @@ module scanline_walker #(
       wire signed [EB-1:0] in_step_y_wide = $signed({{(EB-SYB){in_edge_step_y[g*SYB + SYB - 1]}}, in_edge_step_y[g*SYB +: SYB]});
       wire signed [EB-1:0] in_step_quot_wide = $signed({{(EB-SYB){in_span_step_quot[g*SYB + SYB - 1]}}, in_span_step_quot[g*SYB +: SYB]});
       wire [RB-1:0] in_divisor = in_edge_step_x[g*SXB + SXB - 1] ? -in_edge_step_x[g*SXB +: RB] : in_edge_step_x[g*SXB +: RB];
-      assign src_edge_row[g] = load ? in_edge_start[g*EB +: EB] : edge_row[g];
-      assign src_step_x[g] = load ? in_step_x_wide : step_x[g];
-      assign src_step_y[g] = load ? in_step_y_wide : step_y[g];
-      assign src_quot[g] = load ? in_span_quot[g*EB +: EB] : quot[g];
-      assign src_rem[g] = load ? in_span_rem[g*RB +: RB] : rem[g];
-      assign src_step_quot[g] = load ? in_step_quot_wide : step_quot[g];
-      assign src_step_rem[g] = load ? in_span_step_rem[g*RB +: RB] : step_rem[g];
-      assign src_divisor[g] = load ? in_divisor : divisor[g];
+      assign src_edge_row[g] = use_record ? in_edge_start[g*EB +: EB] : edge_row[g];
+      assign src_step_x[g] = use_record ? in_step_x_wide : step_x[g];
+      assign src_step_y[g] = use_record ? in_step_y_wide : step_y[g];
+      assign src_quot[g] = use_record ? in_span_quot[g*EB +: EB] : quot[g];
+      assign src_rem[g] = use_record ? in_span_rem[g*RB +: RB] : rem[g];
+      assign src_step_quot[g] = use_record ? in_step_quot_wide : step_quot[g];
+      assign src_step_rem[g] = use_record ? in_span_step_rem[g*RB +: RB] : step_rem[g];
+      assign src_divisor[g] = use_record ? in_divisor : divisor[g];
     end
   endgenerate
-  wire [XB-1:0] src_x0 = load ? in_x0 : x0;
-  wire [XB-1:0] src_x1 = load ? in_x1 : x1;
-
-  // Span bounds: offsets t from x0 with every edge >= 0.
-  wire [XB-1:0] last_offset_x = src_x1 - src_x0;
-  wire signed [QB-1:0] last_offset = $signed({{(QB-XB){1'b0}}, last_offset_x});
-  reg signed [QB-1:0] span_lo, span_hi;
-  integer k;
-  always @(*) begin
-    span_lo = {QB{1'b0}};
-    span_hi = last_offset;
-    for (k = 0; k < 3; k = k + 1) begin
-      if (src_step_x[k] > 0) begin
-        // t >= ceil(-E / d) = -floor(E / d)
-        if (-$signed({{2{src_quot[k][EB-1]}}, src_quot[k]}) > span_lo) span_lo = -$signed({{2{src_quot[k][EB-1]}}, src_quot[k]});
-      end else if (src_step_x[k] < 0) begin
-        // t <= floor(E / d)
-        if ($signed({{2{src_quot[k][EB-1]}}, src_quot[k]}) < span_hi) span_hi = $signed({{2{src_quot[k][EB-1]}}, src_quot[k]});
-      end else if (src_edge_row[k] < 0) begin
-        span_hi = -1;  // horizontal edge with the row outside
-      end
+  // Left edges have step_x > 0, right ones < 0: the step's sign and a zero test, registered at load
+  // so that the registers' side needs no logic at all.
+  wire [2:0] in_right, in_left, src_left, src_right;
+  reg  [2:0] left_q, right_q;
+  generate
+    for (g = 0; g < 3; g = g + 1) begin : side
+      assign in_right[g] = in_edge_step_x[g*SXB + SXB - 1];
+      assign in_left[g] = !in_right[g] && |in_edge_step_x[g*SXB +: SXB];
     end
-  end
-  wire span_nonempty = span_lo <= span_hi;
+  endgenerate
+  assign src_left = use_record ? in_left : left_q;
+  assign src_right = use_record ? in_right : right_q;
+  wire [XB-1:0] src_x0 = use_record ? in_x0 : x0;
+  wire [XB-1:0] src_x1 = use_record ? in_x1 : x1;
+
+  // Span bounds: offsets t from x0 with every edge >= 0, on XB + 1 bits: each edge's bound is
+  // saturated first (a bound at or beyond 2^XB only ever means "outside the box", as the box's last
+  // offset is below 2^XB), so the comparisons are XB + 1 bits wide, not EB + 2.
+  //  left edge (step_x > 0):  t >= -floor(E / d) = -quot, saturated to [0, 2^XB]
+  //  right edge (step_x < 0): t <= quot, saturated to [0, 2^XB - 1]; quot < 0: no pixel
+  //  horizontal edge: the whole row or, with E < 0, no pixel
+  wire [XB-1:0] last_offset = src_x1 - src_x0;
+  wire [XB:0] edge_lo [0:2];
+  wire [XB-1:0] edge_hi [0:2];
+  wire [2:0] edge_empty;
+  generate
+    for (g = 0; g < 3; g = g + 1) begin : bounds
+      wire negative = src_quot[g][EB-1];
+      // quot in [-2^XB, -1]: its bits above XB-1 are all ones.
+      wire small_negative = &src_quot[g][EB-1:XB];
+      wire [XB:0] minus_quot = -src_quot[g][XB:0];
+      // quot in [0, 2^XB - 1]: its bits above XB-1 are all zeros.
+      wire small_positive = ~|src_quot[g][EB-1:XB];
+      wire left = src_left[g];
+      wire right = src_right[g];
+      assign edge_lo[g] = !left || !negative ? {(XB+1){1'b0}}
+                        : small_negative ? minus_quot : {1'b1, {XB{1'b0}}};
+      assign edge_hi[g] = !right || !small_positive ? {XB{1'b1}} : src_quot[g][XB-1:0];
+      assign edge_empty[g] = right ? negative : !left && src_edge_row[g][EB-1];
+    end
+  endgenerate
+  // Minimum and maximum as trees: two compare levels each.
+  wire [XB:0] lo01 = edge_lo[0] > edge_lo[1] ? edge_lo[0] : edge_lo[1];
+  wire [XB:0] span_lo = lo01 > edge_lo[2] ? lo01 : edge_lo[2];
+  wire [XB-1:0] hi01 = edge_hi[0] < edge_hi[1] ? edge_hi[0] : edge_hi[1];
+  wire [XB-1:0] hi2 = edge_hi[2] < last_offset ? edge_hi[2] : last_offset;
+  wire [XB-1:0] span_hi = hi01 < hi2 ? hi01 : hi2;
+  wire span_nonempty = !(|edge_empty) && span_lo <= {1'b0, span_hi};
   wire enter_span_row = cfg_traversal && (load || next_row);
 
   assign adder_load = load;
@@ -163,6 +189,7 @@ module scanline_walker #(
   assign adder_row_enter = next_row && cfg_traversal;
   // The first row's offset at load (0 for bbox: the plane registers start at x0).
   assign adder_row_offset = cfg_traversal ? span_lo[XB-1:0] : {XB{1'b0}};
+  assign adder_from_record = use_record;
 
   assign busy = load || advance;
   assign candidate = advance && (frag_valid || !cfg_traversal);
@@ -182,6 +209,9 @@ module scanline_walker #(
       y1 <= in_y1;
       frag_x <= in_x0;
       frag_y <= in_y0;
+      last_row <= in_y0 == in_y1;
+      left_q <= in_left;
+      right_q <= in_right;
       for (i = 0; i < 3; i = i + 1) begin
         edge_row[i] <= src_edge_row[i];
         edge_value[i] <= src_edge_row[i];
@@ -197,6 +227,7 @@ module scanline_walker #(
         for (i = 0; i < 3; i = i + 1) edge_value[i] <= edge_value[i] + step_x[i];
       end else if (!last_row) begin
         frag_y <= frag_y + 1'b1;
+        last_row <= frag_y + 1'b1 == y1;
         if (!cfg_traversal) begin
           frag_x <= x0;
           for (i = 0; i < 3; i = i + 1) begin
@@ -209,11 +240,11 @@ module scanline_walker #(
     if (enter_span_row) begin
       // The row about to start: its span; the DDA steps every edge to the row after it.
       frag_x <= src_x0 + span_lo[XB-1:0];
-      x_end <= src_x0 + span_hi[XB-1:0];
+      x_end <= src_x0 + span_hi;
       row_empty <= !span_nonempty;
       for (i = 0; i < 3; i = i + 1) begin
         edge_row[i] <= src_edge_row[i] + src_step_y[i];
-        if (src_step_x[i] != 0) begin
+        if (src_left[i] || src_right[i]) begin
           if ({1'b0, src_rem[i]} + {1'b0, src_step_rem[i]} >= {1'b0, src_divisor[i]}) begin
             rem[i] <= src_rem[i] + src_step_rem[i] - src_divisor[i];
             quot[i] <= src_quot[i] + src_step_quot[i] + CARRY;  // all EB bits: modular, sign-agnostic

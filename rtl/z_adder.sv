@@ -14,6 +14,7 @@ module z_adder #(
   input  wire next_row,
   input  wire row_enter,
   input  wire [rs_ubits32(WIDTH - 1)-1:0] row_offset,
+  input  wire from_record,  // row_offset belongs to the record (load), not to the next row
   input  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_start,
   input  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_step_x,
   input  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_step_y,
@@ -36,7 +37,7 @@ module z_adder #(
 
   plane_register #(.REG_BITS(ZRB), .GUARD_BITS(F), .OUT_BITS(Z_BITS), .OFFSET_BITS(XB)) depth_plane (
     .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter),
-    .offset(row_offset), .start(depth_start), .step_x_in(depth_step_x), .step_y_in(depth_step_y),
+    .offset(row_offset), .from_record(from_record), .start(depth_start), .step_x_in(depth_step_x), .step_y_in(depth_step_y),
     .out(depth));
 
   wire [23:0] gouraud_rgb;
@@ -46,7 +47,7 @@ module z_adder #(
       // Channel c is r, g, b for c = 0, 1, 2; rgb holds r in [23:16].
       plane_register #(.REG_BITS(CRB), .GUARD_BITS(F), .OUT_BITS(8), .OFFSET_BITS(XB)) plane (
         .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter),
-        .offset(row_offset), .start(color_start[c*CRB +: CRB]), .step_x_in(color_step_x[c*CRB +: CRB]),
+        .offset(row_offset), .from_record(from_record), .start(color_start[c*CRB +: CRB]), .step_x_in(color_step_x[c*CRB +: CRB]),
         .step_y_in(color_step_y[c*CRB +: CRB]), .out(gouraud_rgb[8*(2-c) +: 8]));
     end
   endgenerate

@@ -35,7 +35,7 @@ from[walker_no_overlap]='assign in_ready = !walking || last;'
 to[walker_no_overlap]='assign in_ready = !walking;'  # the next record waits for a cycle of its own
 params[walker_no_overlap]="-GSETUP_INTERVAL=4"  # records waiting in the FIFO: loads overlap
 file[walker_first_row_span]=scanline_walker.sv
-from[walker_first_row_span]='assign src_quot[g] = load ? in_span_quot[g*EB +: EB] : quot[g];'
+from[walker_first_row_span]='assign src_quot[g] = use_record ? in_span_quot[g*EB +: EB] : quot[g];'
 to[walker_first_row_span]='assign src_quot[g] = quot[g];'  # the first row's span from the last triangle's DDA
 file[walker_empty_row]=scanline_walker.sv
 from[walker_empty_row]='row_empty <= !span_nonempty;'

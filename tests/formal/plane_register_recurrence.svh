@@ -32,6 +32,12 @@
   wire signed [REG_BITS-1:0] f_biased = f_value + (1 << (GUARD_BITS - 1));
   wire signed [REG_BITS-1:0] f_shifted = f_biased >>> GUARD_BITS;
   wire [OUT_BITS-1:0] f_out = f_shifted < 0 ? 0 : f_shifted > (1 << OUT_BITS) - 1 ? {OUT_BITS{1'b1}} : f_shifted[OUT_BITS-1:0];
+  // The walker's contract: the product takes the record's step in a load, the register's in a
+  // row_enter.
+  always @* begin
+    if (load) assume(from_record);
+    if (row_enter) assume(!from_record);
+  end
   always @* begin
     if (f_loaded) begin
       assert(step_x_q == f_dx);
