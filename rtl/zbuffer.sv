@@ -50,22 +50,29 @@ module zbuffer #(
 `include "rastersim_widths.vh"
 
   localparam integer X_BITS = rs_ubits32(WIDTH - 1);
+  localparam integer Y_BITS = rs_ubits32(HEIGHT - 1);
   localparam integer ADDR_BITS = rs_ubits32(WIDTH * HEIGHT - 1);
   localparam [ADDR_BITS-1:0] WIDTH_A = WIDTH[ADDR_BITS-1:0];
 
   // In-flight fragments: a ring of RING = 2^RING_BITS >= MAX_MEMORY_LATENCY slots, one written every
   // cycle (slot now_slot_q). A slot is live from the cycle after its fragment was accepted through
   // that fragment's data cycle (accepted in c: live in c+1 .. c+L), exactly the window in which a
-  // fragment to the same address must wait; its address stays in flip-flops for the hazard compare,
-  // its depth, colour and address for the write go through a RAM (block RAM on an FPGA) read a
-  // cycle ahead.
+  // fragment to the same address must wait; its pixel (y, x) stays in flip-flops for the hazard
+  // compare (no address adder on that path), its depth, colour and address for the write go
+  // through a RAM (block RAM on an FPGA) read a cycle ahead.
   localparam integer RING_BITS = MAX_MEMORY_LATENCY > 2 ? $clog2(MAX_MEMORY_LATENCY) : 1;
   localparam integer RING = 1 << RING_BITS;
   localparam integer LATENCY_BITS = rs_ubits32(MAX_MEMORY_LATENCY);
   localparam integer DATA_BITS = ADDR_BITS + Z_BITS + 24;  // {address, depth, rgb}
-  reg [RING_BITS-1:0] now_slot_q;  // the slot written at the end of this cycle
-  reg [RING-1:0]      live_q;
-  reg [ADDR_BITS-1:0] ring_addr_q [0:RING-1];
+  reg [RING_BITS-1:0] now_slot_q;     // the slot written at the end of this cycle
+  reg [RING-1:0]      live_q;         // live slots but the last cycle's
+  reg                 accepted_q;     // the last cycle's accept: its slot is live from now on
+  reg [RING-1:0]      last_onehot_q;  // the slot written in the last cycle, one-hot
+  // The live slots: the last cycle's accept enters through one flip-flop, so that the accept does
+  // not fan out to every slot's live bit in its own cycle.
+  wire [RING-1:0] live = live_q | (accepted_q ? last_onehot_q : {RING{1'b0}});
+  localparam integer PIXEL_BITS = Y_BITS + X_BITS;  // {y, x}: one pixel, one address
+  reg [PIXEL_BITS-1:0] ring_pixel_q [0:RING-1];
   reg [DATA_BITS-1:0] ring_data_q [0:RING-1];
 
   // Ages are taken modulo the ring size: the high bits of the latency are not needed for a slot.
@@ -80,16 +87,17 @@ module zbuffer #(
   /* verilator lint_on UNUSEDSIGNAL */
 
   wire [ADDR_BITS-1:0] frag_addr = frag_y * WIDTH_A + {{(ADDR_BITS-X_BITS){1'b0}}, frag_x};
+  wire [PIXEL_BITS-1:0] frag_pixel = {frag_y, frag_x};
 
-  // Hazard: a live slot with the fragment's address; one comparator per slot, no age arithmetic.
+  // Hazard: a live slot with the fragment's pixel; one comparator per slot, no age arithmetic.
   reg hazard;
   integer k;
   always @(*) begin
     hazard = 1'b0;
     for (k = 0; k < RING; k = k + 1)
-      if (live_q[k] && ring_addr_q[k] == frag_addr) hazard = 1'b1;
+      if (live[k] && ring_pixel_q[k] == frag_pixel) hazard = 1'b1;
   end
-  wire in_flight = |live_q;
+  wire in_flight = |live;
 
   // The read request does not depend on mem_rd_ready; the fragment is taken with it.
   wire can_accept = mem_clear_done && !hazard;
@@ -105,7 +113,8 @@ module zbuffer #(
   // then), or, at L = 1, is the fragment accepted in that cycle, kept in latest_q.
   wire [RING_BITS-1:0] done_slot = slot_of_age(now_slot_q, cfg_memory_latency);
   wire [RING_BITS-1:0] next_done_slot = done_slot + 1'b1;  // the same age one cycle on
-  wire                 done_valid = live_q[done_slot];
+  wire                 done_valid = live[done_slot];
+  wire [RING-1:0]      done_onehot = {{(RING-1){1'b0}}, 1'b1} << done_slot;
   reg  [DATA_BITS-1:0] ram_read_q, latest_q;
   wire [DATA_BITS-1:0] frag_data = {frag_addr, frag_z, frag_rgb};
   wire [DATA_BITS-1:0] done_data = cfg_memory_latency == LATENCY_BITS'(1) ? latest_q : ram_read_q;
@@ -137,18 +146,21 @@ module zbuffer #(
     if (rst) begin
       now_slot_q <= {RING_BITS{1'b0}};
       live_q <= {RING{1'b0}};
+      accepted_q <= 1'b0;
     end else begin
       now_slot_q <= now_slot_q + 1'b1;
-      // The done slot retires; the slot written now (the same one at L = RING) takes the accept.
-      live_q[done_slot] <= 1'b0;
-      live_q[now_slot_q] <= accept;
+      // The done slot retires; the slot written now (the same one at L = RING) takes the accept,
+      // one cycle later through accepted_q.
+      live_q <= live & ~done_onehot;
+      accepted_q <= accept;
     end
   end
   // Data (no reset: a slot's data is read only while it is live).
   always @(posedge clk) begin
-    ring_addr_q[now_slot_q] <= frag_addr;
+    ring_pixel_q[now_slot_q] <= frag_pixel;
     ring_data_q[now_slot_q] <= frag_data;
     ram_read_q <= ring_data_q[next_done_slot];
+    last_onehot_q <= {{(RING-1){1'b0}}, 1'b1} << now_slot_q;
     latest_q <= frag_data;
   end
 endmodule

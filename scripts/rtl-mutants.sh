@@ -55,10 +55,10 @@ for m in hazard_window_short hazard_address_bit ring_read_slot; do
   file[$m]=zbuffer.sv
   params[$m]="-GSETUP_INTERVAL=4"
 done
-from[hazard_window_short]='live_q[done_slot] <= 1'"'"'b0;'
-to[hazard_window_short]='live_q[next_done_slot] <= 1'"'"'b0;'  # a slot retires a cycle before its data cycle
-from[hazard_address_bit]='if (live_q[k] && ring_addr_q[k] == frag_addr) hazard = 1'"'"'b1;'
-to[hazard_address_bit]='if (live_q[k] && ring_addr_q[k][ADDR_BITS-1:1] == frag_addr[ADDR_BITS-1:1]) hazard = 1'"'"'b1;'  # the compare ignores bit 0
+from[hazard_window_short]='1'"'"'b1} << done_slot;'
+to[hazard_window_short]='1'"'"'b1} << next_done_slot;'  # a slot retires a cycle before its data cycle
+from[hazard_address_bit]='if (live[k] && ring_pixel_q[k] == frag_pixel) hazard = 1'"'"'b1;'
+to[hazard_address_bit]='if (live[k] && ring_pixel_q[k][PIXEL_BITS-1:1] == frag_pixel[PIXEL_BITS-1:1]) hazard = 1'"'"'b1;'  # the compare ignores bit 0 of x
 from[ring_read_slot]='ram_read_q <= ring_data_q[next_done_slot];'
 to[ring_read_slot]='ram_read_q <= ring_data_q[done_slot];'  # the in-flight RAM read a cycle late
 # The serial setup unit.
