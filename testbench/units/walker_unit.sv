@@ -1,0 +1,62 @@
+// The walker and the Z adder as rastersim_core joins them, alone: the record comes from the test
+// (packed as rs_rec_lsb lays it out), frag_ready is the test's script. Verilated for the unit test
+// of the walk against the model's (tests/units/test_walker_unit.cpp).
+module walker_unit #(
+  parameter integer WIDTH = 64,
+  parameter integer HEIGHT = 48,
+  parameter integer SUBPIXEL_BITS = 4,
+  parameter integer Z_BITS = 24,
+  parameter integer Z_GUARD_BITS = 0
+) (
+  input  wire clk,
+  input  wire rst,
+  input  wire cfg_traversal,  // 0 bbox, 1 span
+  input  wire cfg_shading,    // 0 flat, 1 gouraud
+  input  wire in_valid,
+  output wire in_ready,
+  input  wire [rs_rec_lsb(18, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS)-1:0] in_record,
+  output wire load,           // the walker takes the record (walker_load)
+  output wire frag_valid,
+  input  wire frag_ready,
+  output wire [rs_ubits32(WIDTH - 1)-1:0]  frag_x,
+  output wire [rs_ubits32(HEIGHT - 1)-1:0] frag_y,
+  output wire [Z_BITS-1:0] frag_z,
+  output wire [23:0] frag_rgb,
+  output wire busy,
+  output wire candidate,
+  output wire last
+);
+`include "rastersim_widths.vh"
+  `include "rastersim_record.vh"
+  localparam integer F = rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS);
+  localparam integer Z_REG_BITS = Z_BITS + F + 1;
+  localparam integer COLOR_REG_BITS = 9 + F;
+  localparam integer X_BITS = rs_ubits32(WIDTH - 1);
+  // The packed record's width, for the test's check of its own packing (setup_record.h).
+  localparam integer RECORD_BITS /*verilator public*/ =
+      rs_rec_lsb(18, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+
+  wire adder_step_x, adder_next_row, adder_row_enter, adder_from_record;
+  wire [X_BITS-1:0] adder_row_offset;
+
+  scanline_walker #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS)) walker (
+    .clk(clk), .rst(rst), .cfg_traversal(cfg_traversal),
+    .in_valid(in_valid), .in_ready(in_ready),
+    .in_record(in_record[rs_rec_walker_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0]),
+    .adder_load(load), .adder_step_x(adder_step_x), .adder_next_row(adder_next_row),
+    .adder_row_enter(adder_row_enter), .adder_row_offset(adder_row_offset), .adder_from_record(adder_from_record),
+    .frag_valid(frag_valid), .frag_ready(frag_ready), .frag_x(frag_x), .frag_y(frag_y),
+    .busy(busy), .candidate(candidate), .last(last));
+
+  z_adder #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS)) adders (
+    .clk(clk), .cfg_shading(cfg_shading), .load(load), .step_x(adder_step_x),
+    .next_row(adder_next_row), .row_enter(adder_row_enter), .row_offset(adder_row_offset),
+    .from_record(adder_from_record),
+    .depth_start(in_record[LSB_DEPTH_START +: Z_REG_BITS]),
+    .depth_step_x(in_record[LSB_DEPTH_STEP_X +: Z_REG_BITS]),
+    .depth_step_y(in_record[LSB_DEPTH_STEP_Y +: Z_REG_BITS]),
+    .color_start(in_record[LSB_COLOR_START +: 3*COLOR_REG_BITS]),
+    .color_step_x(in_record[LSB_COLOR_STEP_X +: 3*COLOR_REG_BITS]),
+    .color_step_y(in_record[LSB_COLOR_STEP_Y +: 3*COLOR_REG_BITS]),
+    .flat_rgb(in_record[LSB_FLAT_RGB +: 24]), .depth(frag_z), .rgb(frag_rgb));
+endmodule
