@@ -19,12 +19,12 @@ module rastersim_core #(
 ) (
   input  wire clk,
   input  wire rst,
-  input  wire [2:0] cfg_depth_func,        // 0 never .. 7 always, as profile.h DepthFunc
+  input  wire [2:0] cfg_depth_func,        // RS_DEPTH_* (rastersim_widths.vh)
   input  wire       cfg_depth_write,
-  input  wire [1:0] cfg_cull,              // 0 none, 1 back, 2 front
-  input  wire       cfg_front_face,        // 0 ccw, 1 cw
-  input  wire       cfg_traversal,         // 0 bbox, 1 span
-  input  wire       cfg_shading,           // 0 flat, 1 gouraud
+  input  wire [1:0] cfg_cull,              // RS_CULL_*
+  input  wire       cfg_front_face,        // RS_FRONT_*
+  input  wire       cfg_traversal,         // RS_TRAVERSAL_*
+  input  wire       cfg_shading,           // RS_SHADING_*
   input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,  // 1 .. MAX_MEMORY_LATENCY
   input  wire [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] cfg_setup_fifo_depth,  // record credits, 1 .. MAX
   output wire frame_ready,
@@ -93,6 +93,15 @@ module rastersim_core #(
       rs_setup_rejected_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, SETUP_INTERVAL);
   localparam integer WALKER_LOAD_CYCLES /*verilator public*/ = 1;
   // The profile parameters themselves, for the harness.
+  // The encodings of rastersim_widths.vh in one word, from bit 0: RS_DEPTH_NEVER .. RS_DEPTH_ALWAYS
+  // (3 bits each), RS_CULL_NONE, _BACK, _FRONT (2), RS_FRONT_CCW, _CW, RS_TRAVERSAL_BBOX, _SPAN,
+  // RS_SHADING_FLAT, _GOURAUD (1), RS_STATUS_DRAWN .. RS_STATUS_OFFSCREEN (2).
+  localparam [43:0] ENCODINGS /*verilator public*/ = {
+      RS_STATUS_OFFSCREEN, RS_STATUS_CULLED, RS_STATUS_DEGENERATE, RS_STATUS_DRAWN,
+      RS_SHADING_GOURAUD, RS_SHADING_FLAT, RS_TRAVERSAL_SPAN, RS_TRAVERSAL_BBOX, RS_FRONT_CW, RS_FRONT_CCW,
+      RS_CULL_FRONT, RS_CULL_BACK, RS_CULL_NONE,
+      RS_DEPTH_ALWAYS, RS_DEPTH_GEQUAL, RS_DEPTH_NOTEQUAL, RS_DEPTH_GREATER, RS_DEPTH_LEQUAL, RS_DEPTH_EQUAL,
+      RS_DEPTH_LESS, RS_DEPTH_NEVER};
   localparam integer P_WIDTH /*verilator public*/ = WIDTH;
   localparam integer P_HEIGHT /*verilator public*/ = HEIGHT;
   localparam integer P_SUBPIXEL_BITS /*verilator public*/ = SUBPIXEL_BITS;
@@ -146,7 +155,7 @@ module rastersim_core #(
   reg [CREDIT_BITS-1:0] credits_held;
   wire credit_free = credits_held < setup_fifo_depth_q;
   wire accept = cmd_valid && cmd_ready;
-  wire rejected = trace_setup_decided && trace_setup_status != 2'd0;
+  wire rejected = trace_setup_decided && trace_setup_status != RS_STATUS_DRAWN;
   always @(posedge clk) begin
     if (rst) credits_held <= {CREDIT_BITS{1'b0}};
     else credits_held <= credits_held + {{(CREDIT_BITS-1){1'b0}}, accept}

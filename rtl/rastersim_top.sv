@@ -15,13 +15,13 @@ module rastersim_top #(
 ) (
   input  wire clk,
   input  wire rst,
-  input  wire [2:0] cfg_depth_func,        // 0 never .. 7 always, as profile.h DepthFunc
+  input  wire [2:0] cfg_depth_func,        // RS_DEPTH_* (rastersim_widths.vh)
   input  wire       cfg_depth_write,
   input  wire [Z_BITS-1:0] cfg_depth_clear,
-  input  wire [1:0] cfg_cull,              // 0 none, 1 back, 2 front
-  input  wire       cfg_front_face,        // 0 ccw, 1 cw
-  input  wire       cfg_traversal,         // 0 bbox, 1 span
-  input  wire       cfg_shading,           // 0 flat, 1 gouraud
+  input  wire [1:0] cfg_cull,              // RS_CULL_*
+  input  wire       cfg_front_face,        // RS_FRONT_*
+  input  wire       cfg_traversal,         // RS_TRAVERSAL_*
+  input  wire       cfg_shading,           // RS_SHADING_*
   input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,  // 1 .. MAX_MEMORY_LATENCY
   input  wire [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] cfg_setup_fifo_depth,  // record credits, 1 .. MAX
   output wire frame_ready,

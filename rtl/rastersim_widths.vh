@@ -2,7 +2,7 @@
 // formulas as model/widths.h (derive_widths), written independently. Included inside the body of
 // every module that needs them (functions cannot be shared through a package in yosys 0.23).
 // Arithmetic is done on 128-bit values: the largest bound (the depth dividend) needs 102 bits.
-// The top module republishes the results as /*verilator public*/ localparams so that the C++ build
+// The top module republishes the results as localparams so that the C++ build
 // static_asserts them against rastersim::derive_widths (testbench/rtl_widths_check.cpp).
 
 // Smallest unsigned width b >= 1 with v < 2^b.
@@ -179,6 +179,24 @@ function automatic integer rs_setup_rejected_latency(input integer w, input inte
                                                      input integer interval);
   rs_setup_rejected_latency = interval == 0 ? 2 + 2 * rs_delta_bits(w, h, s) : 1;
 endfunction
+
+// Encodings of the run-time settings and of the setup decision, numbered as the C++ enums of
+// model/profile.h (DepthFunc, CullMode, FrontFace, Traversal, Shading) and model/triangle_setup.h
+// (SetupStatus). rastersim_core publishes them in one word (ENCODINGS), which the C++ build
+// static_asserts against the enums (testbench/rtl_configs.cpp.in).
+/* verilator lint_off UNUSEDPARAM */
+localparam [2:0] RS_DEPTH_NEVER = 3'd0, RS_DEPTH_LESS = 3'd1,
+                 RS_DEPTH_EQUAL = 3'd2, RS_DEPTH_LEQUAL = 3'd3,
+                 RS_DEPTH_GREATER = 3'd4, RS_DEPTH_NOTEQUAL = 3'd5,
+                 RS_DEPTH_GEQUAL = 3'd6, RS_DEPTH_ALWAYS = 3'd7;
+localparam [1:0] RS_CULL_NONE = 2'd0, RS_CULL_BACK = 2'd1,
+                 RS_CULL_FRONT = 2'd2;
+localparam [0:0] RS_FRONT_CCW = 1'b0, RS_FRONT_CW = 1'b1;
+localparam [0:0] RS_TRAVERSAL_BBOX = 1'b0, RS_TRAVERSAL_SPAN = 1'b1;
+localparam [0:0] RS_SHADING_FLAT = 1'b0, RS_SHADING_GOURAUD = 1'b1;
+localparam [1:0] RS_STATUS_DRAWN = 2'd0, RS_STATUS_DEGENERATE = 2'd1,
+                 RS_STATUS_CULLED = 2'd2, RS_STATUS_OFFSCREEN = 2'd3;
+/* verilator lint_on UNUSEDPARAM */
 
 // The setup record as one packed vector (the model's SetupResult; the C++ side's field table is
 // testbench/setup_record.h). Fields from the least significant bit up, by number:

@@ -18,7 +18,7 @@ module scanline_walker #(
 ) (
   input  wire clk,
   input  wire rst,
-  input  wire cfg_traversal,  // 0 bbox, 1 span
+  input  wire cfg_traversal,  // RS_TRAVERSAL_* (rastersim_widths.vh)
   // Setup record (triangle_setup out_record).
   input  wire in_valid,
   output wire in_ready,
@@ -78,6 +78,7 @@ module scanline_walker #(
   wire [3*SYB-1:0] in_span_step_quot = in_record[LSB_SPAN_STEP_QUOT +: 3*SYB];
   wire [3*RB-1:0] in_span_step_rem = in_record[LSB_SPAN_STEP_REM +: 3*RB];
 
+  wire span_traversal = cfg_traversal == RS_TRAVERSAL_SPAN;
   reg walking;  // a triangle is loaded and not finished
 
   reg [XB-1:0] x0, x1, x_end;
@@ -95,9 +96,9 @@ module scanline_walker #(
 
   // ---- the current candidate ----
   wire covered = !edge_value[0][EB-1] && !edge_value[1][EB-1] && !edge_value[2][EB-1];
-  assign frag_valid = walking && (cfg_traversal ? !row_empty : covered);
+  assign frag_valid = walking && (span_traversal ? !row_empty : covered);
   wire advance = walking && (frag_ready || !frag_valid);
-  wire row_done = cfg_traversal ? row_empty || frag_x == x_end : frag_x == x1;
+  wire row_done = span_traversal ? row_empty || frag_x == x_end : frag_x == x1;
   reg  last_row;  // frag_y == y1, kept as a register (set with frag_y)
   assign last = advance && row_done && last_row;
   assign in_ready = !walking || last;
@@ -181,18 +182,18 @@ module scanline_walker #(
   wire [XB-1:0] hi2 = edge_hi[2] < last_offset ? edge_hi[2] : last_offset;
   wire [XB-1:0] span_hi = hi01 < hi2 ? hi01 : hi2;
   wire span_nonempty = !(|edge_empty) && span_lo <= {1'b0, span_hi};
-  wire enter_span_row = cfg_traversal && (load || next_row);
+  wire enter_span_row = span_traversal && (load || next_row);
 
   assign adder_load = load;
   assign adder_step_x = advance && !row_done;
-  assign adder_next_row = next_row && !cfg_traversal;
-  assign adder_row_enter = next_row && cfg_traversal;
+  assign adder_next_row = next_row && !span_traversal;
+  assign adder_row_enter = next_row && span_traversal;
   // The first row's offset at load (0 for bbox: the plane registers start at x0).
-  assign adder_row_offset = cfg_traversal ? span_lo[XB-1:0] : {XB{1'b0}};
+  assign adder_row_offset = span_traversal ? span_lo[XB-1:0] : {XB{1'b0}};
   assign adder_from_record = use_record;
 
   assign busy = load || advance;
-  assign candidate = advance && (frag_valid || !cfg_traversal);
+  assign candidate = advance && (frag_valid || !span_traversal);
 
   always @(posedge clk) begin
     if (rst) walking <= 1'b0;
@@ -228,7 +229,7 @@ module scanline_walker #(
       end else if (!last_row) begin
         frag_y <= frag_y + 1'b1;
         last_row <= frag_y + 1'b1 == y1;
-        if (!cfg_traversal) begin
+        if (!span_traversal) begin
           frag_x <= x0;
           for (i = 0; i < 3; i = i + 1) begin
             edge_row[i] <= edge_row[i] + step_y[i];

@@ -23,8 +23,8 @@ module triangle_setup #(
   input  wire rst,
   input  wire run,                   // the frame runs (cycle 0 is its first cycle): slots count
   output wire free,                  // no triangle accepted in this slot yet (0: parallel, busy)
-  input  wire [1:0] cfg_cull,        // 0 none, 1 back, 2 front
-  input  wire       cfg_front_face,  // 0 ccw, 1 cw
+  input  wire [1:0] cfg_cull,        // RS_CULL_* (rastersim_widths.vh)
+  input  wire       cfg_front_face,  // RS_FRONT_*
   // Command input: vertex k at [k*B +: B]; x, y s(COORD_BITS-S).S subpixels; z uN; rgb {r,g,b} u8.
   input  wire in_valid,
   output wire in_ready,
@@ -71,7 +71,6 @@ module triangle_setup #(
   localparam signed [BB-1:0] X_LAST_B = X_LAST[BB-1:0];
   localparam signed [BB-1:0] Y_LAST_B = Y_LAST[BB-1:0];
 
-  localparam [1:0] DRAWN = 2'd0, DEGENERATE = 2'd1, CULLED = 2'd2, OFFSCREEN = 2'd3;
 
   // The record fields, packed into out_record below.
   wire [rs_ubits32(WIDTH - 1)-1:0] out_x0;
@@ -127,8 +126,8 @@ module triangle_setup #(
   // FRONT cycle, the AREA operation's result in the serial unit's DECIDE cycle.
   wire signed [AB-1:0] area2;
   // y points down: area2 > 0 is clockwise as the viewer sees the screen.
-  wire front_facing = cfg_front_face == 1'b0 ? area2[AB-1] : (area2 != 0 && !area2[AB-1]);
-  wire culled = (cfg_cull == 2'd1 && !front_facing) || (cfg_cull == 2'd2 && front_facing);
+  wire front_facing = cfg_front_face == RS_FRONT_CCW ? area2[AB-1] : (area2 != 0 && !area2[AB-1]);
+  wire culled = (cfg_cull == RS_CULL_BACK && !front_facing) || (cfg_cull == RS_CULL_FRONT && front_facing);
   wire swap = area2[AB-1];  // order the vertices so that area2 > 0
 
   wire signed [CB-1:0] x_min01 = vx[0] < vx[1] ? vx[0] : vx[1];
@@ -158,7 +157,7 @@ module triangle_setup #(
   wire signed [BB-1:0] by1 = by1_raw > Y_LAST_B ? Y_LAST_B : by1_raw;
   wire offscreen = bx0 > bx1 || by0 > by1;
 
-  wire [1:0] status = area2 == 0 ? DEGENERATE : culled ? CULLED : offscreen ? OFFSCREEN : DRAWN;
+  wire [1:0] status = area2 == 0 ? RS_STATUS_DEGENERATE : culled ? RS_STATUS_CULLED : offscreen ? RS_STATUS_OFFSCREEN : RS_STATUS_DRAWN;
   assign decided_status = status;
   assign decided_front_facing = area2 != 0 && front_facing;
   assign decided_area2 = area2;
@@ -292,7 +291,7 @@ module triangle_setup #(
     assign area2 = acc_q[MB-DB +: AB];
     wire deciding = active_q && load_q && op_q == OP_DECIDE;
     assign decided = deciding;
-    assign swap_vertices = deciding && status == DRAWN && swap;
+    assign swap_vertices = deciding && status == RS_STATUS_DRAWN && swap;
 
     assign load_vertices = !active_q && !out_q && in_valid;
     assign in_ready = !active_q && !out_q;
@@ -318,7 +317,7 @@ module triangle_setup #(
           if (op_q == OP_FINAL) begin
             active_q <= 1'b0;
             out_q <= 1'b1;
-          end else if (deciding && status != DRAWN) begin
+          end else if (deciding && status != RS_STATUS_DRAWN) begin
             active_q <= 1'b0;
           end else if (steps == 0) begin
             op_q <= op_q + 1'b1;
@@ -546,7 +545,7 @@ module triangle_setup #(
         else if (advance) front_q <= 1'b0;
         if (advance) begin
           for (j = EDGE_STAGES - 1; j > 0; j = j - 1) edge_valid_q[j] <= edge_valid_q[j-1];
-          edge_valid_q[0] <= front_q && status == DRAWN;
+          edge_valid_q[0] <= front_q && status == RS_STATUS_DRAWN;
           for (j = NUMER_STAGES - 1; j > 0; j = j - 1) numer_valid_q[j] <= numer_valid_q[j-1];
           numer_valid_q[0] <= edge_valid_q[EDGE_STAGES-1];
           for (j = DIVIDE_STAGES - 1; j > 0; j = j - 1) divide_valid_q[j] <= divide_valid_q[j-1];
@@ -560,7 +559,7 @@ module triangle_setup #(
     assign free = !front_q;
     assign decided = front_q && phase_q == {{(PHASE_BITS-1){1'b0}}, 1'b1};
     assign out_valid = out_valid_q && slot_first;
-    assign busy = load_vertices || (front_q && (decided || status == DRAWN)) || edge_valid_q != 0
+    assign busy = load_vertices || (front_q && (decided || status == RS_STATUS_DRAWN)) || edge_valid_q != 0
                   || numer_valid_q != 0 || divide_valid_q != 0 || out_valid;
 
     // FRONT's results: the vertex values of the planes, the payload (edge starts still zero).

@@ -8,7 +8,7 @@ module z_adder #(
   parameter integer Z_GUARD_BITS = 0
 ) (
   input  wire clk,
-  input  wire cfg_shading,  // 0 flat (provoking vertex colour), 1 gouraud
+  input  wire cfg_shading,  // RS_SHADING_* (rastersim_widths.vh); flat: the provoking vertex colour
   input  wire load,
   input  wire step_x,
   input  wire next_row,
@@ -52,5 +52,5 @@ module z_adder #(
     end
   endgenerate
 
-  assign rgb = cfg_shading ? gouraud_rgb : flat_q;
+  assign rgb = cfg_shading == RS_SHADING_GOURAUD ? gouraud_rgb : flat_q;
 endmodule

@@ -20,7 +20,7 @@ module zbuffer #(
 ) (
   input  wire clk,
   input  wire rst,
-  input  wire [2:0] cfg_depth_func,  // never, less, equal, lequal, greater, notequal, gequal, always
+  input  wire [2:0] cfg_depth_func,  // RS_DEPTH_* (rastersim_widths.vh)
   input  wire       cfg_depth_write,
   input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,
   output wire clear_done,            // the memory is cleared: the frame may start
@@ -124,14 +124,14 @@ module zbuffer #(
   reg pass;
   always @(*) begin
     case (cfg_depth_func)
-      3'd0: pass = 1'b0;
-      3'd1: pass = done_z < mem_rd_depth;
-      3'd2: pass = done_z == mem_rd_depth;
-      3'd3: pass = done_z <= mem_rd_depth;
-      3'd4: pass = done_z > mem_rd_depth;
-      3'd5: pass = done_z != mem_rd_depth;
-      3'd6: pass = done_z >= mem_rd_depth;
-      default: pass = 1'b1;
+      RS_DEPTH_NEVER: pass = 1'b0;
+      RS_DEPTH_LESS: pass = done_z < mem_rd_depth;
+      RS_DEPTH_EQUAL: pass = done_z == mem_rd_depth;
+      RS_DEPTH_LEQUAL: pass = done_z <= mem_rd_depth;
+      RS_DEPTH_GREATER: pass = done_z > mem_rd_depth;
+      RS_DEPTH_NOTEQUAL: pass = done_z != mem_rd_depth;
+      RS_DEPTH_GEQUAL: pass = done_z >= mem_rd_depth;
+      default: pass = 1'b1;  // RS_DEPTH_ALWAYS
     endcase
   end
   assign result_valid = done_valid;
