@@ -20,6 +20,15 @@ module plane_register #(
   input  wire [REG_BITS-1:0] step_y_in,
   output wire [OUT_BITS-1:0] out        // clamp((value + 2^(F-1)) >>> F, 0, 2^OUT_BITS - 1)
 );
+  // Parameter legality, as RS_REQUIRE of rastersim_widths.vh checks it (that header is not included
+  // here: Verilator 5.006's lint then reports its functions as hiding themselves in rastersim_core).
+`ifdef __ICARUS__
+  initial if (!(GUARD_BITS >= 1 && OUT_BITS >= 1 && REG_BITS >= OUT_BITS + GUARD_BITS + 1 && REG_BITS <= 64 && OFFSET_BITS >= 1)) $fatal(1, "plane_register: need GUARD_BITS, OUT_BITS, OFFSET_BITS >= 1 and OUT_BITS + GUARD_BITS + 1 <= REG_BITS <= 64");
+`else
+  if (!(GUARD_BITS >= 1 && OUT_BITS >= 1 && REG_BITS >= OUT_BITS + GUARD_BITS + 1 && REG_BITS <= 64 && OFFSET_BITS >= 1)) begin : illegal_widths
+    $error("plane_register: need GUARD_BITS, OUT_BITS, OFFSET_BITS >= 1 and OUT_BITS + GUARD_BITS + 1 <= REG_BITS <= 64");
+  end
+`endif
   reg [REG_BITS-1:0] value, row, step_x_q, step_y_q;
 
   // Products and sums are taken modulo 2^REG_BITS: the register wraps by design.

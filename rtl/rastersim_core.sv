@@ -67,6 +67,7 @@ module rastersim_core #(
   output wire [23:0]       mem_wr_rgb
 );
 `include "rastersim_widths.vh"
+  `RS_REQUIRE(illegal_setup_fifo_depth, MAX_SETUP_FIFO_DEPTH >= 1, "rastersim_core: MAX_SETUP_FIFO_DEPTH must be at least 1")
 
   // Derived widths, the same formulas as model/widths.h; the C++ build static_asserts these
   // (public, so Verilator emits them as static constexpr) against rastersim::derive_widths.

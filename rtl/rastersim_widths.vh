@@ -5,6 +5,17 @@
 // The top module republishes the results as localparams so that the C++ build
 // static_asserts them against rastersim::derive_widths (testbench/rtl_widths_check.cpp).
 
+// Parameter legality, checked when a unit is elaborated: a generate block that stops Verilator
+// (USERERROR: the lint is -Wall, the builds pass -Werror-USERERROR) and yosys with the message.
+// Icarus has no elaboration tasks: there the unit stops at time 0 instead.
+`ifndef RS_REQUIRE
+`ifdef __ICARUS__
+`define RS_REQUIRE(label, condition, message) initial if (!(condition)) $fatal(1, message);
+`else
+`define RS_REQUIRE(label, condition, message) if (!(condition)) begin : label $error(message); end
+`endif
+`endif
+
 // Smallest unsigned width b >= 1 with v < 2^b.
 function automatic integer rs_ubits(input [127:0] v);
   integer i;

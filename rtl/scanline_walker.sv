@@ -43,6 +43,9 @@ module scanline_walker #(
   output wire last
 );
 `include "rastersim_widths.vh"
+  `RS_REQUIRE(illegal_width, WIDTH >= 1 && WIDTH <= 4096, "scanline_walker: WIDTH must be 1..4096")
+  `RS_REQUIRE(illegal_height, HEIGHT >= 1 && HEIGHT <= 4096, "scanline_walker: HEIGHT must be 1..4096")
+  `RS_REQUIRE(illegal_subpixel_bits, SUBPIXEL_BITS >= 1 && SUBPIXEL_BITS <= 8, "scanline_walker: SUBPIXEL_BITS must be 1..8")
 
   localparam integer S = SUBPIXEL_BITS;
   localparam integer EB = rs_edge_bits(WIDTH, HEIGHT, S);

@@ -14,6 +14,8 @@ module setup_fifo #(
   output wire empty,
   output wire [RECORD_BITS-1:0] head
 );
+`include "rastersim_widths.vh"
+  `RS_REQUIRE(illegal_entries, ENTRIES >= 1 && RECORD_BITS >= 1, "setup_fifo: ENTRIES and RECORD_BITS must be at least 1")
   localparam integer INDEX_BITS = ENTRIES > 1 ? $clog2(ENTRIES) : 1;
   localparam integer COUNT_BITS = $clog2(ENTRIES + 1);
   localparam integer LAST_INDEX = ENTRIES - 1;

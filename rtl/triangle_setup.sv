@@ -44,6 +44,12 @@ module triangle_setup #(
   output wire [rs_rec_lsb(18, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS)-1:0] out_record
 );
 `include "rastersim_widths.vh"
+  `RS_REQUIRE(illegal_width, WIDTH >= 1 && WIDTH <= 4096, "triangle_setup: WIDTH must be 1..4096")
+  `RS_REQUIRE(illegal_height, HEIGHT >= 1 && HEIGHT <= 4096, "triangle_setup: HEIGHT must be 1..4096")
+  `RS_REQUIRE(illegal_subpixel_bits, SUBPIXEL_BITS >= 1 && SUBPIXEL_BITS <= 8, "triangle_setup: SUBPIXEL_BITS must be 1..8")
+  `RS_REQUIRE(illegal_z_bits, Z_BITS >= 16 && Z_BITS <= 32, "triangle_setup: Z_BITS must be 16..32")
+  `RS_REQUIRE(illegal_z_guard_bits, Z_GUARD_BITS >= 0 && Z_GUARD_BITS <= 24, "triangle_setup: Z_GUARD_BITS must be 0 (derived) or 1..24")
+  `RS_REQUIRE(illegal_setup_interval, SETUP_INTERVAL == 0 || (SETUP_INTERVAL >= 2 && SETUP_INTERVAL <= 64), "triangle_setup: SETUP_INTERVAL must be 0 (serial) or 2..64")
 
   localparam integer S = SUBPIXEL_BITS;
   localparam integer F = rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS);

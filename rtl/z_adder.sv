@@ -26,6 +26,8 @@ module z_adder #(
   output wire [23:0] rgb           // {r, g, b}, u8 each
 );
 `include "rastersim_widths.vh"
+  `RS_REQUIRE(illegal_z_bits, Z_BITS >= 16 && Z_BITS <= 32, "z_adder: Z_BITS must be 16..32")
+  `RS_REQUIRE(illegal_z_guard_bits, Z_GUARD_BITS >= 0 && Z_GUARD_BITS <= 24, "z_adder: Z_GUARD_BITS must be 0 (derived) or 1..24")
 
   localparam integer F = rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS);
   localparam integer ZRB = Z_BITS + F + 1;

@@ -48,6 +48,10 @@ module zbuffer #(
   output wire [23:0]       mem_wr_rgb
 );
 `include "rastersim_widths.vh"
+  `RS_REQUIRE(illegal_width, WIDTH >= 1 && WIDTH <= 4096, "zbuffer: WIDTH must be 1..4096")
+  `RS_REQUIRE(illegal_height, HEIGHT >= 1 && HEIGHT <= 4096, "zbuffer: HEIGHT must be 1..4096")
+  `RS_REQUIRE(illegal_z_bits, Z_BITS >= 1 && Z_BITS <= 32, "zbuffer: Z_BITS must be 1..32")  // the formal proofs use 2
+  `RS_REQUIRE(illegal_latency, MAX_MEMORY_LATENCY >= 1 && MAX_MEMORY_LATENCY <= 64, "zbuffer: MAX_MEMORY_LATENCY must be 1..64")
 
   localparam integer X_BITS = rs_ubits32(WIDTH - 1);
   localparam integer Y_BITS = rs_ubits32(HEIGHT - 1);

@@ -39,6 +39,7 @@ module zbuffer_memory #(
   // file waiver in lint_waivers.vlt (which covers every other module); the names are unique.
   /* verilator lint_off VARHIDDEN */
 `include "rastersim_widths.vh"
+  `RS_REQUIRE(illegal_latency, MAX_MEMORY_LATENCY >= 1 && MAX_MEMORY_LATENCY <= 64, "zbuffer_memory: MAX_MEMORY_LATENCY must be 1..64")
   /* verilator lint_on VARHIDDEN */
 
   localparam integer AB = rs_ubits32(WIDTH * HEIGHT - 1);
