@@ -113,12 +113,6 @@ module rastersim_core #(
   localparam integer P_SETUP_INTERVAL /*verilator public*/ = SETUP_INTERVAL;
   /* verilator lint_on UNUSEDPARAM */
 
-  localparam integer EB = EDGE_BITS;
-  localparam integer SXB = EDGE_STEP_X_BITS;
-  localparam integer SYB = EDGE_STEP_Y_BITS;
-  localparam integer RB = SPAN_REM_BITS;
-  localparam integer ZRB = Z_REG_BITS;
-  localparam integer CRB = COLOR_REG_BITS;
 
   // The runtime profile keys are sampled while rst is high and held for the frame (static
   // configuration registers: the units see registers, not the ports).
@@ -197,38 +191,38 @@ module rastersim_core #(
   wire [X_BITS-1:0] rec_x1 /*verilator public_flat_rd*/;
   wire [Y_BITS-1:0] rec_y0 /*verilator public_flat_rd*/;
   wire [Y_BITS-1:0] rec_y1 /*verilator public_flat_rd*/;
-  wire [3*EB-1:0]  rec_edge_start /*verilator public_flat_rd*/;
-  wire [3*SXB-1:0] rec_edge_step_x /*verilator public_flat_rd*/;
-  wire [3*SYB-1:0] rec_edge_step_y /*verilator public_flat_rd*/;
-  wire [3*EB-1:0]  rec_span_quot /*verilator public_flat_rd*/;
-  wire [3*RB-1:0]  rec_span_rem /*verilator public_flat_rd*/;
-  wire [3*SYB-1:0] rec_span_step_quot /*verilator public_flat_rd*/;
-  wire [3*RB-1:0]  rec_span_step_rem /*verilator public_flat_rd*/;
-  wire [ZRB-1:0]   rec_depth_start /*verilator public_flat_rd*/;
-  wire [ZRB-1:0]   rec_depth_step_x /*verilator public_flat_rd*/;
-  wire [ZRB-1:0]   rec_depth_step_y /*verilator public_flat_rd*/;
-  wire [3*CRB-1:0] rec_color_start /*verilator public_flat_rd*/;
-  wire [3*CRB-1:0] rec_color_step_x /*verilator public_flat_rd*/;
-  wire [3*CRB-1:0] rec_color_step_y /*verilator public_flat_rd*/;
+  wire [3*EDGE_BITS-1:0]  rec_edge_start /*verilator public_flat_rd*/;
+  wire [3*EDGE_STEP_X_BITS-1:0] rec_edge_step_x /*verilator public_flat_rd*/;
+  wire [3*EDGE_STEP_Y_BITS-1:0] rec_edge_step_y /*verilator public_flat_rd*/;
+  wire [3*EDGE_BITS-1:0]  rec_span_quot /*verilator public_flat_rd*/;
+  wire [3*SPAN_REM_BITS-1:0]  rec_span_rem /*verilator public_flat_rd*/;
+  wire [3*EDGE_STEP_Y_BITS-1:0] rec_span_step_quot /*verilator public_flat_rd*/;
+  wire [3*SPAN_REM_BITS-1:0]  rec_span_step_rem /*verilator public_flat_rd*/;
+  wire [Z_REG_BITS-1:0]   rec_depth_start /*verilator public_flat_rd*/;
+  wire [Z_REG_BITS-1:0]   rec_depth_step_x /*verilator public_flat_rd*/;
+  wire [Z_REG_BITS-1:0]   rec_depth_step_y /*verilator public_flat_rd*/;
+  wire [3*COLOR_REG_BITS-1:0] rec_color_start /*verilator public_flat_rd*/;
+  wire [3*COLOR_REG_BITS-1:0] rec_color_step_x /*verilator public_flat_rd*/;
+  wire [3*COLOR_REG_BITS-1:0] rec_color_step_y /*verilator public_flat_rd*/;
   wire [23:0]      rec_flat_rgb /*verilator public_flat_rd*/;
   wire [RECORD_BITS-1:0] rec = fifo_empty ? setup_record : fifo_head;
   assign rec_x0 = rec[LSB_X0 +: X_BITS];
   assign rec_x1 = rec[LSB_X1 +: X_BITS];
   assign rec_y0 = rec[LSB_Y0 +: Y_BITS];
   assign rec_y1 = rec[LSB_Y1 +: Y_BITS];
-  assign rec_edge_start = rec[LSB_EDGE_START +: 3*EB];
-  assign rec_edge_step_x = rec[LSB_EDGE_STEP_X +: 3*SXB];
-  assign rec_edge_step_y = rec[LSB_EDGE_STEP_Y +: 3*SYB];
-  assign rec_span_quot = rec[LSB_SPAN_QUOT +: 3*EB];
-  assign rec_span_rem = rec[LSB_SPAN_REM +: 3*RB];
-  assign rec_span_step_quot = rec[LSB_SPAN_STEP_QUOT +: 3*SYB];
-  assign rec_span_step_rem = rec[LSB_SPAN_STEP_REM +: 3*RB];
-  assign rec_depth_start = rec[LSB_DEPTH_START +: ZRB];
-  assign rec_depth_step_x = rec[LSB_DEPTH_STEP_X +: ZRB];
-  assign rec_depth_step_y = rec[LSB_DEPTH_STEP_Y +: ZRB];
-  assign rec_color_start = rec[LSB_COLOR_START +: 3*CRB];
-  assign rec_color_step_x = rec[LSB_COLOR_STEP_X +: 3*CRB];
-  assign rec_color_step_y = rec[LSB_COLOR_STEP_Y +: 3*CRB];
+  assign rec_edge_start = rec[LSB_EDGE_START +: 3*EDGE_BITS];
+  assign rec_edge_step_x = rec[LSB_EDGE_STEP_X +: 3*EDGE_STEP_X_BITS];
+  assign rec_edge_step_y = rec[LSB_EDGE_STEP_Y +: 3*EDGE_STEP_Y_BITS];
+  assign rec_span_quot = rec[LSB_SPAN_QUOT +: 3*EDGE_BITS];
+  assign rec_span_rem = rec[LSB_SPAN_REM +: 3*SPAN_REM_BITS];
+  assign rec_span_step_quot = rec[LSB_SPAN_STEP_QUOT +: 3*EDGE_STEP_Y_BITS];
+  assign rec_span_step_rem = rec[LSB_SPAN_STEP_REM +: 3*SPAN_REM_BITS];
+  assign rec_depth_start = rec[LSB_DEPTH_START +: Z_REG_BITS];
+  assign rec_depth_step_x = rec[LSB_DEPTH_STEP_X +: Z_REG_BITS];
+  assign rec_depth_step_y = rec[LSB_DEPTH_STEP_Y +: Z_REG_BITS];
+  assign rec_color_start = rec[LSB_COLOR_START +: 3*COLOR_REG_BITS];
+  assign rec_color_step_x = rec[LSB_COLOR_STEP_X +: 3*COLOR_REG_BITS];
+  assign rec_color_step_y = rec[LSB_COLOR_STEP_Y +: 3*COLOR_REG_BITS];
   assign rec_flat_rgb = rec[LSB_FLAT_RGB +: 24];
 
   // Walker + Z adder -> z-buffer fragment.

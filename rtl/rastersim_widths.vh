@@ -211,15 +211,16 @@ localparam [1:0] RS_STATUS_DRAWN = 2'd0, RS_STATUS_DEGENERATE = 2'd1,
 
 // The setup record as one packed vector (the model's SetupResult; the C++ side's field table is
 // testbench/setup_record.h). Fields from the least significant bit up, by number:
-//   0 x0 (XB)  1 x1 (XB)  2 y0 (YB)  3 y1 (YB)
-//   4 edge_start (3 x EB)  5 edge_step_x (3 x SXB)  6 edge_step_y (3 x SYB)
-//   7 span_quot (3 x EB)   8 span_rem (3 x RB)      9 span_step_quot (3 x SYB)  10 span_step_rem (3 x RB)
-//  11 depth_start (ZRB)   12 depth_step_x          13 depth_step_y
-//  14 color_start (3 x CRB)  15 color_step_x  16 color_step_y  17 flat_rgb (24)
-// with ZRB = N + F + 1, CRB = 9 + F and the edge widths above; three-edge fields hold edge k at
-// [k*B +: B], colour fields r, g, b at [c*CRB +: CRB]. triangle_setup packs it, the record FIFO
-// carries it, the walker takes fields 0..10 (the walker part, whose widths do not depend on the
-// depth), the Z adder the planes.
+//   0 x0 (X_BITS)  1 x1 (X_BITS)  2 y0 (Y_BITS)  3 y1 (Y_BITS)
+//   4 edge_start (3 x EDGE_BITS)  5 edge_step_x (3 x EDGE_STEP_X_BITS)
+//   6 edge_step_y (3 x EDGE_STEP_Y_BITS)  7 span_quot (3 x EDGE_BITS)  8 span_rem (3 x SPAN_REM_BITS)
+//   9 span_step_quot (3 x EDGE_STEP_Y_BITS)  10 span_step_rem (3 x SPAN_REM_BITS)
+//  11 depth_start (Z_REG_BITS)  12 depth_step_x  13 depth_step_y
+//  14 color_start (3 x COLOR_REG_BITS)  15 color_step_x  16 color_step_y  17 flat_rgb (24)
+// with Z_REG_BITS = N + F + 1, COLOR_REG_BITS = 9 + F and the edge widths above; three-edge fields
+// hold edge k at [k*B +: B], colour fields r, g, b at [c*COLOR_REG_BITS +: COLOR_REG_BITS].
+// triangle_setup packs it, the record FIFO carries it, the walker takes fields 0..10 (the walker
+// part, whose widths do not depend on the depth), the Z adder the planes.
 // Every unit that includes this header gets the field names; most use a few.
 /* verilator lint_off UNUSEDPARAM */
 localparam integer RS_REC_X0 = 0, RS_REC_X1 = 1, RS_REC_Y0 = 2, RS_REC_Y1 = 3, RS_REC_EDGE_START = 4,

@@ -48,13 +48,13 @@ module scanline_walker #(
   `RS_REQUIRE(illegal_subpixel_bits, SUBPIXEL_BITS >= 1 && SUBPIXEL_BITS <= 8, "scanline_walker: SUBPIXEL_BITS must be 1..8")
 
   localparam integer S = SUBPIXEL_BITS;
-  localparam integer EB = rs_edge_bits(WIDTH, HEIGHT, S);
-  localparam integer SXB = rs_edge_step_x_bits(HEIGHT, S);
-  localparam integer SYB = rs_edge_step_y_bits(WIDTH, S);
-  localparam integer RB = rs_span_rem_bits(HEIGHT, S);
-  localparam integer XB = rs_ubits32(WIDTH - 1);
-  localparam integer YB = rs_ubits32(HEIGHT - 1);
-  localparam [EB-1:0] CARRY = {{(EB-1){1'b0}}, 1'b1};
+  localparam integer EDGE_BITS = rs_edge_bits(WIDTH, HEIGHT, S);
+  localparam integer EDGE_STEP_X_BITS = rs_edge_step_x_bits(HEIGHT, S);
+  localparam integer EDGE_STEP_Y_BITS = rs_edge_step_y_bits(WIDTH, S);
+  localparam integer SPAN_REM_BITS = rs_span_rem_bits(HEIGHT, S);
+  localparam integer X_BITS = rs_ubits32(WIDTH - 1);
+  localparam integer Y_BITS = rs_ubits32(HEIGHT - 1);
+  localparam [EDGE_BITS-1:0] CARRY = {{(EDGE_BITS-1){1'b0}}, 1'b1};
 
   // The record's fields at their places (rastersim_widths.vh).
   // Constants, so that the simulator does not evaluate the sums at run time.
@@ -69,36 +69,36 @@ module scanline_walker #(
   localparam integer LSB_SPAN_REM = rs_rec_lsb(RS_REC_SPAN_REM, WIDTH, HEIGHT, SUBPIXEL_BITS, 0, 0);
   localparam integer LSB_SPAN_STEP_QUOT = rs_rec_lsb(RS_REC_SPAN_STEP_QUOT, WIDTH, HEIGHT, SUBPIXEL_BITS, 0, 0);
   localparam integer LSB_SPAN_STEP_REM = rs_rec_lsb(RS_REC_SPAN_STEP_REM, WIDTH, HEIGHT, SUBPIXEL_BITS, 0, 0);
-  wire [XB-1:0] in_x0 = in_record[LSB_X0 +: XB];
-  wire [XB-1:0] in_x1 = in_record[LSB_X1 +: XB];
-  wire [YB-1:0] in_y0 = in_record[LSB_Y0 +: YB];
-  wire [YB-1:0] in_y1 = in_record[LSB_Y1 +: YB];
-  wire [3*EB-1:0] in_edge_start = in_record[LSB_EDGE_START +: 3*EB];  // s.2S
-  wire [3*SXB-1:0] in_edge_step_x = in_record[LSB_EDGE_STEP_X +: 3*SXB];  // s.2S
-  wire [3*SYB-1:0] in_edge_step_y = in_record[LSB_EDGE_STEP_Y +: 3*SYB];  // s.2S
-  wire [3*EB-1:0] in_span_quot = in_record[LSB_SPAN_QUOT +: 3*EB];
-  wire [3*RB-1:0] in_span_rem = in_record[LSB_SPAN_REM +: 3*RB];
-  wire [3*SYB-1:0] in_span_step_quot = in_record[LSB_SPAN_STEP_QUOT +: 3*SYB];
-  wire [3*RB-1:0] in_span_step_rem = in_record[LSB_SPAN_STEP_REM +: 3*RB];
+  wire [X_BITS-1:0] in_x0 = in_record[LSB_X0 +: X_BITS];
+  wire [X_BITS-1:0] in_x1 = in_record[LSB_X1 +: X_BITS];
+  wire [Y_BITS-1:0] in_y0 = in_record[LSB_Y0 +: Y_BITS];
+  wire [Y_BITS-1:0] in_y1 = in_record[LSB_Y1 +: Y_BITS];
+  wire [3*EDGE_BITS-1:0] in_edge_start = in_record[LSB_EDGE_START +: 3*EDGE_BITS];  // s.2S
+  wire [3*EDGE_STEP_X_BITS-1:0] in_edge_step_x = in_record[LSB_EDGE_STEP_X +: 3*EDGE_STEP_X_BITS];  // s.2S
+  wire [3*EDGE_STEP_Y_BITS-1:0] in_edge_step_y = in_record[LSB_EDGE_STEP_Y +: 3*EDGE_STEP_Y_BITS];  // s.2S
+  wire [3*EDGE_BITS-1:0] in_span_quot = in_record[LSB_SPAN_QUOT +: 3*EDGE_BITS];
+  wire [3*SPAN_REM_BITS-1:0] in_span_rem = in_record[LSB_SPAN_REM +: 3*SPAN_REM_BITS];
+  wire [3*EDGE_STEP_Y_BITS-1:0] in_span_step_quot = in_record[LSB_SPAN_STEP_QUOT +: 3*EDGE_STEP_Y_BITS];
+  wire [3*SPAN_REM_BITS-1:0] in_span_step_rem = in_record[LSB_SPAN_STEP_REM +: 3*SPAN_REM_BITS];
 
   wire span_traversal = cfg_traversal == RS_TRAVERSAL_SPAN;
   reg walking;  // a triangle is loaded and not finished
 
-  reg [XB-1:0] x0, x1, x_end;
-  reg [YB-1:0] y1;
+  reg [X_BITS-1:0] x0, x1, x_end;
+  reg [Y_BITS-1:0] y1;
   reg          row_empty;                // span: the current row has no covered pixel
-  reg signed [EB-1:0]  edge_row [0:2];    // edge value at x0: bbox the current row, span the next
-  reg signed [EB-1:0]  edge_value [0:2];  // bbox: edge value at (x, y)
-  reg signed [EB-1:0]  step_x [0:2];     // sign-extended to EB at load
-  reg signed [EB-1:0]  step_y [0:2];
-  reg signed [EB-1:0]  quot [0:2];        // span DDA of the next row: floor(edge_row / d), d = |step_x|
-  reg [RB-1:0]         rem [0:2];         // edge_row - quot * d, in [0, d)
-  reg signed [EB-1:0]  step_quot [0:2];
-  reg [RB-1:0]         step_rem [0:2];
-  reg [RB-1:0]         divisor [0:2];
+  reg signed [EDGE_BITS-1:0]  edge_row [0:2];    // edge value at x0: bbox the current row, span the next
+  reg signed [EDGE_BITS-1:0]  edge_value [0:2];  // bbox: edge value at (x, y)
+  reg signed [EDGE_BITS-1:0]  step_x [0:2];     // sign-extended to EDGE_BITS at load
+  reg signed [EDGE_BITS-1:0]  step_y [0:2];
+  reg signed [EDGE_BITS-1:0]  quot [0:2];        // span DDA of the next row: floor(edge_row / d), d = |step_x|
+  reg [SPAN_REM_BITS-1:0]         rem [0:2];         // edge_row - quot * d, in [0, d)
+  reg signed [EDGE_BITS-1:0]  step_quot [0:2];
+  reg [SPAN_REM_BITS-1:0]         step_rem [0:2];
+  reg [SPAN_REM_BITS-1:0]         divisor [0:2];
 
   // ---- the current candidate ----
-  wire covered = !edge_value[0][EB-1] && !edge_value[1][EB-1] && !edge_value[2][EB-1];
+  wire covered = !edge_value[0][EDGE_BITS-1] && !edge_value[1][EDGE_BITS-1] && !edge_value[2][EDGE_BITS-1];
   assign frag_valid = walking && (span_traversal ? !row_empty : covered);
   wire advance = walking && (frag_ready || !frag_valid);
   wire row_done = span_traversal ? row_empty || frag_x == x_end : frag_x == x1;
@@ -112,28 +112,28 @@ module scanline_walker #(
   // idle or on its last row (a load can only happen then), else the registers' next row. The choice
   // does not wait for the z-buffer's ready: `load` and `next_row` only enable the registers. ----
   wire use_record = !walking || last_row;
-  wire signed [EB-1:0] src_edge_row [0:2];
-  wire signed [EB-1:0] src_step_x [0:2];
-  wire signed [EB-1:0] src_step_y [0:2];
-  wire signed [EB-1:0] src_quot [0:2];
-  wire [RB-1:0]        src_rem [0:2];
-  wire signed [EB-1:0] src_step_quot [0:2];
-  wire [RB-1:0]        src_step_rem [0:2];
-  wire [RB-1:0]        src_divisor [0:2];
+  wire signed [EDGE_BITS-1:0] src_edge_row [0:2];
+  wire signed [EDGE_BITS-1:0] src_step_x [0:2];
+  wire signed [EDGE_BITS-1:0] src_step_y [0:2];
+  wire signed [EDGE_BITS-1:0] src_quot [0:2];
+  wire [SPAN_REM_BITS-1:0]        src_rem [0:2];
+  wire signed [EDGE_BITS-1:0] src_step_quot [0:2];
+  wire [SPAN_REM_BITS-1:0]        src_step_rem [0:2];
+  wire [SPAN_REM_BITS-1:0]        src_divisor [0:2];
   genvar g;
   generate
     for (g = 0; g < 3; g = g + 1) begin : source
-      wire signed [EB-1:0] in_step_x_wide = $signed({{(EB-SXB){in_edge_step_x[g*SXB + SXB - 1]}}, in_edge_step_x[g*SXB +: SXB]});
-      wire signed [EB-1:0] in_step_y_wide = $signed({{(EB-SYB){in_edge_step_y[g*SYB + SYB - 1]}}, in_edge_step_y[g*SYB +: SYB]});
-      wire signed [EB-1:0] in_step_quot_wide = $signed({{(EB-SYB){in_span_step_quot[g*SYB + SYB - 1]}}, in_span_step_quot[g*SYB +: SYB]});
-      wire [RB-1:0] in_divisor = in_edge_step_x[g*SXB + SXB - 1] ? -in_edge_step_x[g*SXB +: RB] : in_edge_step_x[g*SXB +: RB];
-      assign src_edge_row[g] = use_record ? in_edge_start[g*EB +: EB] : edge_row[g];
+      wire signed [EDGE_BITS-1:0] in_step_x_wide = $signed({{(EDGE_BITS-EDGE_STEP_X_BITS){in_edge_step_x[g*EDGE_STEP_X_BITS + EDGE_STEP_X_BITS - 1]}}, in_edge_step_x[g*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS]});
+      wire signed [EDGE_BITS-1:0] in_step_y_wide = $signed({{(EDGE_BITS-EDGE_STEP_Y_BITS){in_edge_step_y[g*EDGE_STEP_Y_BITS + EDGE_STEP_Y_BITS - 1]}}, in_edge_step_y[g*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]});
+      wire signed [EDGE_BITS-1:0] in_step_quot_wide = $signed({{(EDGE_BITS-EDGE_STEP_Y_BITS){in_span_step_quot[g*EDGE_STEP_Y_BITS + EDGE_STEP_Y_BITS - 1]}}, in_span_step_quot[g*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]});
+      wire [SPAN_REM_BITS-1:0] in_divisor = in_edge_step_x[g*EDGE_STEP_X_BITS + EDGE_STEP_X_BITS - 1] ? -in_edge_step_x[g*EDGE_STEP_X_BITS +: SPAN_REM_BITS] : in_edge_step_x[g*EDGE_STEP_X_BITS +: SPAN_REM_BITS];
+      assign src_edge_row[g] = use_record ? in_edge_start[g*EDGE_BITS +: EDGE_BITS] : edge_row[g];
       assign src_step_x[g] = use_record ? in_step_x_wide : step_x[g];
       assign src_step_y[g] = use_record ? in_step_y_wide : step_y[g];
-      assign src_quot[g] = use_record ? in_span_quot[g*EB +: EB] : quot[g];
-      assign src_rem[g] = use_record ? in_span_rem[g*RB +: RB] : rem[g];
+      assign src_quot[g] = use_record ? in_span_quot[g*EDGE_BITS +: EDGE_BITS] : quot[g];
+      assign src_rem[g] = use_record ? in_span_rem[g*SPAN_REM_BITS +: SPAN_REM_BITS] : rem[g];
       assign src_step_quot[g] = use_record ? in_step_quot_wide : step_quot[g];
-      assign src_step_rem[g] = use_record ? in_span_step_rem[g*RB +: RB] : step_rem[g];
+      assign src_step_rem[g] = use_record ? in_span_step_rem[g*SPAN_REM_BITS +: SPAN_REM_BITS] : step_rem[g];
       assign src_divisor[g] = use_record ? in_divisor : divisor[g];
     end
   endgenerate
@@ -143,47 +143,47 @@ module scanline_walker #(
   reg  [2:0] left_q, right_q;
   generate
     for (g = 0; g < 3; g = g + 1) begin : side
-      assign in_right[g] = in_edge_step_x[g*SXB + SXB - 1];
-      assign in_left[g] = !in_right[g] && |in_edge_step_x[g*SXB +: SXB];
+      assign in_right[g] = in_edge_step_x[g*EDGE_STEP_X_BITS + EDGE_STEP_X_BITS - 1];
+      assign in_left[g] = !in_right[g] && |in_edge_step_x[g*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS];
     end
   endgenerate
   assign src_left = use_record ? in_left : left_q;
   assign src_right = use_record ? in_right : right_q;
-  wire [XB-1:0] src_x0 = use_record ? in_x0 : x0;
-  wire [XB-1:0] src_x1 = use_record ? in_x1 : x1;
+  wire [X_BITS-1:0] src_x0 = use_record ? in_x0 : x0;
+  wire [X_BITS-1:0] src_x1 = use_record ? in_x1 : x1;
 
-  // Span bounds: offsets t from x0 with every edge >= 0, on XB + 1 bits: each edge's bound is
-  // saturated first (a bound at or beyond 2^XB only ever means "outside the box", as the box's last
-  // offset is below 2^XB), so the comparisons are XB + 1 bits wide, not EB + 2.
-  //  left edge (step_x > 0):  t >= -floor(E / d) = -quot, saturated to [0, 2^XB]
-  //  right edge (step_x < 0): t <= quot, saturated to [0, 2^XB - 1]; quot < 0: no pixel
+  // Span bounds: offsets t from x0 with every edge >= 0, on X_BITS + 1 bits: each edge's bound is
+  // saturated first (a bound at or beyond 2^X_BITS only ever means "outside the box", as the box's last
+  // offset is below 2^X_BITS), so the comparisons are X_BITS + 1 bits wide, not EDGE_BITS + 2.
+  //  left edge (step_x > 0):  t >= -floor(E / d) = -quot, saturated to [0, 2^X_BITS]
+  //  right edge (step_x < 0): t <= quot, saturated to [0, 2^X_BITS - 1]; quot < 0: no pixel
   //  horizontal edge: the whole row or, with E < 0, no pixel
-  wire [XB-1:0] last_offset = src_x1 - src_x0;
-  wire [XB:0] edge_lo [0:2];
-  wire [XB-1:0] edge_hi [0:2];
+  wire [X_BITS-1:0] last_offset = src_x1 - src_x0;
+  wire [X_BITS:0] edge_lo [0:2];
+  wire [X_BITS-1:0] edge_hi [0:2];
   wire [2:0] edge_empty;
   generate
     for (g = 0; g < 3; g = g + 1) begin : bounds
-      wire negative = src_quot[g][EB-1];
-      // quot in [-2^XB, -1]: its bits above XB-1 are all ones.
-      wire small_negative = &src_quot[g][EB-1:XB];
-      wire [XB:0] minus_quot = -src_quot[g][XB:0];
-      // quot in [0, 2^XB - 1]: its bits above XB-1 are all zeros.
-      wire small_positive = ~|src_quot[g][EB-1:XB];
+      wire negative = src_quot[g][EDGE_BITS-1];
+      // quot in [-2^X_BITS, -1]: its bits above X_BITS-1 are all ones.
+      wire small_negative = &src_quot[g][EDGE_BITS-1:X_BITS];
+      wire [X_BITS:0] minus_quot = -src_quot[g][X_BITS:0];
+      // quot in [0, 2^X_BITS - 1]: its bits above X_BITS-1 are all zeros.
+      wire small_positive = ~|src_quot[g][EDGE_BITS-1:X_BITS];
       wire left = src_left[g];
       wire right = src_right[g];
-      assign edge_lo[g] = !left || !negative ? {(XB+1){1'b0}}
-                        : small_negative ? minus_quot : {1'b1, {XB{1'b0}}};
-      assign edge_hi[g] = !right || !small_positive ? {XB{1'b1}} : src_quot[g][XB-1:0];
-      assign edge_empty[g] = right ? negative : !left && src_edge_row[g][EB-1];
+      assign edge_lo[g] = !left || !negative ? {(X_BITS+1){1'b0}}
+                        : small_negative ? minus_quot : {1'b1, {X_BITS{1'b0}}};
+      assign edge_hi[g] = !right || !small_positive ? {X_BITS{1'b1}} : src_quot[g][X_BITS-1:0];
+      assign edge_empty[g] = right ? negative : !left && src_edge_row[g][EDGE_BITS-1];
     end
   endgenerate
   // Minimum and maximum as trees: two compare levels each.
-  wire [XB:0] lo01 = edge_lo[0] > edge_lo[1] ? edge_lo[0] : edge_lo[1];
-  wire [XB:0] span_lo = lo01 > edge_lo[2] ? lo01 : edge_lo[2];
-  wire [XB-1:0] hi01 = edge_hi[0] < edge_hi[1] ? edge_hi[0] : edge_hi[1];
-  wire [XB-1:0] hi2 = edge_hi[2] < last_offset ? edge_hi[2] : last_offset;
-  wire [XB-1:0] span_hi = hi01 < hi2 ? hi01 : hi2;
+  wire [X_BITS:0] lo01 = edge_lo[0] > edge_lo[1] ? edge_lo[0] : edge_lo[1];
+  wire [X_BITS:0] span_lo = lo01 > edge_lo[2] ? lo01 : edge_lo[2];
+  wire [X_BITS-1:0] hi01 = edge_hi[0] < edge_hi[1] ? edge_hi[0] : edge_hi[1];
+  wire [X_BITS-1:0] hi2 = edge_hi[2] < last_offset ? edge_hi[2] : last_offset;
+  wire [X_BITS-1:0] span_hi = hi01 < hi2 ? hi01 : hi2;
   wire span_nonempty = !(|edge_empty) && span_lo <= {1'b0, span_hi};
   wire enter_span_row = span_traversal && (load || next_row);
 
@@ -192,7 +192,7 @@ module scanline_walker #(
   assign adder_next_row = next_row && !span_traversal;
   assign adder_row_enter = next_row && span_traversal;
   // The first row's offset at load (0 for bbox: the plane registers start at x0).
-  assign adder_row_offset = span_traversal ? span_lo[XB-1:0] : {XB{1'b0}};
+  assign adder_row_offset = span_traversal ? span_lo[X_BITS-1:0] : {X_BITS{1'b0}};
   assign adder_from_record = use_record;
 
   assign busy = load || advance;
@@ -243,7 +243,7 @@ module scanline_walker #(
     end
     if (enter_span_row) begin
       // The row about to start: its span; the DDA steps every edge to the row after it.
-      frag_x <= src_x0 + span_lo[XB-1:0];
+      frag_x <= src_x0 + span_lo[X_BITS-1:0];
       x_end <= src_x0 + span_hi;
       row_empty <= !span_nonempty;
       for (i = 0; i < 3; i = i + 1) begin
@@ -251,7 +251,7 @@ module scanline_walker #(
         if (src_left[i] || src_right[i]) begin
           if ({1'b0, src_rem[i]} + {1'b0, src_step_rem[i]} >= {1'b0, src_divisor[i]}) begin
             rem[i] <= src_rem[i] + src_step_rem[i] - src_divisor[i];
-            quot[i] <= src_quot[i] + src_step_quot[i] + CARRY;  // all EB bits: modular, sign-agnostic
+            quot[i] <= src_quot[i] + src_step_quot[i] + CARRY;  // all EDGE_BITS bits: modular, sign-agnostic
           end else begin
             rem[i] <= src_rem[i] + src_step_rem[i];
             quot[i] <= src_quot[i] + src_step_quot[i];

@@ -53,20 +53,20 @@ module triangle_setup #(
 
   localparam integer S = SUBPIXEL_BITS;
   localparam integer F = rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS);
-  localparam integer CB = rs_coord_bits(WIDTH, HEIGHT, S);
-  localparam integer DB = rs_delta_bits(WIDTH, HEIGHT, S);
-  localparam integer AB = rs_area_bits(WIDTH, HEIGHT, S);
-  localparam integer EB = rs_edge_bits(WIDTH, HEIGHT, S);
-  localparam integer SXB = rs_edge_step_x_bits(HEIGHT, S);
-  localparam integer SYB = rs_edge_step_y_bits(WIDTH, S);
-  localparam integer RB = rs_span_rem_bits(HEIGHT, S);
+  localparam integer COORD_BITS = rs_coord_bits(WIDTH, HEIGHT, S);
+  localparam integer DELTA_BITS = rs_delta_bits(WIDTH, HEIGHT, S);
+  localparam integer AREA_BITS = rs_area_bits(WIDTH, HEIGHT, S);
+  localparam integer EDGE_BITS = rs_edge_bits(WIDTH, HEIGHT, S);
+  localparam integer EDGE_STEP_X_BITS = rs_edge_step_x_bits(HEIGHT, S);
+  localparam integer EDGE_STEP_Y_BITS = rs_edge_step_y_bits(WIDTH, S);
+  localparam integer SPAN_REM_BITS = rs_span_rem_bits(HEIGHT, S);
   localparam integer DIVIDER_BITS = rs_divider_bits(WIDTH, HEIGHT, S, Z_BITS, Z_GUARD_BITS);
-  localparam integer ZRB = Z_BITS + F + 1;
-  localparam integer CRB = 9 + F;
-  localparam integer XB = rs_ubits32(WIDTH - 1);
-  localparam integer YB = rs_ubits32(HEIGHT - 1);
-  localparam integer BB = CB + 2;           // bounding-box arithmetic, signed pixels
-  localparam integer NB = Z_BITS + EB + 4;  // plane numerators sum_k v_k e_k, signed
+  localparam integer Z_REG_BITS = Z_BITS + F + 1;
+  localparam integer COLOR_REG_BITS = 9 + F;
+  localparam integer X_BITS = rs_ubits32(WIDTH - 1);
+  localparam integer Y_BITS = rs_ubits32(HEIGHT - 1);
+  localparam integer BB = COORD_BITS + 2;           // bounding-box arithmetic, signed pixels
+  localparam integer NB = Z_BITS + EDGE_BITS + 4;  // plane numerators sum_k v_k e_k, signed
   localparam integer HALF = 1 << (S - 1);   // half a pixel in subpixels
   localparam integer ONE_LESS = (1 << S) - 1;  // one pixel less one subpixel
   localparam integer X_LAST = WIDTH - 1;
@@ -122,32 +122,32 @@ module triangle_setup #(
   wire swap_vertices;  // order the vertices so that area2 > 0 (v1 and v2 trade places)
 
   // Vertices as accepted.
-  reg signed [CB-1:0] vx [0:2];
-  reg signed [CB-1:0] vy [0:2];
+  reg signed [COORD_BITS-1:0] vx [0:2];
+  reg signed [COORD_BITS-1:0] vy [0:2];
   reg [Z_BITS-1:0]    vz [0:2];
   reg [23:0]          vrgb [0:2];
 
   // ---- FRONT: area, facing, cull, bounding box (from the registered vertices) ----
   // Twice the signed area of the vertices as accepted, s.2S: combinational in the pipelined unit's
   // FRONT cycle, the AREA operation's result in the serial unit's DECIDE cycle.
-  wire signed [AB-1:0] area2;
+  wire signed [AREA_BITS-1:0] area2;
   // y points down: area2 > 0 is clockwise as the viewer sees the screen.
-  wire front_facing = cfg_front_face == RS_FRONT_CCW ? area2[AB-1] : (area2 != 0 && !area2[AB-1]);
+  wire front_facing = cfg_front_face == RS_FRONT_CCW ? area2[AREA_BITS-1] : (area2 != 0 && !area2[AREA_BITS-1]);
   wire culled = (cfg_cull == RS_CULL_BACK && !front_facing) || (cfg_cull == RS_CULL_FRONT && front_facing);
-  wire swap = area2[AB-1];  // order the vertices so that area2 > 0
+  wire swap = area2[AREA_BITS-1];  // order the vertices so that area2 > 0
 
-  wire signed [CB-1:0] x_min01 = vx[0] < vx[1] ? vx[0] : vx[1];
-  wire signed [CB-1:0] x_max01 = vx[0] > vx[1] ? vx[0] : vx[1];
-  wire signed [CB-1:0] y_min01 = vy[0] < vy[1] ? vy[0] : vy[1];
-  wire signed [CB-1:0] y_max01 = vy[0] > vy[1] ? vy[0] : vy[1];
-  wire signed [CB-1:0] x_min_c = x_min01 < vx[2] ? x_min01 : vx[2];
-  wire signed [CB-1:0] x_max_c = x_max01 > vx[2] ? x_max01 : vx[2];
-  wire signed [CB-1:0] y_min_c = y_min01 < vy[2] ? y_min01 : vy[2];
-  wire signed [CB-1:0] y_max_c = y_max01 > vy[2] ? y_max01 : vy[2];
-  wire signed [BB-1:0] x_min = $signed({{(BB-CB){x_min_c[CB-1]}}, x_min_c});
-  wire signed [BB-1:0] x_max = $signed({{(BB-CB){x_max_c[CB-1]}}, x_max_c});
-  wire signed [BB-1:0] y_min = $signed({{(BB-CB){y_min_c[CB-1]}}, y_min_c});
-  wire signed [BB-1:0] y_max = $signed({{(BB-CB){y_max_c[CB-1]}}, y_max_c});
+  wire signed [COORD_BITS-1:0] x_min01 = vx[0] < vx[1] ? vx[0] : vx[1];
+  wire signed [COORD_BITS-1:0] x_max01 = vx[0] > vx[1] ? vx[0] : vx[1];
+  wire signed [COORD_BITS-1:0] y_min01 = vy[0] < vy[1] ? vy[0] : vy[1];
+  wire signed [COORD_BITS-1:0] y_max01 = vy[0] > vy[1] ? vy[0] : vy[1];
+  wire signed [COORD_BITS-1:0] x_min_c = x_min01 < vx[2] ? x_min01 : vx[2];
+  wire signed [COORD_BITS-1:0] x_max_c = x_max01 > vx[2] ? x_max01 : vx[2];
+  wire signed [COORD_BITS-1:0] y_min_c = y_min01 < vy[2] ? y_min01 : vy[2];
+  wire signed [COORD_BITS-1:0] y_max_c = y_max01 > vy[2] ? y_max01 : vy[2];
+  wire signed [BB-1:0] x_min = $signed({{(BB-COORD_BITS){x_min_c[COORD_BITS-1]}}, x_min_c});
+  wire signed [BB-1:0] x_max = $signed({{(BB-COORD_BITS){x_max_c[COORD_BITS-1]}}, x_max_c});
+  wire signed [BB-1:0] y_min = $signed({{(BB-COORD_BITS){y_min_c[COORD_BITS-1]}}, y_min_c});
+  wire signed [BB-1:0] y_max = $signed({{(BB-COORD_BITS){y_max_c[COORD_BITS-1]}}, y_max_c});
   // Pixel i is a candidate when its centre i 2^S + 2^(S-1) lies in [min, max].
   wire signed [BB-1:0] bx0_num = x_min - HALF_B + ONE_LESS_B;
   wire signed [BB-1:0] by0_num = y_min - HALF_B + ONE_LESS_B;
@@ -178,7 +178,7 @@ module triangle_setup #(
     // and quotient bits entering at the bottom; a negative dividend n is divided as ~n = -n - 1 and
     // its quotient inverted, floor(n / d) = ~floor(~n / d).
     localparam integer H = rs_setup_serial_bits(WIDTH, HEIGHT, S);
-    localparam integer MB = (DB > CB + 1 ? (DB > Z_BITS ? DB : Z_BITS) : (CB + 1 > Z_BITS ? CB + 1 : Z_BITS));
+    localparam integer MB = (DELTA_BITS > COORD_BITS + 1 ? (DELTA_BITS > Z_BITS ? DELTA_BITS : Z_BITS) : (COORD_BITS + 1 > Z_BITS ? COORD_BITS + 1 : Z_BITS));
     localparam integer ACC_BITS = H + MB;
     localparam integer SB = 7;  // step counters: at most H + N + F + S + 1 < 128 steps
     // Operations: AREA, DECIDE, EDGE k, SPAN START k / SPAN STEP k, plane n = 3p + c (p: depth, r,
@@ -195,31 +195,31 @@ module triangle_setup #(
     reg [1:0] term_q;               // which product of the sum takes this step
     reg sign_q;                     // the dividend is negative: divide ~n, invert the quotient
     reg signed [ACC_BITS-1:0] acc_q;
-    reg [AB-1:0] rem_q;             // restoring remainder, < |divisor| <= 2^(AB-1)
+    reg [AREA_BITS-1:0] rem_q;             // restoring remainder, < |divisor| <= 2^(AREA_BITS-1)
     reg [MB-1:0] mq_q [0:2];        // multipliers, consumed from bit 0
-    reg signed [AB-1:0] area_q;     // twice the signed area (the plane divisor)
+    reg signed [AREA_BITS-1:0] area_q;     // twice the signed area (the plane divisor)
     // The record's computed fields (the others come from the vertex registers).
-    reg signed [EB-1:0] start_q [0:2];
-    reg [EB-1:0]  span_quot_q [0:2];
-    reg [RB-1:0]  span_rem_q [0:2];
-    reg [SYB-1:0] span_step_quot_q [0:2];
-    reg [RB-1:0]  span_step_rem_q [0:2];
-    reg [ZRB-1:0] depth_q [0:2];
-    reg [CRB-1:0] color_q [0:8];
+    reg signed [EDGE_BITS-1:0] start_q [0:2];
+    reg [EDGE_BITS-1:0]  span_quot_q [0:2];
+    reg [SPAN_REM_BITS-1:0]  span_rem_q [0:2];
+    reg [EDGE_STEP_Y_BITS-1:0] span_step_quot_q [0:2];
+    reg [SPAN_REM_BITS-1:0]  span_step_rem_q [0:2];
+    reg [Z_REG_BITS-1:0] depth_q [0:2];
+    reg [COLOR_REG_BITS-1:0] color_q [0:8];
 
     // Ordered edge deltas (the vertices are swapped in DECIDE when area2 < 0): dx = b.x - a.x and
     // ndy = a.y - b.y, so edge_step_x = ndy 2^S and edge_step_y = dx 2^S.
-    wire signed [DB-1:0] dx [0:2];
-    wire signed [DB-1:0] ndy [0:2];
+    wire signed [DELTA_BITS-1:0] dx [0:2];
+    wire signed [DELTA_BITS-1:0] ndy [0:2];
     wire [2:0] bias;                // 1 unless the edge is top or left
     genvar k;
     for (k = 0; k < 3; k = k + 1) begin : deltas
-      assign dx[k] = DB'(vx[(k + 1) % 3]) - DB'(vx[k]);
-      assign ndy[k] = DB'(vy[k]) - DB'(vy[(k + 1) % 3]);
+      assign dx[k] = DELTA_BITS'(vx[(k + 1) % 3]) - DELTA_BITS'(vx[k]);
+      assign ndy[k] = DELTA_BITS'(vy[k]) - DELTA_BITS'(vy[(k + 1) % 3]);
       // Interior to the right (dy < 0) is a left edge; horizontal with interior below is top.
       assign bias[k] = !(ndy[k] > 0 || (ndy[k] == 0 && dx[k] > 0));
-      assign out_edge_step_x[k*SXB +: SXB] = SXB'({ndy[k], {S{1'b0}}});
-      assign out_edge_step_y[k*SYB +: SYB] = SYB'({dx[k], {S{1'b0}}});
+      assign out_edge_step_x[k*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS] = EDGE_STEP_X_BITS'({ndy[k], {S{1'b0}}});
+      assign out_edge_step_y[k*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS] = EDGE_STEP_Y_BITS'({dx[k], {S{1'b0}}});
     end
 
     // The operation's shape.
@@ -243,8 +243,8 @@ module triangle_setup #(
     wire is_mul = is_area || is_edge || (is_plane && !plane_div);
     wire is_div = is_span || (is_plane && plane_div);
     wire [SB-1:0] plane_bits = plane_p == 2'd0 ? SB'(Z_BITS) : SB'(8);  // m: the vertex values' bits
-    wire [SB-1:0] steps = is_area ? SB'(2 * DB)
-                        : is_edge ? SB'(2 * (CB + 1))
+    wire [SB-1:0] steps = is_area ? SB'(2 * DELTA_BITS)
+                        : is_edge ? SB'(2 * (COORD_BITS + 1))
                         : is_span ? (span_step ? SB'(H + S + 1) : SB'(H + 1))
                         : is_plane ? (!plane_div ? SB'(3) * plane_bits
                                                  : SB'(H + F) + plane_bits + (plane_c != 0 ? SB'(S) : SB'(0)))
@@ -269,14 +269,14 @@ module triangle_setup #(
                               + H'(subtract || (bit_now && use_start && bias[weight_k]));
 
     // ---- Divide step: {rem, next bit} - |divisor|, or the remainder correction rem - |divisor| ----
-    wire signed [AB:0] divisor = is_span ? (AB+1)'($signed({ndy[span_k], {S{1'b0}}})) : (AB+1)'(area_q);
+    wire signed [AREA_BITS:0] divisor = is_span ? (AREA_BITS+1)'($signed({ndy[span_k], {S{1'b0}}})) : (AREA_BITS+1)'(area_q);
     wire divisor_nonzero = !is_span || ndy[span_k] != 0;
     wire correction = is_span && left_q == SB'(1);
     wire next_bit = (data_left_q != 0 && acc_q[ACC_BITS-1]) ^ sign_q;
-    wire [AB-1:0] shifted = {rem_q[AB-2:0], next_bit};
-    wire [AB:0] trial = {1'b0, correction ? rem_q : shifted}
-                        + (divisor[AB] ? divisor : ~divisor) + (AB+1)'(!divisor[AB]);
-    wire fits = !trial[AB];
+    wire [AREA_BITS-1:0] shifted = {rem_q[AREA_BITS-2:0], next_bit};
+    wire [AREA_BITS:0] trial = {1'b0, correction ? rem_q : shifted}
+                        + (divisor[AREA_BITS] ? divisor : ~divisor) + (AREA_BITS+1)'(!divisor[AREA_BITS]);
+    wire fits = !trial[AREA_BITS];
     wire quotient_bit = (fits && divisor_nonzero) ^ sign_q;
 
     // ---- Operands of the load cycle ----
@@ -290,11 +290,11 @@ module triangle_setup #(
       wire [7:0] color = plane_p == 2'd1 ? vrgb[v][23:16] : plane_p == 2'd2 ? vrgb[v][15:8] : vrgb[v][7:0];
       assign value[v] = plane_p == 2'd0 ? vz[v] : Z_BITS'(color);
     end
-    wire signed [DB-1:0] span_dividend_small = dx[span_k];
+    wire signed [DELTA_BITS-1:0] span_dividend_small = dx[span_k];
     wire signed [H-1:0] span_dividend = span_step ? H'(span_dividend_small) : H'(start_q[span_k]);
 
     // ---- Decision (DECIDE, the AREA result in ACC) ----
-    assign area2 = acc_q[MB-DB +: AB];
+    assign area2 = acc_q[MB-DELTA_BITS +: AREA_BITS];
     wire deciding = active_q && load_q && op_q == OP_DECIDE;
     assign decided = deciding;
     assign swap_vertices = deciding && status == RS_STATUS_DRAWN && swap;
@@ -342,7 +342,7 @@ module triangle_setup #(
       if (active_q && load_q) begin
         left_q <= steps;
         term_q <= 2'd0;
-        rem_q <= {AB{1'b0}};
+        rem_q <= {AREA_BITS{1'b0}};
         if (is_area) begin
           acc_q <= {ACC_BITS{1'b0}};
           mq_q[0] <= MB'(ndy[2]);
@@ -375,10 +375,10 @@ module triangle_setup #(
       end else if (active_q && is_div) begin
         left_q <= left_q - 1'b1;
         if (correction) begin
-          if (sign_q) rem_q <= ~trial[AB-1:0];  // |d| - 1 - r: the remainder of n from that of ~n
+          if (sign_q) rem_q <= ~trial[AREA_BITS-1:0];  // |d| - 1 - r: the remainder of n from that of ~n
         end else begin
           if (data_left_q != 0) data_left_q <= data_left_q - 1'b1;
-          rem_q <= fits ? trial[AB-1:0] : shifted;
+          rem_q <= fits ? trial[AREA_BITS-1:0] : shifted;
           acc_q <= {acc_q[ACC_BITS-2:0], quotient_bit};
         end
       end
@@ -390,58 +390,58 @@ module triangle_setup #(
       if (active_q && load_q) begin
         if (op_q == OP_DECIDE) area_q <= area2;
         for (r = 0; r < 3; r = r + 1) begin
-          if (op_q == OP_EDGE + 6'(r) + 6'd1) start_q[r] <= acc_q[MB-(CB+1) +: EB];
+          if (op_q == OP_EDGE + 6'(r) + 6'd1) start_q[r] <= acc_q[MB-(COORD_BITS+1) +: EDGE_BITS];
           if (op_q == OP_SPAN + 6'(2 * r) + 6'd1) begin
-            span_quot_q[r] <= acc_q[EB-1:0];
-            span_rem_q[r] <= rem_q[RB-1:0];
+            span_quot_q[r] <= acc_q[EDGE_BITS-1:0];
+            span_rem_q[r] <= rem_q[SPAN_REM_BITS-1:0];
           end
           if (op_q == OP_SPAN + 6'(2 * r) + 6'd2) begin
-            span_step_quot_q[r] <= acc_q[SYB-1:0];
-            span_step_rem_q[r] <= rem_q[RB-1:0];
+            span_step_quot_q[r] <= acc_q[EDGE_STEP_Y_BITS-1:0];
+            span_step_rem_q[r] <= rem_q[SPAN_REM_BITS-1:0];
           end
-          if (op_q == OP_PLANE + 6'(2 * r) + 6'd2) depth_q[r] <= acc_q[ZRB-1:0];
+          if (op_q == OP_PLANE + 6'(2 * r) + 6'd2) depth_q[r] <= acc_q[Z_REG_BITS-1:0];
         end
         for (r = 0; r < 9; r = r + 1)
-          if (op_q == OP_PLANE + 6'(2 * r) + 6'd8) color_q[r] <= acc_q[CRB-1:0];
+          if (op_q == OP_PLANE + 6'(2 * r) + 6'd8) color_q[r] <= acc_q[COLOR_REG_BITS-1:0];
       end
     end
     for (k = 0; k < 3; k = k + 1) begin : record
-      assign out_edge_start[k*EB +: EB] = start_q[k];
-      assign out_span_quot[k*EB +: EB] = span_quot_q[k];
-      assign out_span_rem[k*RB +: RB] = span_rem_q[k];
-      assign out_span_step_quot[k*SYB +: SYB] = span_step_quot_q[k];
-      assign out_span_step_rem[k*RB +: RB] = span_step_rem_q[k];
-      assign out_color_start[k*CRB +: CRB] = color_q[3*k];
-      assign out_color_step_x[k*CRB +: CRB] = color_q[3*k + 1];
-      assign out_color_step_y[k*CRB +: CRB] = color_q[3*k + 2];
+      assign out_edge_start[k*EDGE_BITS +: EDGE_BITS] = start_q[k];
+      assign out_span_quot[k*EDGE_BITS +: EDGE_BITS] = span_quot_q[k];
+      assign out_span_rem[k*SPAN_REM_BITS +: SPAN_REM_BITS] = span_rem_q[k];
+      assign out_span_step_quot[k*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS] = span_step_quot_q[k];
+      assign out_span_step_rem[k*SPAN_REM_BITS +: SPAN_REM_BITS] = span_step_rem_q[k];
+      assign out_color_start[k*COLOR_REG_BITS +: COLOR_REG_BITS] = color_q[3*k];
+      assign out_color_step_x[k*COLOR_REG_BITS +: COLOR_REG_BITS] = color_q[3*k + 1];
+      assign out_color_step_y[k*COLOR_REG_BITS +: COLOR_REG_BITS] = color_q[3*k + 2];
     end
     assign out_depth_start = depth_q[0];
     assign out_depth_step_x = depth_q[1];
     assign out_depth_step_y = depth_q[2];
-    assign out_x0 = bx0[XB-1:0];
-    assign out_x1 = bx1[XB-1:0];
-    assign out_y0 = by0[YB-1:0];
-    assign out_y1 = by1[YB-1:0];
+    assign out_x0 = bx0[X_BITS-1:0];
+    assign out_x1 = bx1[X_BITS-1:0];
+    assign out_y0 = by0[Y_BITS-1:0];
+    assign out_y1 = by1[Y_BITS-1:0];
     assign out_flat_rgb = vrgb[0];
   end else begin : pipelined
     // ---- FRONT: the area's two products (delta_bits x delta_bits), the only ones in one cycle ----
-    wire signed [DB-1:0] d10x = vx[1] - vx[0];
-    wire signed [DB-1:0] d10y = vy[1] - vy[0];
-    wire signed [DB-1:0] d20x = vx[2] - vx[0];
-    wire signed [DB-1:0] d20y = vy[2] - vy[0];
-    wire signed [2*DB-1:0] cross_a = d10x * d20y;
-    wire signed [2*DB-1:0] cross_b = d20x * d10y;
-    // |area2| <= 9 W H M^2 fits AB bits (docs/widths.md): the top bits are sign copies.
+    wire signed [DELTA_BITS-1:0] d10x = vx[1] - vx[0];
+    wire signed [DELTA_BITS-1:0] d10y = vy[1] - vy[0];
+    wire signed [DELTA_BITS-1:0] d20x = vx[2] - vx[0];
+    wire signed [DELTA_BITS-1:0] d20y = vy[2] - vy[0];
+    wire signed [2*DELTA_BITS-1:0] cross_a = d10x * d20y;
+    wire signed [2*DELTA_BITS-1:0] cross_b = d20x * d10y;
+    // |area2| <= 9 W H M^2 fits AREA_BITS bits (docs/widths.md): the top bits are sign copies.
     /* verilator lint_off UNUSEDSIGNAL */
-    wire signed [2*DB-1:0] area2_wide = cross_a - cross_b;
+    wire signed [2*DELTA_BITS-1:0] area2_wide = cross_a - cross_b;
     /* verilator lint_on UNUSEDSIGNAL */
-    assign area2 = area2_wide[AB-1:0];
-    wire [AB-1:0] area = area2[AB-1] ? -area2 : area2;
+    assign area2 = area2_wide[AREA_BITS-1:0];
+    wire [AREA_BITS-1:0] area = area2[AREA_BITS-1] ? -area2 : area2;
     assign swap_vertices = 1'b0;  // the FRONT slot orders them through muxes instead
 
     // ---- Ordered vertices, edge steps and the edge values' operands ----
-    wire signed [CB-1:0] ox [0:2];
-    wire signed [CB-1:0] oy [0:2];
+    wire signed [COORD_BITS-1:0] ox [0:2];
+    wire signed [COORD_BITS-1:0] oy [0:2];
     wire [Z_BITS-1:0]    oz [0:2];
     wire [23:0]          orgb [0:2];
     assign ox[0] = vx[0];
@@ -457,40 +457,40 @@ module triangle_setup #(
     assign oz[2] = swap ? vz[1] : vz[2];
     assign orgb[2] = swap ? vrgb[1] : vrgb[2];
 
-    // The first candidate's centre, >= 0 and < 2^(CB-1) (on screen): the top bit is a sign copy.
+    // The first candidate's centre, >= 0 and < 2^(COORD_BITS-1) (on screen): the top bit is a sign copy.
     /* verilator lint_off UNUSEDSIGNAL */
     wire signed [BB-1:0] centre_x = (bx0 <<< S) + HALF_B;
     wire signed [BB-1:0] centre_y = (by0 <<< S) + HALF_B;
     /* verilator lint_on UNUSEDSIGNAL */
 
     // An edge slot's operands for edge k at [k*EOP]: {bias, dx, ndy, rel_x, rel_y, E (accumulator)}.
-    localparam integer RLB = CB + 1;  // rel_x, rel_y: the first candidate's centre less the edge's first vertex
+    localparam integer RLB = COORD_BITS + 1;  // rel_x, rel_y: the first candidate's centre less the edge's first vertex
     localparam integer E_ACC = 0;
-    localparam integer E_RY = E_ACC + EB;
+    localparam integer E_RY = E_ACC + EDGE_BITS;
     localparam integer E_RX = E_RY + RLB;
     localparam integer E_NDY = E_RX + RLB;
-    localparam integer E_DX = E_NDY + DB;
-    localparam integer E_BIAS = E_DX + DB;
+    localparam integer E_DX = E_NDY + DELTA_BITS;
+    localparam integer E_BIAS = E_DX + DELTA_BITS;
     localparam integer EOP = E_BIAS + 1;
     wire [3*EOP-1:0] front_edges;
-    wire signed [SXB-1:0] edge_step_x [0:2];
-    wire signed [SYB-1:0] edge_step_y [0:2];
+    wire signed [EDGE_STEP_X_BITS-1:0] edge_step_x [0:2];
+    wire signed [EDGE_STEP_Y_BITS-1:0] edge_step_y [0:2];
     genvar k;
       for (k = 0; k < 3; k = k + 1) begin : edges
-        wire signed [DB-1:0] dx = DB'(ox[(k + 1) % 3]) - DB'(ox[k]);
-        wire signed [DB-1:0] ndy = DB'(oy[k]) - DB'(oy[(k + 1) % 3]);
+        wire signed [DELTA_BITS-1:0] dx = DELTA_BITS'(ox[(k + 1) % 3]) - DELTA_BITS'(ox[k]);
+        wire signed [DELTA_BITS-1:0] ndy = DELTA_BITS'(oy[k]) - DELTA_BITS'(oy[(k + 1) % 3]);
         wire signed [RLB-1:0] rel_x = RLB'(centre_x) - RLB'(ox[k]);
         wire signed [RLB-1:0] rel_y = RLB'(centre_y) - RLB'(oy[k]);
         // Interior to the right (dy < 0) is a left edge; horizontal with interior below is top.
         wire bias = !(ndy > 0 || (ndy == 0 && dx > 0));
-        assign edge_step_x[k] = SXB'({ndy, {S{1'b0}}});
-        assign edge_step_y[k] = SYB'({dx, {S{1'b0}}});
-        assign front_edges[k*EOP +: EOP] = {bias, dx, ndy, rel_x, rel_y, {EB{1'b0}}};
+        assign edge_step_x[k] = EDGE_STEP_X_BITS'({ndy, {S{1'b0}}});
+        assign edge_step_y[k] = EDGE_STEP_Y_BITS'({dx, {S{1'b0}}});
+        assign front_edges[k*EOP +: EOP] = {bias, dx, ndy, rel_x, rel_y, {EDGE_BITS{1'b0}}};
       end
 
     // ---- Pipelined schedule (docs/cycle-model.md): slots of I cycles, one triangle per slot ----
     localparam integer I = SETUP_INTERVAL;
-    localparam integer EDGE_STAGES = rs_setup_edge_stages(CB, I);
+    localparam integer EDGE_STAGES = rs_setup_edge_stages(COORD_BITS, I);
     localparam integer EDGE_STEPS = (RLB + I * EDGE_STAGES - 1) / (I * EDGE_STAGES);
     localparam integer EDGE_SKIP = I * EDGE_STAGES * EDGE_STEPS - RLB;  // leading no-op steps
     localparam integer NUMER_STAGES = rs_setup_numer_stages(Z_BITS, I);
@@ -499,32 +499,32 @@ module triangle_setup #(
     localparam integer DIVIDE_STAGES = rs_setup_divide_stages(DIVIDER_BITS, I);
     localparam integer DIVIDE_STEPS = (DIVIDER_BITS + I * DIVIDE_STAGES - 1) / (I * DIVIDE_STAGES);
     localparam integer PLANE_SKIP = I * DIVIDE_STAGES * DIVIDE_STEPS - DIVIDER_BITS;
-    localparam integer SPAN_SKIP = I * DIVIDE_STAGES * DIVIDE_STEPS - EB;
+    localparam integer SPAN_SKIP = I * DIVIDE_STAGES * DIVIDE_STEPS - EDGE_BITS;
     localparam integer PHASE_BITS = rs_ubits32(I - 1);
     localparam integer LAST_PHASE = I - 1;
     localparam integer EDGES = 3 * EOP;
     // Numerator slot state: vertex values (plane p, vertex k at [(3p+k)*Z_BITS]), accumulators
     // (numerator n = 3p + t at [n*NB], t: 0 start, 1 step x, 2 step y), weights (term t, edge k at
-    // [(3t+k)*EB]: E at the first candidate, edge_step_x, edge_step_y, widened).
+    // [(3t+k)*EDGE_BITS]: E at the first candidate, edge_step_x, edge_step_y, widened).
     localparam integer VALS = 12 * Z_BITS;
     localparam integer ACCS = 12 * NB;
-    localparam integer WTS = 9 * EB;
+    localparam integer WTS = 9 * EDGE_BITS;
     // The record fields decided in FRONT, carried along: {x0, x1, y0, y1, edge_start[2:0] (from the
     // last edge slot), edge_step_x[2:0], edge_step_y[2:0], flat rgb, |area2|}.
     localparam integer P_AREA = 0;
-    localparam integer P_RGB = P_AREA + AB;
+    localparam integer P_RGB = P_AREA + AREA_BITS;
     localparam integer P_SY = P_RGB + 24;
-    localparam integer P_SX = P_SY + 3 * SYB;
-    localparam integer P_ES = P_SX + 3 * SXB;
-    localparam integer P_Y1 = P_ES + 3 * EB;
-    localparam integer P_Y0 = P_Y1 + YB;
-    localparam integer P_X1 = P_Y0 + YB;
-    localparam integer P_X0 = P_X1 + XB;
-    localparam integer PAY = P_X0 + XB;
+    localparam integer P_SX = P_SY + 3 * EDGE_STEP_Y_BITS;
+    localparam integer P_ES = P_SX + 3 * EDGE_STEP_X_BITS;
+    localparam integer P_Y1 = P_ES + 3 * EDGE_BITS;
+    localparam integer P_Y0 = P_Y1 + Y_BITS;
+    localparam integer P_X1 = P_Y0 + Y_BITS;
+    localparam integer P_X0 = P_X1 + X_BITS;
+    localparam integer PAY = P_X0 + X_BITS;
     // Divide slot state: plane division n {negative, partial remainder, dividend/quotient bits};
     // span division m = 2k (edge start) or 2k+1 (edge step y) the same with |edge_step_x| widths.
-    localparam integer PLANE_W = 1 + AB + DIVIDER_BITS;
-    localparam integer SPAN_W = 1 + SXB + EB;
+    localparam integer PLANE_W = 1 + AREA_BITS + DIVIDER_BITS;
+    localparam integer SPAN_W = 1 + EDGE_STEP_X_BITS + EDGE_BITS;
     localparam integer PLANES = 12 * PLANE_W;
     localparam integer SPANS = 6 * SPAN_W;
 
@@ -577,7 +577,7 @@ module triangle_setup #(
             fp == 0 ? oz[fk] : {{(Z_BITS-8){1'b0}}, orgb[fk][(fp == 0 ? 0 : 8*(3-fp)) +: 8]};
       end
     end
-    wire [PAY-1:0] front_pay = {bx0[XB-1:0], bx1[XB-1:0], by0[YB-1:0], by1[YB-1:0], {(3*EB){1'b0}},
+    wire [PAY-1:0] front_pay = {bx0[X_BITS-1:0], bx1[X_BITS-1:0], by0[Y_BITS-1:0], by1[Y_BITS-1:0], {(3*EDGE_BITS){1'b0}},
                                 edge_step_x[2], edge_step_x[1], edge_step_x[0],
                                 edge_step_y[2], edge_step_y[1], edge_step_y[0], vrgb[0], area};
 
@@ -587,26 +587,26 @@ module triangle_setup #(
     reg [EDGE_STAGES*VALS-1:0] edge_vals_q;
     reg [EDGE_STAGES*PAY-1:0] edge_pay_q;
     reg [EOP-1:0] eo;
-    reg signed [EB-1:0] e_acc, e_dx, e_ndy, e_term;
+    reg signed [EDGE_BITS-1:0] e_acc, e_dx, e_ndy, e_term;
     reg [RLB-1:0] e_rx, e_ry;
     reg [31:0] edge_step_index;
     /* verilator lint_off UNSIGNED */
     always @* begin
-      e_term = {EB{1'b0}};
+      e_term = {EDGE_BITS{1'b0}};
       edge_step_index = 32'd0;
       for (j = 0; j < EDGE_STAGES; j = j + 1) begin
         for (n = 0; n < 3; n = n + 1) begin
           eo = edge_ops_q[j*EDGES + n*EOP +: EOP];
-          e_acc = eo[E_ACC +: EB];
+          e_acc = eo[E_ACC +: EDGE_BITS];
           e_ry = eo[E_RY +: RLB];
           e_rx = eo[E_RX +: RLB];
-          e_ndy = EB'($signed(eo[E_NDY +: DB]));
-          e_dx = EB'($signed(eo[E_DX +: DB]));
+          e_ndy = EDGE_BITS'($signed(eo[E_NDY +: DELTA_BITS]));
+          e_dx = EDGE_BITS'($signed(eo[E_DX +: DELTA_BITS]));
           for (s = 0; s < EDGE_STEPS; s = s + 1) begin
             edge_step_index = (j * I + {{(32-PHASE_BITS){1'b0}}, phase_q}) * EDGE_STEPS + s;
             if (edge_step_index >= EDGE_SKIP) begin
-              e_term = (e_ry[RLB-1] ? e_dx : {EB{1'b0}}) + (e_rx[RLB-1] ? e_ndy : {EB{1'b0}});
-              e_acc = {e_acc[EB-2:0], 1'b0} + (edge_step_index == EDGE_SKIP ? -e_term : e_term);
+              e_term = (e_ry[RLB-1] ? e_dx : {EDGE_BITS{1'b0}}) + (e_rx[RLB-1] ? e_ndy : {EDGE_BITS{1'b0}});
+              e_acc = {e_acc[EDGE_BITS-2:0], 1'b0} + (edge_step_index == EDGE_SKIP ? -e_term : e_term);
               e_ry = {e_ry[RLB-2:0], 1'b0};
               e_rx = {e_rx[RLB-2:0], 1'b0};
             end
@@ -632,25 +632,25 @@ module triangle_setup #(
     end
 
     // The edge values leaving the last edge slot: unbiased as the numerators' weights, biased into
-    // the record; the edge steps widened to EB bits (sign extension) as weights of the step numerators.
+    // the record; the edge steps widened to EDGE_BITS bits (sign extension) as weights of the step numerators.
     wire [EDGES-1:0] edge_last = edge_ops_next[(EDGE_STAGES-1)*EDGES +: EDGES];
     // Its edge-start field is still zero: the values are filled in here.
     /* verilator lint_off UNUSEDSIGNAL */
     wire [PAY-1:0] edge_last_pay = edge_pay_q[(EDGE_STAGES-1)*PAY +: PAY];
     /* verilator lint_on UNUSEDSIGNAL */
     wire [WTS-1:0] numer_in_wts;
-    wire [3*EB-1:0] numer_in_starts;
+    wire [3*EDGE_BITS-1:0] numer_in_starts;
     for (k = 0; k < 3; k = k + 1) begin : weights
       wire [EOP-1:0] ops = edge_last[k*EOP +: EOP];
-      wire signed [EB-1:0] unbiased = ops[E_ACC +: EB];  // E at the first candidate, s.2S
-      wire [SXB-1:0] step_x = edge_last_pay[P_SX + k*SXB +: SXB];
-      wire [SYB-1:0] step_y = edge_last_pay[P_SY + k*SYB +: SYB];
-      assign numer_in_starts[k*EB +: EB] = unbiased - EB'(ops[E_BIAS]);
-      assign numer_in_wts[k*EB +: EB] = unbiased;
-      assign numer_in_wts[(3 + k)*EB +: EB] = EB'($signed(step_x));
-      assign numer_in_wts[(6 + k)*EB +: EB] = EB'($signed(step_y));
+      wire signed [EDGE_BITS-1:0] unbiased = ops[E_ACC +: EDGE_BITS];  // E at the first candidate, s.2S
+      wire [EDGE_STEP_X_BITS-1:0] step_x = edge_last_pay[P_SX + k*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS];
+      wire [EDGE_STEP_Y_BITS-1:0] step_y = edge_last_pay[P_SY + k*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS];
+      assign numer_in_starts[k*EDGE_BITS +: EDGE_BITS] = unbiased - EDGE_BITS'(ops[E_BIAS]);
+      assign numer_in_wts[k*EDGE_BITS +: EDGE_BITS] = unbiased;
+      assign numer_in_wts[(3 + k)*EDGE_BITS +: EDGE_BITS] = EDGE_BITS'($signed(step_x));
+      assign numer_in_wts[(6 + k)*EDGE_BITS +: EDGE_BITS] = EDGE_BITS'($signed(step_y));
     end
-    wire [PAY-1:0] numer_in_pay = {edge_last_pay[PAY-1:P_ES+3*EB], numer_in_starts, edge_last_pay[P_ES-1:0]};
+    wire [PAY-1:0] numer_in_pay = {edge_last_pay[PAY-1:P_ES+3*EDGE_BITS], numer_in_starts, edge_last_pay[P_ES-1:0]};
 
     // ---- Numerator slots: acc = 2 acc + sum over vertices of (value bit ? weight : 0), MSB first ----
     reg [NUMER_STAGES*VALS-1:0] numer_vals_q, numer_vals_next;
@@ -660,15 +660,15 @@ module triangle_setup #(
     reg [VALS-1:0] nv;
     reg [ACCS-1:0] na;
     reg [WTS-1:0] nw;
-    reg [EB-1:0] e0, e1, e2;
+    reg [EDGE_BITS-1:0] e0, e1, e2;
     reg [NB-1:0] term;
     // A stage's first steps may all be real ones (no leading no-op steps): the comparison is then
     // constant.
     /* verilator lint_off UNSIGNED */
     always @* begin
-      e0 = {EB{1'b0}};
-      e1 = {EB{1'b0}};
-      e2 = {EB{1'b0}};
+      e0 = {EDGE_BITS{1'b0}};
+      e1 = {EDGE_BITS{1'b0}};
+      e2 = {EDGE_BITS{1'b0}};
       term = {NB{1'b0}};
       for (j = 0; j < NUMER_STAGES; j = j + 1) begin
         nv = numer_vals_q[j*VALS +: VALS];
@@ -678,12 +678,12 @@ module triangle_setup #(
           if ((j * I + {{(32-PHASE_BITS){1'b0}}, phase_q}) * NUMER_STEPS + s >= NUMER_SKIP) begin
             for (n = 0; n < 12; n = n + 1) begin
               // numerator n = 3p + t: v0 e1 + v1 e2 + v2 e0 with the weights of term t
-              e0 = nw[(3*(n%3) + 0)*EB +: EB];
-              e1 = nw[(3*(n%3) + 1)*EB +: EB];
-              e2 = nw[(3*(n%3) + 2)*EB +: EB];
-              term = (nv[(3*(n/3) + 0)*Z_BITS + Z_BITS-1] ? {{(NB-EB){e1[EB-1]}}, e1} : {NB{1'b0}})
-                   + (nv[(3*(n/3) + 1)*Z_BITS + Z_BITS-1] ? {{(NB-EB){e2[EB-1]}}, e2} : {NB{1'b0}})
-                   + (nv[(3*(n/3) + 2)*Z_BITS + Z_BITS-1] ? {{(NB-EB){e0[EB-1]}}, e0} : {NB{1'b0}});
+              e0 = nw[(3*(n%3) + 0)*EDGE_BITS +: EDGE_BITS];
+              e1 = nw[(3*(n%3) + 1)*EDGE_BITS +: EDGE_BITS];
+              e2 = nw[(3*(n%3) + 2)*EDGE_BITS +: EDGE_BITS];
+              term = (nv[(3*(n/3) + 0)*Z_BITS + Z_BITS-1] ? {{(NB-EDGE_BITS){e1[EDGE_BITS-1]}}, e1} : {NB{1'b0}})
+                   + (nv[(3*(n/3) + 1)*Z_BITS + Z_BITS-1] ? {{(NB-EDGE_BITS){e2[EDGE_BITS-1]}}, e2} : {NB{1'b0}})
+                   + (nv[(3*(n/3) + 2)*Z_BITS + Z_BITS-1] ? {{(NB-EDGE_BITS){e0[EDGE_BITS-1]}}, e0} : {NB{1'b0}});
               na[n*NB +: NB] = {na[n*NB +: NB-1], 1'b0} + term;
             end
             for (n = 0; n < 12; n = n + 1) nv[n*Z_BITS +: Z_BITS] = {nv[n*Z_BITS +: Z_BITS-1], 1'b0};
@@ -725,63 +725,63 @@ module triangle_setup #(
       /* verilator lint_off UNUSEDSIGNAL */
       wire [NB+F-1:0] scaled = {magnitude, {F{1'b0}}};
       /* verilator lint_on UNUSEDSIGNAL */
-      assign divide_in_planes[dn*PLANE_W +: PLANE_W] = {num[NB-1], {AB{1'b0}}, scaled[DIVIDER_BITS-1:0]};
+      assign divide_in_planes[dn*PLANE_W +: PLANE_W] = {num[NB-1], {AREA_BITS{1'b0}}, scaled[DIVIDER_BITS-1:0]};
     end
     for (dk = 0; dk < 3; dk = dk + 1) begin : divide_in_span
-      wire [EB-1:0] start = numer_last_pay[P_ES + dk*EB +: EB];
-      wire [SYB-1:0] step = numer_last_pay[P_SY + dk*SYB +: SYB];
-      wire [EB-1:0] start_mag = start[EB-1] ? -start : start;
-      wire [SYB-1:0] step_mag = step[SYB-1] ? -step : step;
-      assign divide_in_spans[(2*dk)*SPAN_W +: SPAN_W] = {start[EB-1], {SXB{1'b0}}, start_mag};
-      assign divide_in_spans[(2*dk+1)*SPAN_W +: SPAN_W] = {step[SYB-1], {SXB{1'b0}}, {(EB-SYB){1'b0}}, step_mag};
+      wire [EDGE_BITS-1:0] start = numer_last_pay[P_ES + dk*EDGE_BITS +: EDGE_BITS];
+      wire [EDGE_STEP_Y_BITS-1:0] step = numer_last_pay[P_SY + dk*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS];
+      wire [EDGE_BITS-1:0] start_mag = start[EDGE_BITS-1] ? -start : start;
+      wire [EDGE_STEP_Y_BITS-1:0] step_mag = step[EDGE_STEP_Y_BITS-1] ? -step : step;
+      assign divide_in_spans[(2*dk)*SPAN_W +: SPAN_W] = {start[EDGE_BITS-1], {EDGE_STEP_X_BITS{1'b0}}, start_mag};
+      assign divide_in_spans[(2*dk+1)*SPAN_W +: SPAN_W] = {step[EDGE_STEP_Y_BITS-1], {EDGE_STEP_X_BITS{1'b0}}, {(EDGE_BITS-EDGE_STEP_Y_BITS){1'b0}}, step_mag};
     end
 
     // ---- Divide slots: restoring steps, one quotient bit each, MSB first ----
     reg [DIVIDE_STAGES*PLANES-1:0] divide_planes_q, divide_planes_next;
     reg [DIVIDE_STAGES*SPANS-1:0] divide_spans_q, divide_spans_next;
     reg [DIVIDE_STAGES*PAY-1:0] divide_pay_q;
-    reg [AB-1:0] plane_partial, plane_divisor;
+    reg [AREA_BITS-1:0] plane_partial, plane_divisor;
     reg [DIVIDER_BITS-1:0] plane_bits;
-    reg [AB:0] plane_shifted, plane_difference;
-    reg [SXB-1:0] span_partial, span_divisor, span_step_x;
-    reg [EB-1:0] span_bits;
-    reg [SXB:0] span_shifted, span_difference;
+    reg [AREA_BITS:0] plane_shifted, plane_difference;
+    reg [EDGE_STEP_X_BITS-1:0] span_partial, span_divisor, span_step_x;
+    reg [EDGE_BITS-1:0] span_bits;
+    reg [EDGE_STEP_X_BITS:0] span_shifted, span_difference;
     reg [31:0] step_index;
     always @* begin
-      plane_shifted = {(AB+1){1'b0}};
-      plane_difference = {(AB+1){1'b0}};
-      span_shifted = {(SXB+1){1'b0}};
-      span_difference = {(SXB+1){1'b0}};
+      plane_shifted = {(AREA_BITS+1){1'b0}};
+      plane_difference = {(AREA_BITS+1){1'b0}};
+      span_shifted = {(EDGE_STEP_X_BITS+1){1'b0}};
+      span_difference = {(EDGE_STEP_X_BITS+1){1'b0}};
       step_index = 32'd0;
       for (j = 0; j < DIVIDE_STAGES; j = j + 1) begin
-        plane_divisor = divide_pay_q[j*PAY + P_AREA +: AB];
+        plane_divisor = divide_pay_q[j*PAY + P_AREA +: AREA_BITS];
         for (n = 0; n < 12; n = n + 1) begin
-          plane_partial = divide_planes_q[j*PLANES + n*PLANE_W + DIVIDER_BITS +: AB];
+          plane_partial = divide_planes_q[j*PLANES + n*PLANE_W + DIVIDER_BITS +: AREA_BITS];
           plane_bits = divide_planes_q[j*PLANES + n*PLANE_W +: DIVIDER_BITS];
           for (s = 0; s < DIVIDE_STEPS; s = s + 1) begin
             step_index = (j * I + {{(32-PHASE_BITS){1'b0}}, phase_q}) * DIVIDE_STEPS + s;
             if (step_index >= PLANE_SKIP) begin
               plane_shifted = {plane_partial, plane_bits[DIVIDER_BITS-1]};
               plane_difference = plane_shifted - {1'b0, plane_divisor};
-              plane_partial = plane_difference[AB] ? plane_shifted[AB-1:0] : plane_difference[AB-1:0];
-              plane_bits = {plane_bits[DIVIDER_BITS-2:0], !plane_difference[AB]};
+              plane_partial = plane_difference[AREA_BITS] ? plane_shifted[AREA_BITS-1:0] : plane_difference[AREA_BITS-1:0];
+              plane_bits = {plane_bits[DIVIDER_BITS-2:0], !plane_difference[AREA_BITS]};
             end
           end
           divide_planes_next[j*PLANES + n*PLANE_W +: PLANE_W] =
               {divide_planes_q[j*PLANES + n*PLANE_W + PLANE_W - 1], plane_partial, plane_bits};
         end
         for (n = 0; n < 6; n = n + 1) begin
-          span_step_x = divide_pay_q[j*PAY + P_SX + (n/2)*SXB +: SXB];
-          span_divisor = span_step_x[SXB-1] ? -span_step_x : span_step_x;
-          span_partial = divide_spans_q[j*SPANS + n*SPAN_W + EB +: SXB];
-          span_bits = divide_spans_q[j*SPANS + n*SPAN_W +: EB];
+          span_step_x = divide_pay_q[j*PAY + P_SX + (n/2)*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS];
+          span_divisor = span_step_x[EDGE_STEP_X_BITS-1] ? -span_step_x : span_step_x;
+          span_partial = divide_spans_q[j*SPANS + n*SPAN_W + EDGE_BITS +: EDGE_STEP_X_BITS];
+          span_bits = divide_spans_q[j*SPANS + n*SPAN_W +: EDGE_BITS];
           for (s = 0; s < DIVIDE_STEPS; s = s + 1) begin
             step_index = (j * I + {{(32-PHASE_BITS){1'b0}}, phase_q}) * DIVIDE_STEPS + s;
             if (step_index >= SPAN_SKIP) begin
-              span_shifted = {span_partial, span_bits[EB-1]};
+              span_shifted = {span_partial, span_bits[EDGE_BITS-1]};
               span_difference = span_shifted - {1'b0, span_divisor};
-              span_partial = span_difference[SXB] ? span_shifted[SXB-1:0] : span_difference[SXB-1:0];
-              span_bits = {span_bits[EB-2:0], !span_difference[SXB]};
+              span_partial = span_difference[EDGE_STEP_X_BITS] ? span_shifted[EDGE_STEP_X_BITS-1:0] : span_difference[EDGE_STEP_X_BITS-1:0];
+              span_bits = {span_bits[EDGE_BITS-2:0], !span_difference[EDGE_STEP_X_BITS]};
             end
           end
           divide_spans_next[j*SPANS + n*SPAN_W +: SPAN_W] =
@@ -818,9 +818,9 @@ module triangle_setup #(
     // ---- Output register: floor for negative dividends (as divider.sv), the record fields ----
     genvar on, ok;
     for (on = 0; on < 12; on = on + 1) begin : out_plane
-      localparam integer QB = on < 3 ? ZRB : CRB;
+      localparam integer QB = on < 3 ? Z_REG_BITS : COLOR_REG_BITS;
       wire negative = out_planes_q[on*PLANE_W + PLANE_W - 1];
-      wire remainder_nonzero = out_planes_q[on*PLANE_W + DIVIDER_BITS +: AB] != {AB{1'b0}};
+      wire remainder_nonzero = out_planes_q[on*PLANE_W + DIVIDER_BITS +: AREA_BITS] != {AREA_BITS{1'b0}};
       wire [QB-1:0] magnitude = out_planes_q[on*PLANE_W +: QB];
       wire [QB-1:0] quotient = !negative ? magnitude : remainder_nonzero ? ~magnitude : -magnitude;
     end
@@ -828,39 +828,39 @@ module triangle_setup #(
     assign out_depth_step_x = out_plane[1].quotient;
     assign out_depth_step_y = out_plane[2].quotient;
     for (ok = 0; ok < 3; ok = ok + 1) begin : out_edge
-      assign out_color_start[ok*CRB +: CRB] = out_plane[3 + 3*ok].quotient;
-      assign out_color_step_x[ok*CRB +: CRB] = out_plane[4 + 3*ok].quotient;
-      assign out_color_step_y[ok*CRB +: CRB] = out_plane[5 + 3*ok].quotient;
-      wire [SXB-1:0] step_x = out_pay_q[P_SX + ok*SXB +: SXB];
-      wire [SXB-1:0] divisor = step_x[SXB-1] ? -step_x : step_x;
-      wire horizontal = step_x == {SXB{1'b0}};
+      assign out_color_start[ok*COLOR_REG_BITS +: COLOR_REG_BITS] = out_plane[3 + 3*ok].quotient;
+      assign out_color_step_x[ok*COLOR_REG_BITS +: COLOR_REG_BITS] = out_plane[4 + 3*ok].quotient;
+      assign out_color_step_y[ok*COLOR_REG_BITS +: COLOR_REG_BITS] = out_plane[5 + 3*ok].quotient;
+      wire [EDGE_STEP_X_BITS-1:0] step_x = out_pay_q[P_SX + ok*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS];
+      wire [EDGE_STEP_X_BITS-1:0] divisor = step_x[EDGE_STEP_X_BITS-1] ? -step_x : step_x;
+      wire horizontal = step_x == {EDGE_STEP_X_BITS{1'b0}};
       wire [SPAN_W-1:0] start_div = out_spans_q[(2*ok)*SPAN_W +: SPAN_W];
       wire [SPAN_W-1:0] step_div = out_spans_q[(2*ok+1)*SPAN_W +: SPAN_W];
       wire start_negative = start_div[SPAN_W-1], step_negative = step_div[SPAN_W-1];
-      wire [SXB-1:0] start_partial = start_div[EB +: SXB], step_partial = step_div[EB +: SXB];
-      wire [EB-1:0] start_magnitude = start_div[EB-1:0];
-      wire [SYB-1:0] step_magnitude = step_div[SYB-1:0];
-      wire [EB-1:0] start_quot = !start_negative ? start_magnitude
+      wire [EDGE_STEP_X_BITS-1:0] start_partial = start_div[EDGE_BITS +: EDGE_STEP_X_BITS], step_partial = step_div[EDGE_BITS +: EDGE_STEP_X_BITS];
+      wire [EDGE_BITS-1:0] start_magnitude = start_div[EDGE_BITS-1:0];
+      wire [EDGE_STEP_Y_BITS-1:0] step_magnitude = step_div[EDGE_STEP_Y_BITS-1:0];
+      wire [EDGE_BITS-1:0] start_quot = !start_negative ? start_magnitude
                                : start_partial != 0 ? ~start_magnitude : -start_magnitude;
-      wire [SYB-1:0] step_quot = !step_negative ? step_magnitude
+      wire [EDGE_STEP_Y_BITS-1:0] step_quot = !step_negative ? step_magnitude
                                : step_partial != 0 ? ~step_magnitude : -step_magnitude;
-      // Remainders are < |step_x| < 2^RB: the top bit is zero.
+      // Remainders are < |step_x| < 2^SPAN_REM_BITS: the top bit is zero.
       /* verilator lint_off UNUSEDSIGNAL */
-      wire [SXB-1:0] start_rem = (start_negative && start_partial != 0) ? divisor - start_partial : start_partial;
-      wire [SXB-1:0] step_rem = (step_negative && step_partial != 0) ? divisor - step_partial : step_partial;
+      wire [EDGE_STEP_X_BITS-1:0] start_rem = (start_negative && start_partial != 0) ? divisor - start_partial : start_partial;
+      wire [EDGE_STEP_X_BITS-1:0] step_rem = (step_negative && step_partial != 0) ? divisor - step_partial : step_partial;
       /* verilator lint_on UNUSEDSIGNAL */
-      assign out_edge_start[ok*EB +: EB] = out_pay_q[P_ES + ok*EB +: EB];
-      assign out_edge_step_x[ok*SXB +: SXB] = step_x;
-      assign out_edge_step_y[ok*SYB +: SYB] = out_pay_q[P_SY + ok*SYB +: SYB];
-      assign out_span_quot[ok*EB +: EB] = horizontal ? {EB{1'b0}} : start_quot;
-      assign out_span_rem[ok*RB +: RB] = horizontal ? {RB{1'b0}} : start_rem[RB-1:0];
-      assign out_span_step_quot[ok*SYB +: SYB] = horizontal ? {SYB{1'b0}} : step_quot;
-      assign out_span_step_rem[ok*RB +: RB] = horizontal ? {RB{1'b0}} : step_rem[RB-1:0];
+      assign out_edge_start[ok*EDGE_BITS +: EDGE_BITS] = out_pay_q[P_ES + ok*EDGE_BITS +: EDGE_BITS];
+      assign out_edge_step_x[ok*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS] = step_x;
+      assign out_edge_step_y[ok*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS] = out_pay_q[P_SY + ok*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS];
+      assign out_span_quot[ok*EDGE_BITS +: EDGE_BITS] = horizontal ? {EDGE_BITS{1'b0}} : start_quot;
+      assign out_span_rem[ok*SPAN_REM_BITS +: SPAN_REM_BITS] = horizontal ? {SPAN_REM_BITS{1'b0}} : start_rem[SPAN_REM_BITS-1:0];
+      assign out_span_step_quot[ok*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS] = horizontal ? {EDGE_STEP_Y_BITS{1'b0}} : step_quot;
+      assign out_span_step_rem[ok*SPAN_REM_BITS +: SPAN_REM_BITS] = horizontal ? {SPAN_REM_BITS{1'b0}} : step_rem[SPAN_REM_BITS-1:0];
     end
-    assign out_x0 = out_pay_q[P_X0 +: XB];
-    assign out_x1 = out_pay_q[P_X1 +: XB];
-    assign out_y0 = out_pay_q[P_Y0 +: YB];
-    assign out_y1 = out_pay_q[P_Y1 +: YB];
+    assign out_x0 = out_pay_q[P_X0 +: X_BITS];
+    assign out_x1 = out_pay_q[P_X1 +: X_BITS];
+    assign out_y0 = out_pay_q[P_Y0 +: Y_BITS];
+    assign out_y1 = out_pay_q[P_Y1 +: Y_BITS];
     assign out_flat_rgb = out_pay_q[P_RGB +: 24];
   end
   endgenerate
@@ -870,8 +870,8 @@ module triangle_setup #(
   always @(posedge clk) begin
     if (load_vertices) begin
       for (v = 0; v < 3; v = v + 1) begin
-        vx[v] <= in_x[v*CB +: CB];
-        vy[v] <= in_y[v*CB +: CB];
+        vx[v] <= in_x[v*COORD_BITS +: COORD_BITS];
+        vy[v] <= in_y[v*COORD_BITS +: COORD_BITS];
         vz[v] <= in_z[v*Z_BITS +: Z_BITS];
         vrgb[v] <= in_rgb[v*24 +: 24];
       end

@@ -30,14 +30,14 @@ module z_adder #(
   `RS_REQUIRE(illegal_z_guard_bits, Z_GUARD_BITS >= 0 && Z_GUARD_BITS <= 24, "z_adder: Z_GUARD_BITS must be 0 (derived) or 1..24")
 
   localparam integer F = rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS);
-  localparam integer ZRB = Z_BITS + F + 1;
-  localparam integer CRB = 9 + F;
-  localparam integer XB = rs_ubits32(WIDTH - 1);
+  localparam integer Z_REG_BITS = Z_BITS + F + 1;
+  localparam integer COLOR_REG_BITS = 9 + F;
+  localparam integer X_BITS = rs_ubits32(WIDTH - 1);
 
   reg [23:0] flat_q;
   always @(posedge clk) if (load) flat_q <= flat_rgb;
 
-  plane_register #(.REG_BITS(ZRB), .GUARD_BITS(F), .OUT_BITS(Z_BITS), .OFFSET_BITS(XB)) depth_plane (
+  plane_register #(.REG_BITS(Z_REG_BITS), .GUARD_BITS(F), .OUT_BITS(Z_BITS), .OFFSET_BITS(X_BITS)) depth_plane (
     .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter),
     .offset(row_offset), .from_record(from_record), .start(depth_start), .step_x_in(depth_step_x), .step_y_in(depth_step_y),
     .out(depth));
@@ -47,10 +47,10 @@ module z_adder #(
   generate
     for (c = 0; c < 3; c = c + 1) begin : color_planes
       // Channel c is r, g, b for c = 0, 1, 2; rgb holds r in [23:16].
-      plane_register #(.REG_BITS(CRB), .GUARD_BITS(F), .OUT_BITS(8), .OFFSET_BITS(XB)) plane (
+      plane_register #(.REG_BITS(COLOR_REG_BITS), .GUARD_BITS(F), .OUT_BITS(8), .OFFSET_BITS(X_BITS)) plane (
         .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter),
-        .offset(row_offset), .from_record(from_record), .start(color_start[c*CRB +: CRB]), .step_x_in(color_step_x[c*CRB +: CRB]),
-        .step_y_in(color_step_y[c*CRB +: CRB]), .out(gouraud_rgb[8*(2-c) +: 8]));
+        .offset(row_offset), .from_record(from_record), .start(color_start[c*COLOR_REG_BITS +: COLOR_REG_BITS]), .step_x_in(color_step_x[c*COLOR_REG_BITS +: COLOR_REG_BITS]),
+        .step_y_in(color_step_y[c*COLOR_REG_BITS +: COLOR_REG_BITS]), .out(gouraud_rgb[8*(2-c) +: 8]));
     end
   endgenerate
 

@@ -42,12 +42,12 @@ module zbuffer_memory #(
   `RS_REQUIRE(illegal_latency, MAX_MEMORY_LATENCY >= 1 && MAX_MEMORY_LATENCY <= 64, "zbuffer_memory: MAX_MEMORY_LATENCY must be 1..64")
   /* verilator lint_on VARHIDDEN */
 
-  localparam integer AB = rs_ubits32(WIDTH * HEIGHT - 1);
+  localparam integer ADDR_BITS = rs_ubits32(WIDTH * HEIGHT - 1);
   localparam integer WORDS = WIDTH * HEIGHT;
-  localparam integer LB = rs_ubits32(MAX_MEMORY_LATENCY);
+  localparam integer LATENCY_BITS = rs_ubits32(MAX_MEMORY_LATENCY);
 
   reg [Z_BITS-1:0] depth_clear_q;
-  reg [LB-1:0]     latency_q;
+  reg [LATENCY_BITS-1:0]     latency_q;
   always @(posedge clk) begin
     if (rst) begin
       depth_clear_q <= cfg_depth_clear;
@@ -61,23 +61,23 @@ module zbuffer_memory #(
   reg [23:0]       color_mem [0:WORDS-1] /*verilator public_flat_rd*/;
 
   localparam integer ROWS = (WORDS + 63) / 64;
-  localparam integer RAB = rs_ubits32(ROWS - 1);  // bitmap row address
+  localparam integer BITMAP_ROW_BITS = rs_ubits32(ROWS - 1);  // bitmap row address
   localparam integer LAST_ROW = ROWS - 1;
-  localparam [RAB-1:0] LAST_ROW_A = LAST_ROW[RAB-1:0];
+  localparam [BITMAP_ROW_BITS-1:0] LAST_ROW_A = LAST_ROW[BITMAP_ROW_BITS-1:0];
   reg [63:0] depth_written [0:ROWS-1] /*verilator public_flat_rd*/;
   reg [63:0] color_written [0:ROWS-1] /*verilator public_flat_rd*/;
 
   // Bitmap row and bit of a word address (address / 64, address % 64).
   /* verilator lint_off UNUSEDSIGNAL */
-  function automatic [RAB-1:0] row_of(input [AB-1:0] address);
-    reg [AB+5:0] wide;
+  function automatic [BITMAP_ROW_BITS-1:0] row_of(input [ADDR_BITS-1:0] address);
+    reg [ADDR_BITS+5:0] wide;
     begin
       wide = {6'd0, address};
-      row_of = wide[RAB+5:6];
+      row_of = wide[BITMAP_ROW_BITS+5:6];
     end
   endfunction
-  function automatic [5:0] bit_of(input [AB-1:0] address);
-    reg [AB+5:0] wide;
+  function automatic [5:0] bit_of(input [ADDR_BITS-1:0] address);
+    reg [ADDR_BITS+5:0] wide;
     begin
       wide = {6'd0, address};
       bit_of = wide[5:0];
@@ -85,11 +85,11 @@ module zbuffer_memory #(
   endfunction
   /* verilator lint_on UNUSEDSIGNAL */
 
-  reg [RAB-1:0] clear_row;
+  reg [BITMAP_ROW_BITS-1:0] clear_row;
   always @(posedge clk) begin
     if (rst) begin
       clear_done <= 1'b0;
-      clear_row <= {RAB{1'b0}};
+      clear_row <= {BITMAP_ROW_BITS{1'b0}};
     end else if (!clear_done) begin
       clear_row <= clear_row + 1'b1;
       if (clear_row == LAST_ROW_A) clear_done <= 1'b1;
@@ -129,23 +129,23 @@ module zbuffer_memory #(
 
   // Delay ring for latencies above 1: the entry of age k holds the word read k cycles ago (from
   // age 2; read_value is age 1), one entry written every cycle.
-  localparam integer RB = MAX_MEMORY_LATENCY > 2 ? $clog2(MAX_MEMORY_LATENCY) : 1;
-  localparam integer RING = 1 << RB;
-  reg [RB-1:0]     now_slot;
+  localparam integer RING_BITS = MAX_MEMORY_LATENCY > 2 ? $clog2(MAX_MEMORY_LATENCY) : 1;
+  localparam integer RING = 1 << RING_BITS;
+  reg [RING_BITS-1:0]     now_slot;
   reg [Z_BITS-1:0] ring_data [0:RING-1];
   /* verilator lint_off UNUSEDSIGNAL */
-  function automatic [RB-1:0] slot_of_age(input [RB-1:0] now, input [LB-1:0] age);
-    reg [LB:0] wide_age;
+  function automatic [RING_BITS-1:0] slot_of_age(input [RING_BITS-1:0] now, input [LATENCY_BITS-1:0] age);
+    reg [LATENCY_BITS:0] wide_age;
     begin
       wide_age = {1'b0, age};
-      slot_of_age = now - wide_age[RB-1:0];  // modulo RING (a power of two)
+      slot_of_age = now - wide_age[RING_BITS-1:0];  // modulo RING (a power of two)
     end
   endfunction
   /* verilator lint_on UNUSEDSIGNAL */
-  wire [RB-1:0] previous_slot = slot_of_age(now_slot, {{(LB-1){1'b0}}, 1'b1});
-  assign rd_depth = latency_q == {{(LB-1){1'b0}}, 1'b1} ? read_value : ring_data[slot_of_age(now_slot, latency_q)];
+  wire [RING_BITS-1:0] previous_slot = slot_of_age(now_slot, {{(LATENCY_BITS-1){1'b0}}, 1'b1});
+  assign rd_depth = latency_q == {{(LATENCY_BITS-1){1'b0}}, 1'b1} ? read_value : ring_data[slot_of_age(now_slot, latency_q)];
   always @(posedge clk) begin
-    if (rst) now_slot <= {RB{1'b0}};
+    if (rst) now_slot <= {RING_BITS{1'b0}};
     else now_slot <= now_slot + 1'b1;
     ring_data[previous_slot] <= read_value;
   end

@@ -86,13 +86,13 @@ module hwcost_plane_register #(
 ) (clk, load, step_x, next_row, row_enter, offset, from_record, start, step_x_in, step_y_in, out);
 `include "rastersim_widths.vh"
   localparam integer F = rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS);
-  localparam integer RB = Z_BITS + F + 1;
+  localparam integer Z_REG_BITS = Z_BITS + F + 1;
   localparam integer OB = rs_ubits32(WIDTH - 1);
   input wire clk, load, step_x, next_row, row_enter, from_record;
   input wire [OB-1:0] offset;
-  input wire [RB-1:0] start, step_x_in, step_y_in;
+  input wire [Z_REG_BITS-1:0] start, step_x_in, step_y_in;
   output wire [Z_BITS-1:0] out;
-  plane_register #(.REG_BITS(RB), .GUARD_BITS(F), .OUT_BITS(Z_BITS), .OFFSET_BITS(OB)) unit (
+  plane_register #(.REG_BITS(Z_REG_BITS), .GUARD_BITS(F), .OUT_BITS(Z_BITS), .OFFSET_BITS(OB)) unit (
     .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter), .offset(offset), .from_record(from_record),
     .start(start), .step_x_in(step_x_in), .step_y_in(step_y_in), .out(out));
 endmodule

@@ -22,7 +22,7 @@ mutants=("$@")
 declare -A file from to params check
 max_latency=8
 file[edge_compare]=scanline_walker.sv
-from[edge_compare]='!edge_value[0][EB-1]'
+from[edge_compare]='!edge_value[0][EDGE_BITS-1]'
 to[edge_compare]='(edge_value[0] > 0)'            # edge test E >= 0 becomes E > 0
 file[walker_backpressure]=scanline_walker.sv
 from[walker_backpressure]='wire advance = walking && (frag_ready || !frag_valid);'
@@ -35,7 +35,7 @@ from[walker_no_overlap]='assign in_ready = !walking || last;'
 to[walker_no_overlap]='assign in_ready = !walking;'  # the next record waits for a cycle of its own
 params[walker_no_overlap]="-GSETUP_INTERVAL=4"  # records waiting in the FIFO: loads overlap
 file[walker_first_row_span]=scanline_walker.sv
-from[walker_first_row_span]='assign src_quot[g] = use_record ? in_span_quot[g*EB +: EB] : quot[g];'
+from[walker_first_row_span]='assign src_quot[g] = use_record ? in_span_quot[g*EDGE_BITS +: EDGE_BITS] : quot[g];'
 to[walker_first_row_span]='assign src_quot[g] = quot[g];'  # the first row's span from the last triangle's DDA
 file[walker_empty_row]=scanline_walker.sv
 from[walker_empty_row]='row_empty <= !span_nonempty;'
@@ -68,10 +68,10 @@ for m in serial_floor serial_remainder_correction serial_multiplier_bits serial_
 done
 from[serial_floor]='wire quotient_bit = (fits && divisor_nonzero) ^ sign_q;'
 to[serial_floor]='wire quotient_bit = fits && divisor_nonzero;'  # a negative dividend's quotient not inverted
-from[serial_remainder_correction]='if (sign_q) rem_q <= ~trial[AB-1:0];'
-to[serial_remainder_correction]='if (1'"'"'b0) rem_q <= ~trial[AB-1:0];'  # the span remainder correction step missing
-from[serial_multiplier_bits]=': is_edge ? SB'"'"'(2 * (CB + 1))'
-to[serial_multiplier_bits]=': is_edge ? SB'"'"'(2 * CB)'  # the edge products one multiplier bit short
+from[serial_remainder_correction]='if (sign_q) rem_q <= ~trial[AREA_BITS-1:0];'
+to[serial_remainder_correction]='if (1'"'"'b0) rem_q <= ~trial[AREA_BITS-1:0];'  # the span remainder correction step missing
+from[serial_multiplier_bits]=': is_edge ? SB'"'"'(2 * (COORD_BITS + 1))'
+to[serial_multiplier_bits]=': is_edge ? SB'"'"'(2 * COORD_BITS)'  # the edge products one multiplier bit short
 from[serial_bias_carry]='+ H'"'"'(subtract || (bit_now && use_start && bias[weight_k]));'
 to[serial_bias_carry]='+ H'"'"'(subtract);'  # the start numerators use the biased edge values
 # The pipelined setup unit and the record FIFO.

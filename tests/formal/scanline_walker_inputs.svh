@@ -5,11 +5,11 @@
 // The proof starts in the reset state (all registers zero: not walking) and rst stays low.
   reg f_loaded = 1'b0;
   reg f_traversal;
-  reg [XB-1:0] f_x0, f_x1;
-  reg [YB-1:0] f_y0, f_y1;
-  reg signed [EB-1:0] f_start [0:2];
-  reg signed [EB-1:0] f_step_x [0:2];
-  reg signed [EB-1:0] f_step_y [0:2];
+  reg [X_BITS-1:0] f_x0, f_x1;
+  reg [Y_BITS-1:0] f_y0, f_y1;
+  reg signed [EDGE_BITS-1:0] f_start [0:2];
+  reg signed [EDGE_BITS-1:0] f_step_x [0:2];
+  reg signed [EDGE_BITS-1:0] f_step_y [0:2];
   integer f_k;
   always @(posedge clk) begin
     if (load) begin
@@ -20,9 +20,9 @@
       f_y0 <= in_y0;
       f_y1 <= in_y1;
       for (f_k = 0; f_k < 3; f_k = f_k + 1) begin
-        f_start[f_k] <= in_edge_start[f_k*EB +: EB];
-        f_step_x[f_k] <= $signed(in_edge_step_x[f_k*SXB +: SXB]);  // sign-extended by the assignment
-        f_step_y[f_k] <= $signed(in_edge_step_y[f_k*SYB +: SYB]);
+        f_start[f_k] <= in_edge_start[f_k*EDGE_BITS +: EDGE_BITS];
+        f_step_x[f_k] <= $signed(in_edge_step_x[f_k*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS]);  // sign-extended by the assignment
+        f_step_y[f_k] <= $signed(in_edge_step_y[f_k*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]);
       end
     end
   end
