@@ -10,6 +10,7 @@ packages=(
   libosmesa6-dev nextpnr-ice40 fpga-icestorm
   gnuplot-nox
   python3-dev python3-pybind11 python3-numpy python3-pytest  # the Python module and its tests
+  python3-yaml  # scripts/check-fusesoc-core.sh reads rastersim.core
   glmark2-data  # the Stanford bunny (bunny.obj) for the real-mesh benchmark
 )
 missing=()
