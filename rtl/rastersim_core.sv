@@ -93,7 +93,6 @@ module rastersim_core #(
   localparam integer SETUP_REJECTED_LATENCY /*verilator public*/ =
       rs_setup_rejected_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, SETUP_INTERVAL);
   localparam integer WALKER_LOAD_CYCLES /*verilator public*/ = 1;
-  // The profile parameters themselves, for the harness.
   // The encodings of rastersim_widths.vh in one word, from bit 0: RS_DEPTH_NEVER .. RS_DEPTH_ALWAYS
   // (3 bits each), RS_CULL_NONE, _BACK, _FRONT (2), RS_FRONT_CCW, _CW, RS_TRAVERSAL_BBOX, _SPAN,
   // RS_SHADING_FLAT, _GOURAUD (1), RS_STATUS_DRAWN .. RS_STATUS_OFFSCREEN (2).
@@ -103,6 +102,7 @@ module rastersim_core #(
       RS_CULL_FRONT, RS_CULL_BACK, RS_CULL_NONE,
       RS_DEPTH_ALWAYS, RS_DEPTH_GEQUAL, RS_DEPTH_NOTEQUAL, RS_DEPTH_GREATER, RS_DEPTH_LEQUAL, RS_DEPTH_EQUAL,
       RS_DEPTH_LESS, RS_DEPTH_NEVER};
+  // The profile parameters themselves, for the harness.
   localparam integer P_WIDTH /*verilator public*/ = WIDTH;
   localparam integer P_HEIGHT /*verilator public*/ = HEIGHT;
   localparam integer P_SUBPIXEL_BITS /*verilator public*/ = SUBPIXEL_BITS;
@@ -112,7 +112,6 @@ module rastersim_core #(
   localparam integer P_MAX_SETUP_FIFO_DEPTH /*verilator public*/ = MAX_SETUP_FIFO_DEPTH;
   localparam integer P_SETUP_INTERVAL /*verilator public*/ = SETUP_INTERVAL;
   /* verilator lint_on UNUSEDPARAM */
-
 
   // The runtime profile keys are sampled while rst is high and held for the frame (static
   // configuration registers: the units see registers, not the ports).

@@ -2,8 +2,8 @@
 // formulas as model/widths.h (derive_widths), written independently. Included inside the body of
 // every module that needs them (functions cannot be shared through a package in yosys 0.23).
 // Arithmetic is done on 128-bit values: the largest bound (the depth dividend) needs 102 bits.
-// The top module republishes the results as localparams so that the C++ build
-// static_asserts them against rastersim::derive_widths (testbench/rtl_widths_check.cpp).
+// rastersim_core republishes the results as /*verilator public*/ localparams so that the C++ build
+// static_asserts them against rastersim::derive_widths (testbench/rtl_configs.cpp.in).
 
 // Parameter legality, checked when a unit is elaborated: a generate block that stops Verilator
 // (USERERROR: the lint is -Wall, the builds pass -Werror-USERERROR) and yosys with the message.
