@@ -94,58 +94,58 @@ inline std::vector<SetupRecordField> setup_record_fields(const Widths& w, bool g
 
 // rastersim_core's packed record (rs_rec_lsb in rtl/rastersim_widths.vh): the rec_* wires one after
 // another from bit 0, in the order of their first field in setup_record_fields, each as wide as
-// its fields reach. The walker part (rs_rec_walker_bits) is the wires up to rec_span_step_rem.
-struct RecordWire {
-  std::string name;  // "rec_edge_start"
-  int lsb = 0;
-  int bits = 0;
+// its fields reach; a field sits at its wire's position plus its wire_lo. Built once per profile,
+// then packs and unpacks records in 32-bit words, least significant first (a VlWide's order).
+class RecordLayout {
+ public:
+  // `gouraud` false leaves the colour planes out of unpack(), as the model leaves them zero.
+  RecordLayout(const Widths& w, bool gouraud) : fields_(setup_record_fields(w, gouraud)) {
+    std::vector<std::pair<std::string, int>> wires;  // name, width
+    for (const SetupRecordField& f : setup_record_fields(w, true)) {
+      auto it = std::find_if(wires.begin(), wires.end(), [&f](const auto& r) { return r.first == f.wire; });
+      if (it == wires.end()) it = wires.insert(wires.end(), {f.wire, 0});
+      it->second = std::max(it->second, std::max(f.wire_lo, 0) + f.bits);
+    }
+    for (const SetupRecordField& f : fields_) {
+      int lsb = 0;
+      for (const auto& [name, width] : wires) {
+        if (name == f.wire) break;
+        lsb += width;
+      }
+      lsb_.push_back(lsb + std::max(f.wire_lo, 0));
+    }
+    for (const auto& wire : wires) bits_ += wire.second;
+  }
+
+  int bits() const { return bits_; }
+
+  std::vector<uint32_t> pack(const SetupResult& s) const {
+    std::vector<uint32_t> words(size_t((bits_ + 31) / 32), 0u);
+    for (size_t k = 0; k < fields_.size(); ++k) {
+      const uint64_t value = uint64_t(fields_[k].get(s));
+      for (int i = 0; i < fields_[k].bits; ++i)
+        if ((value >> i) & 1u) words[size_t((lsb_[k] + i) / 32)] |= 1u << ((lsb_[k] + i) % 32);
+    }
+    return words;
+  }
+
+  SetupResult unpack(const uint32_t* words) const {
+    SetupResult s;
+    s.status = SetupStatus::Drawn;
+    for (size_t k = 0; k < fields_.size(); ++k) {
+      const SetupRecordField& f = fields_[k];
+      uint64_t value = 0;
+      for (int i = 0; i < f.bits; ++i) value |= uint64_t((words[(lsb_[k] + i) / 32] >> ((lsb_[k] + i) % 32)) & 1u) << i;
+      if (f.is_signed && f.bits < 64 && (value >> (f.bits - 1)) & 1u) value |= ~uint64_t(0) << f.bits;
+      f.set(s, int64_t(value));
+    }
+    return s;
+  }
+
+ private:
+  std::vector<SetupRecordField> fields_;
+  std::vector<int> lsb_;  // per field of fields_
+  int bits_ = 0;
 };
-
-inline std::vector<RecordWire> record_wires(const Widths& w) {
-  std::vector<RecordWire> wires;
-  for (const SetupRecordField& f : setup_record_fields(w, true)) {
-    auto it = std::find_if(wires.begin(), wires.end(), [&f](const RecordWire& r) { return r.name == f.wire; });
-    if (it == wires.end()) it = wires.insert(wires.end(), RecordWire{f.wire, 0, 0});
-    it->bits = std::max(it->bits, std::max(f.wire_lo, 0) + f.bits);
-  }
-  int lsb = 0;
-  for (RecordWire& r : wires) r.lsb = lsb, lsb += r.bits;
-  return wires;
-}
-
-inline int record_bits(const Widths& w) {
-  const RecordWire last = record_wires(w).back();
-  return last.lsb + last.bits;
-}
-
-// The packed record in 32-bit words, least significant first (a verilated VlWide's order), and
-// back. `gouraud` false leaves the colour planes zero, as the model does with flat shading.
-inline std::vector<uint32_t> pack_record(const SetupResult& s, const Widths& w) {
-  const std::vector<RecordWire> wires = record_wires(w);
-  std::vector<uint32_t> words(size_t((record_bits(w) + 31) / 32), 0u);
-  for (const SetupRecordField& f : setup_record_fields(w, true)) {
-    const auto wire = std::find_if(wires.begin(), wires.end(), [&f](const RecordWire& r) { return r.name == f.wire; });
-    const int lsb = wire->lsb + std::max(f.wire_lo, 0);
-    const uint64_t value = uint64_t(f.get(s));
-    for (int i = 0; i < f.bits; ++i)
-      if ((value >> i) & 1u) words[size_t((lsb + i) / 32)] |= 1u << ((lsb + i) % 32);
-  }
-  return words;
-}
-
-inline SetupResult unpack_record(const uint32_t* words, const Widths& w, bool gouraud) {
-  const std::vector<RecordWire> wires = record_wires(w);
-  SetupResult s;
-  s.status = SetupStatus::Drawn;
-  for (const SetupRecordField& f : setup_record_fields(w, gouraud)) {
-    const auto wire = std::find_if(wires.begin(), wires.end(), [&f](const RecordWire& r) { return r.name == f.wire; });
-    const int lsb = wire->lsb + std::max(f.wire_lo, 0);
-    uint64_t value = 0;
-    for (int i = 0; i < f.bits; ++i) value |= uint64_t((words[(lsb + i) / 32] >> ((lsb + i) % 32)) & 1u) << i;
-    if (f.is_signed && f.bits < 64 && (value >> (f.bits - 1)) & 1u) value |= ~uint64_t(0) << f.bits;
-    f.set(s, int64_t(value));
-  }
-  return s;
-}
 
 }  // namespace rastersim::rtl

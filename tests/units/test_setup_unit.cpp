@@ -30,6 +30,7 @@ void check_setup_unit(const char* config, const Profile& base, uint64_t seed, in
   const Widths w = derive_widths(base);
   const SetupTiming timing = setup_timing(base);
   const std::vector<rtl::SetupRecordField> fields = rtl::setup_record_fields(w, true);
+  const rtl::RecordLayout layout(w, true);
   std::mt19937_64 rng(seed);
   Unit<V> unit(seed);
   constexpr int kBatch = 4096;
@@ -110,7 +111,7 @@ void check_setup_unit(const char* config, const Profile& base, uint64_t seed, in
         const SetupResult& r = want[size_t(records.front().index)];
         ASSERT_TRUE(unit->out_valid) << where_batch << ", triangle " << records.front().index << ": no record in cycle "
                                      << cycle;
-        const SetupResult got = rtl::unpack_record(unit->out_record.data(), w, true);
+        const SetupResult got = layout.unpack(unit->out_record.data());
         for (const rtl::SetupRecordField& f : fields)
           ASSERT_EQ(f.get(got), f.get(r)) << where_batch << ", triangle " << records.front().index << ": " << f.name;
         records.pop_front();

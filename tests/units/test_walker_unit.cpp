@@ -81,7 +81,8 @@ template <class V>
 void check_walker_unit(const char* config, const Profile& base, uint64_t seed, int64_t count) {
   const Widths w = derive_widths(base);
   using Module = std::remove_pointer_t<decltype(std::declval<V&>().walker_unit)>;  // its public localparams
-  ASSERT_EQ(rtl::record_bits(w), int(Module::RECORD_BITS)) << "the test packs the record as the RTL lays it out";
+  const rtl::RecordLayout layout(w, true);
+  ASSERT_EQ(layout.bits(), int(Module::RECORD_BITS)) << "the test packs the record as the RTL lays it out";
   std::mt19937_64 rng(seed);
   Unit<V> unit(seed);
   constexpr int kBatch = 512;
@@ -103,7 +104,7 @@ void check_walker_unit(const char* config, const Profile& base, uint64_t seed, i
     for (size_t i = 0; i < records.size(); ++i) gaps.push_back(rng() % 3 == 0 ? int64_t(rng() % 40) : 0);
     const ModelWalk m = model_walk(p, records, gaps, script);
     std::vector<std::vector<uint32_t>> packed;
-    for (const SetupResult& r : records) packed.push_back(rtl::pack_record(r, w));
+    for (const SetupResult& r : records) packed.push_back(layout.pack(r));
     const std::string where_batch = std::string(config) + ", seed " + std::to_string(seed) + ", batch " +
                                     std::to_string(batch) + " (" + to_string(p.traversal) + ", " +
                                     to_string(p.shading) + ", ready low " + std::to_string(script.stall_percent) +
