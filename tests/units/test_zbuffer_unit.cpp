@@ -13,7 +13,6 @@
 #include <random>
 
 #include "model/zbuffer.h"
-#include "testbench/setup_record.h"
 #include "testbench/units/unit_harness.h"
 #include "unit_configs.h"
 
