@@ -4,6 +4,9 @@
 
 #include "model/input_error.h"
 #ifdef RASTERSIM_HAVE_RTL
+#include <iostream>
+
+#include "testbench/modules.h"
 #include "testbench/rtl_backend.h"
 #endif
 #ifdef RASTERSIM_HAVE_SYSTEMC
@@ -13,12 +16,29 @@
 
 namespace rastersim {
 
-#ifdef RASTERSIM_HAVE_SYSTEMC
 namespace {
-// librastersim_systemc.so, loaded the first time the SystemC backend is used.
-const systemc::Api& systemc_backend() { return *static_cast<const systemc::Api*>(systemc_api()); }
-}  // namespace
+
+#ifdef RASTERSIM_HAVE_RTL
+// Progress of a module build, on stderr (stdout may carry a command's output).
+void print_progress(const std::string& line) { std::cerr << "rastersim: " << line << std::endl; }
+
+// The library of a module built on demand for the profile (modules.h); a failed build is an error
+// of the tools, not of the input.
+std::string module_for(modules::Kind kind, const Profile& profile) {
+  return modules::module_library(kind, modules::geometry_for(profile), print_progress);
+}
 #endif
+
+#ifdef RASTERSIM_HAVE_SYSTEMC
+// The SystemC library the backend runs: librastersim_systemc.so, loaded the first time the
+// backend is used, or a module built for the profile (check_backend_profile).
+std::string systemc_library;
+const systemc::Api& systemc_backend() {
+  return *static_cast<const systemc::Api*>(systemc_api(systemc_library, modules::abi_stamp()));
+}
+#endif
+
+}  // namespace
 
 const std::vector<std::string>& backend_names() {
   static const std::vector<std::string> names = {"model", "rtl", "cosim", "systemc"};
@@ -39,16 +59,26 @@ Backend select_backend(const std::string& name) {
   throw InputError("unknown backend '" + name + "'");
 }
 
+#ifdef RASTERSIM_HAVE_RTL
+void ensure_rtl_configuration(const Profile& profile) {
+  if (validate(profile).empty() && !rtl::has_configuration(profile))
+    rtl::load_module(module_for(modules::Kind::Rtl, profile));
+}
+#endif
+
 void check_backend_profile(Backend backend, const Profile& profile) {
   if (backend == Backend::Model) return;
 #ifdef RASTERSIM_HAVE_SYSTEMC
   if (backend == Backend::Systemc) {
+    if (validate(profile).empty() && !systemc_backend().geometry_error(profile).empty())
+      systemc_library = module_for(modules::Kind::Systemc, profile);
     const std::string problem = systemc_backend().configuration_error(profile);
     if (!problem.empty()) throw InputError(problem);
     return;
   }
 #endif
 #ifdef RASTERSIM_HAVE_RTL
+  ensure_rtl_configuration(profile);
   const std::string problem = rtl::configuration_error(profile);
   if (!problem.empty()) throw InputError(problem);
 #else

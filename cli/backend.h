@@ -21,8 +21,16 @@ const std::vector<std::string>& backend_names();
 // Throws InputError "backend X is not built in this binary" for a known backend this binary lacks.
 Backend select_backend(const std::string& name);
 
-// Throws InputError (exit 2) when the backend cannot run this profile, saying how to build it.
+// Throws InputError (exit 2) when the backend cannot run this profile. A valid profile that no
+// verilated configuration of the build runs is verilated on demand first (testbench/modules.h),
+// with progress on stderr.
 void check_backend_profile(Backend backend, const Profile& profile);
+
+#ifdef RASTERSIM_HAVE_RTL
+// The RTL backend's part of check_backend_profile: loads (building it first when the cache lacks
+// it) a module for a valid profile no built configuration runs.
+void ensure_rtl_configuration(const Profile& profile);
+#endif
 
 struct BackendOptions {
   uint64_t seed = 1;         // RTL random power-on state (rtl, cosim; systemc: the process's first frame)

@@ -18,6 +18,7 @@
 #include "outputs.h"
 #include "parallel.h"
 #ifdef RASTERSIM_HAVE_RTL
+#include "backend.h"
 #include "testbench/cosim_cases.h"
 #include "testbench/cosim_coverage.h"
 #include "testbench/rtl_backend.h"
@@ -212,8 +213,6 @@ int run_cosim(const CosimOptions& o) {
   (void)shard;
   throw InputError("cosim needs the RTL backend, which is not built in this binary (install Verilator and rebuild)");
 #else
-  const std::string problem = rtl::configuration_error(profile);
-  if (!problem.empty()) throw InputError(problem);
   if (!std::filesystem::is_directory(o.replay_dir))
     throw InputError("--replay-dir: folder '" + o.replay_dir + "' does not exist");
   if (!o.export_dir.empty() && !std::filesystem::is_directory(o.export_dir))
@@ -222,6 +221,10 @@ int run_cosim(const CosimOptions& o) {
   if (o.frame >= 0 && shard.count > 1) throw InputError("--frame and --shard choose frames both: give one");
   if (!o.export_dir.empty() && (!o.junit_out.empty() || !o.wave.path.empty() || !o.coverage_out.empty()))
     throw InputError("--export writes the frames without running them: --junit, --wave and --coverage need a run");
+  if (o.jobs < 1 || o.jobs > 256) throw InputError("--jobs " + std::to_string(o.jobs) + " is outside 1..256");
+  ensure_rtl_configuration(profile);  // verilated on demand when the build lacks it
+  const std::string problem = rtl::configuration_error(profile);
+  if (!problem.empty()) throw InputError(problem);
   OutputFiles outputs;
   const std::string junit_temp = o.junit_out.empty() ? "" : outputs.add(o.junit_out, "--junit");
   const WaveFiles wave = add_waveform(outputs, o.wave);
@@ -240,7 +243,6 @@ int run_cosim(const CosimOptions& o) {
   const int64_t directed = plan.directed_count();
   const bool tty = isatty(STDERR_FILENO) != 0;
   const int64_t total = directed + o.count;
-  if (o.jobs < 1 || o.jobs > 256) throw InputError("--jobs " + std::to_string(o.jobs) + " is outside 1..256");
   if (o.frame >= total)
     throw InputError("--frame " + std::to_string(o.frame) + ": this run has frames 0.." + std::to_string(total - 1) +
                      " (" + std::to_string(directed) + " directed, then --count " + std::to_string(o.count) + " random)");

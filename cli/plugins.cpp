@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 
 #include <filesystem>
+#include <map>
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
@@ -82,14 +83,20 @@ std::vector<unsigned char> encode_image(const std::string& path, int width, int 
   return bytes;
 }
 
-const void* systemc_api() {
-  static std::once_flag once;
-  static const void* api = nullptr;
-  std::call_once(once, [] {
-    const char* file = "librastersim_systemc.so";
-    void* h = load(file, "the SystemC backend");
-    api = symbol<const void* (*)()>(h, "rastersim_systemc_api", file)();
-  });
+const void* systemc_api(const std::string& library_path, const std::string& abi) {
+  static std::mutex mutex;
+  static std::map<std::string, const void*> loaded;  // by path; each library is opened once
+  const std::lock_guard<std::mutex> lock(mutex);
+  const void*& api = loaded[library_path];
+  if (!api) {
+    const std::string file = library_path.empty() ? "librastersim_systemc.so" : library_path;
+    void* h = load(file.c_str(), "the SystemC backend");
+    const char* stamp = symbol<const char* (*)()>(h, "rastersim_module_abi", file.c_str())();
+    if (abi != stamp)
+      throw std::runtime_error(file + " was built against other records (" + stamp + ") than this program (" + abi +
+                               ")");
+    api = symbol<const void* (*)()>(h, "rastersim_systemc_api", file.c_str())();
+  }
   return api;
 }
 

@@ -18,8 +18,10 @@ bool image_format_writable(const std::string& path);
 std::vector<unsigned char> encode_image(const std::string& path, int width, int height, int channels, PixelType type,
                                         const void* pixels);
 
-// The SystemC backend's library (librastersim_systemc.so): its rastersim_systemc_api() table, as
-// a `const rastersim::systemc::Api*` (testbench/systemc/systemc_backend.h).
-const void* systemc_api();
+// A SystemC backend library: the built one (librastersim_systemc.so) when library_path is empty,
+// else a module built on demand (testbench/modules.h). Its rastersim_systemc_api() table, as a
+// `const rastersim::systemc::Api*` (testbench/systemc/systemc_backend.h); throws when the library's
+// ABI stamp is not `abi`.
+const void* systemc_api(const std::string& library_path, const std::string& abi);
 
 }  // namespace rastersim

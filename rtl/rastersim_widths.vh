@@ -3,7 +3,7 @@
 // every module that needs them (functions cannot be shared through a package in yosys 0.23).
 // Arithmetic is done on 128-bit values: the largest bound (the depth dividend) needs 102 bits.
 // rastersim_core republishes the results as /*verilator public*/ localparams so that the C++ build
-// static_asserts them against rastersim::derive_widths (testbench/rtl_configs.cpp.in).
+// static_asserts them against rastersim::derive_widths (testbench/rtl_configuration.h).
 
 // Parameter legality, checked when a unit is elaborated: a generate block that stops Verilator
 // (USERERROR: the lint is -Wall, the builds pass -Werror-USERERROR) and yosys with the message.
@@ -194,7 +194,7 @@ endfunction
 // Encodings of the run-time settings and of the setup decision, numbered as the C++ enums of
 // model/profile.h (DepthFunc, CullMode, FrontFace, Traversal, Shading) and model/triangle_setup.h
 // (SetupStatus). rastersim_core publishes them in one word (ENCODINGS), which the C++ build
-// static_asserts against the enums (testbench/rtl_configs.cpp.in).
+// static_asserts against the enums (testbench/rtl_configuration.h).
 /* verilator lint_off UNUSEDPARAM */
 localparam [2:0] RS_DEPTH_NEVER = 3'd0, RS_DEPTH_LESS = 3'd1,
                  RS_DEPTH_EQUAL = 3'd2, RS_DEPTH_LEQUAL = 3'd3,

@@ -1,44 +1,88 @@
 #include "testbench/rtl_backend.h"
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
 
+#include "testbench/modules.h"
 #include "testbench/rtl_configs.h"
 #include "testbench/setup_record.h"
 
 namespace rastersim::rtl {
 
+namespace {
+
+// Configurations loaded from modules built on demand (load_module), searched after the built ones.
+// A deque: the addresses find_configuration returns stay valid as modules are added.
+std::mutex loaded_mutex;
+std::deque<BuiltConfiguration>& loaded_table() {
+  static std::deque<BuiltConfiguration> table;
+  return table;
+}
+
+std::vector<const BuiltConfiguration*> all_configurations() {
+  std::vector<const BuiltConfiguration*> all;
+  for (const BuiltConfiguration& c : built_configuration_table()) all.push_back(&c);
+  const std::lock_guard<std::mutex> lock(loaded_mutex);
+  for (const BuiltConfiguration& c : loaded_table()) all.push_back(&c);
+  return all;
+}
+
+// A configuration of the profile's geometry and setup_interval, one that takes its memory_latency
+// when there is one.
+const BuiltConfiguration* find_configuration(const Profile& p) {
+  const int guard = derive_widths(p).guard_bits;
+  const BuiltConfiguration* found = nullptr;
+  for (const BuiltConfiguration* c : all_configurations()) {
+    const int built_guard = derive_widths(c->width, c->height, c->subpixel_bits, c->z_bits, c->z_guard_bits).guard_bits;
+    if (c->width == p.width && c->height == p.height && c->subpixel_bits == p.subpixel_bits && c->z_bits == p.z_bits &&
+        built_guard == guard && c->setup_interval == p.setup_interval) {
+      if (p.memory_latency <= c->max_memory_latency) return c;
+      if (!found) found = c;
+    }
+  }
+  return found;
+}
+
+}  // namespace
+
 std::vector<std::string> built_configurations() {
   std::vector<std::string> out;
-  for (const BuiltConfiguration& c : built_configuration_table()) {
+  for (const BuiltConfiguration* c : all_configurations()) {
     std::ostringstream s;
-    s << c.name << ": " << c.width << "x" << c.height << " subpixel_bits " << c.subpixel_bits << " z_bits "
-      << c.z_bits << " z_guard_bits " << (c.z_guard_bits ? std::to_string(c.z_guard_bits) : "auto")
-      << " memory_latency 1.." << c.max_memory_latency << " setup_interval " << c.setup_interval;
+    s << c->name << ": " << c->width << "x" << c->height << " subpixel_bits " << c->subpixel_bits << " z_bits "
+      << c->z_bits << " z_guard_bits " << (c->z_guard_bits ? std::to_string(c->z_guard_bits) : "auto")
+      << " memory_latency 1.." << c->max_memory_latency << " setup_interval " << c->setup_interval;
     out.push_back(s.str());
   }
   return out;
 }
 
-namespace {
-
-const BuiltConfiguration* find_configuration(const Profile& p) {
-  const int guard = derive_widths(p).guard_bits;
-  for (const BuiltConfiguration& c : built_configuration_table()) {
-    const int built_guard = derive_widths(c.width, c.height, c.subpixel_bits, c.z_bits, c.z_guard_bits).guard_bits;
-    if (c.width == p.width && c.height == p.height && c.subpixel_bits == p.subpixel_bits && c.z_bits == p.z_bits &&
-        built_guard == guard && c.setup_interval == p.setup_interval)
-      return &c;
-  }
-  return nullptr;
+bool has_configuration(const Profile& p) {
+  const BuiltConfiguration* c = find_configuration(p);
+  return c && p.memory_latency <= c->max_memory_latency;
 }
 
-}  // namespace
+void load_module(const std::string& library_path) {
+  void* handle = dlopen(library_path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle) throw std::runtime_error(std::string("cannot load the RTL module: ") + dlerror());
+  const auto abi = reinterpret_cast<const char* (*)()>(dlsym(handle, RASTERSIM_MODULE_ABI_SYMBOL));
+  const auto module = reinterpret_cast<const BuiltConfiguration* (*)()>(dlsym(handle, "rastersim_rtl_module"));
+  if (!abi || !module) throw std::runtime_error(library_path + " is not an RTL module of rastersim");
+  if (abi() != modules::abi_stamp())
+    throw std::runtime_error(library_path + " was built against other records (" + abi() + ") than this program (" +
+                             modules::abi_stamp() + ")");
+  const std::lock_guard<std::mutex> lock(loaded_mutex);
+  loaded_table().push_back(*module());
+}
 
 int built_max_memory_latency(const Profile& p) {
   const BuiltConfiguration* c = find_configuration(p);
@@ -56,8 +100,9 @@ std::string configuration_error(const Profile& p) {
                           std::to_string(derive_widths(p).guard_bits) + ", setup_interval " +
                           std::to_string(p.setup_interval) + "; built:";
     for (const std::string& b : built_configurations()) message += " [" + b + "]";
-    return message + ". To build it, add an entry to RASTERSIM_RTL_CONFIGS in testbench/CMakeLists.txt "
-                     "(name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency:setup_interval) and rebuild.";
+    return message + ". rastersim verilates it on demand (--backend rtl, cosim); to build it in, add an entry to "
+                     "RASTERSIM_RTL_CONFIGS in testbench/CMakeLists.txt "
+                     "(name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency:setup_interval).";
   }
   if (p.memory_latency > c->max_memory_latency)
     return "memory_latency " + std::to_string(p.memory_latency) + " exceeds the built RTL's maximum " +

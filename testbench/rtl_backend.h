@@ -45,8 +45,15 @@ struct RtlResult {
   std::string note;      // why it did not finish
 };
 
-// The profiles verilated into this build, as "WxH S=.. N=.. guard=.. latency<=.." lines.
+// The profiles verilated into this build and loaded from modules, as "name: WxH subpixel_bits .."
+// lines.
 std::vector<std::string> built_configurations();
+// True when a built or loaded configuration runs the profile's geometry, setup_interval and
+// memory_latency (configuration_error() may still refuse it for other reasons).
+bool has_configuration(const Profile& profile);
+// Adds the configuration of a module built on demand (modules.h, module_library) to those
+// run_rtl chooses from. Throws std::runtime_error when the library is not a module of this program.
+void load_module(const std::string& library_path);
 // The largest memory_latency the RTL built for `profile`'s geometry takes; 0 when none is built.
 int built_max_memory_latency(const Profile& profile);
 // Empty when the RTL can run `profile`; otherwise a sentence saying why and how to build it.

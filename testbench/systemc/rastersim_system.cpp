@@ -36,7 +36,7 @@ std::string RastersimSystem::built_configuration() {
          std::to_string(max_memory_latency());
 }
 
-std::string RastersimSystem::configuration_error(const Profile& p) {
+std::string RastersimSystem::geometry_error(const Profile& p) {
   const Profile built = built_geometry();
   if (p.width != built.width || p.height != built.height || p.subpixel_bits != built.subpixel_bits ||
       p.z_bits != built.z_bits || derive_widths(p).guard_bits != derive_widths(built).guard_bits)
@@ -50,6 +50,11 @@ std::string RastersimSystem::configuration_error(const Profile& p) {
   if (p.setup_interval != int(Core::P_SETUP_INTERVAL))
     return "setup_interval " + std::to_string(p.setup_interval) + ": the SystemC core is built with setup_interval " +
            std::to_string(int(Core::P_SETUP_INTERVAL));
+  return "";
+}
+
+std::string RastersimSystem::configuration_error(const Profile& p) {
+  if (std::string error = geometry_error(p); !error.empty()) return error;
   if (p.setup_fifo_depth > int(Core::P_MAX_SETUP_FIFO_DEPTH))
     return "setup_fifo_depth " + std::to_string(p.setup_fifo_depth) + " exceeds the SystemC core's maximum " +
            std::to_string(int(Core::P_MAX_SETUP_FIFO_DEPTH));

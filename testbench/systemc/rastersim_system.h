@@ -37,6 +37,9 @@ class RastersimSystem : public sc_core::sc_module {
   static std::string built_configuration();  // "WxH subpixel_bits .. z_bits .. memory_latency 1..L"
   // Empty when run_frame can take `profile` (already valid: see validate()), else why not.
   static std::string configuration_error(const Profile& profile);
+  // The part of configuration_error that a core verilated for other parameters would not have:
+  // geometry, memory latency, setup_interval.
+  static std::string geometry_error(const Profile& profile);
 
   // Runs one frame: reset, the triangles through the FIFO, until the pipeline is idle (or
   // max_cycles, 0 = a bound from the triangles). Call between simulations, not from a process.

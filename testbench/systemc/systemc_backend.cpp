@@ -5,6 +5,7 @@
 
 #include <verilated.h>
 
+#include "testbench/modules.h"
 #include "testbench/systemc/rastersim_system.h"
 
 namespace rastersim::systemc {
@@ -31,6 +32,8 @@ std::string built_configuration() { return RastersimSystem::built_configuration(
 
 std::string configuration_error(const Profile& p) { return RastersimSystem::configuration_error(p); }
 
+std::string geometry_error(const Profile& p) { return RastersimSystem::geometry_error(p); }
+
 rtl::RtlResult run_systemc(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
                            const SystemcOptions& options) {
   return system(options).run_frame(profile, triangles, options.max_cycles);
@@ -42,8 +45,13 @@ int64_t simulated_cycles() { return system(SystemcOptions{}).simulated_cycles();
 
 const rastersim::systemc::Api* rastersim_systemc_api() {
   static const rastersim::systemc::Api api = {&rastersim::systemc::configuration_error,
-                                              &rastersim::systemc::run_systemc};
+                                              &rastersim::systemc::geometry_error, &rastersim::systemc::run_systemc};
   return &api;
+}
+
+const char* rastersim_module_abi() {
+  static const std::string stamp = rastersim::modules::abi_stamp();
+  return stamp.c_str();
 }
 
 // libsystemc.so calls sc_main from its own main(); rastersim has its own main and never calls it,

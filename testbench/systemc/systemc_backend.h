@@ -34,6 +34,10 @@ RASTERSIM_SYSTEMC_API std::string built_configuration();
 // sentence saying why.
 RASTERSIM_SYSTEMC_API std::string configuration_error(const Profile& profile);
 
+// The part of configuration_error() a SystemC core verilated for the profile would not have
+// (geometry, memory latency, setup_interval): the program builds such a core on demand (modules.h).
+RASTERSIM_SYSTEMC_API std::string geometry_error(const Profile& profile);
+
 // Runs one frame. Throws std::invalid_argument with configuration_error() for a profile it cannot
 // run. Fragments, triangle records, setup records, counters and final memories as run_rtl returns them.
 RASTERSIM_SYSTEMC_API rtl::RtlResult run_systemc(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
@@ -46,6 +50,7 @@ RASTERSIM_SYSTEMC_API int64_t simulated_cycles();
 // does, so that its commands start without SystemC unless they run it).
 struct Api {
   std::string (*configuration_error)(const Profile& profile);
+  std::string (*geometry_error)(const Profile& profile);
   rtl::RtlResult (*run_systemc)(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
                                 const SystemcOptions& options);
 };
@@ -53,3 +58,5 @@ struct Api {
 }  // namespace rastersim::systemc
 
 extern "C" RASTERSIM_SYSTEMC_API const rastersim::systemc::Api* rastersim_systemc_api();
+// The library's records' stamp (modules.h abi_stamp), checked by the program before it uses the API.
+extern "C" RASTERSIM_SYSTEMC_API const char* rastersim_module_abi();

@@ -83,8 +83,10 @@ inline RunResult run_rastersim(const ScratchDir& dir, const std::vector<std::str
   for (std::string& a : copies) argv.push_back(a.data());
   argv.push_back(nullptr);
   const std::string work = dir.work().string();
+  const std::string cache = (dir.root() / "cache").string();
   const pid_t pid = fork();
   if (pid == 0) {
+    setenv("RASTERSIM_CACHE_DIR", cache.c_str(), 1);  // a module built on demand stays in the scratch folder
     if (chdir(work.c_str()) != 0) _exit(126);
     const int in = open("/dev/null", O_RDONLY);
     const int out = open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -122,8 +124,10 @@ inline RunResult run_rastersim_with_terminal_stderr(const ScratchDir& dir, const
   for (std::string& a : copies) argv.push_back(a.data());
   argv.push_back(nullptr);
   const std::string work = dir.work().string();
+  const std::string cache = (dir.root() / "cache").string();
   const pid_t pid = fork();
   if (pid == 0) {
+    setenv("RASTERSIM_CACHE_DIR", cache.c_str(), 1);  // a module built on demand stays in the scratch folder
     close(master);
     setenv("RASTERSIM_PROGRESS_DELAY_MS", "0", 1);  // show progress however fast this machine renders
     if (chdir(work.c_str()) != 0) _exit(126);

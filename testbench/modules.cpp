@@ -1,0 +1,241 @@
+#include "testbench/modules.h"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace rastersim::modules {
+namespace {
+
+// The sources a module is built from (testbench/ondemand/CMakeLists.txt reads them from here).
+const char* const kSourceDir = RASTERSIM_SOURCE_DIR;
+const char* const kSourceFolders[] = {"rtl", "model", "testbench", "cmake"};
+
+// FNV-1a, 64 bits: a digest for cache keys, not a defence against a malicious cache.
+struct Digest {
+  uint64_t h = 1469598103934665603ull;
+  void add(const void* data, size_t size) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < size; ++i) h = (h ^ p[i]) * 1099511628211ull;
+  }
+  void add(const std::string& s) { add(s.data(), s.size() + 1); }  // with the terminator: fields stay apart
+  std::string hex() const {
+    char out[17];
+    std::snprintf(out, sizeof out, "%016llx", static_cast<unsigned long long>(h));
+    return out;
+  }
+};
+
+// The digest of every file of kSourceFolders (paths and contents, in path order).
+std::string sources_digest() {
+  std::vector<fs::path> files;
+  for (const char* folder : kSourceFolders) {
+    const fs::path root = fs::path(kSourceDir) / folder;
+    if (!fs::is_directory(root))
+      throw std::runtime_error("cannot build a module: the source folder " + root.string() +
+                               " this rastersim was built from is gone");
+    for (const fs::directory_entry& e : fs::recursive_directory_iterator(root))
+      if (e.is_regular_file()) files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  Digest d;
+  for (const fs::path& f : files) {
+    std::ifstream in(f, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    d.add(fs::relative(f, kSourceDir).string());
+    d.add(bytes);
+  }
+  return d.hex();
+}
+
+std::string config_entry(const Geometry& g) {
+  std::ostringstream s;
+  s << "module:" << g.width << ":" << g.height << ":" << g.subpixel_bits << ":" << g.z_bits << ":" << g.z_guard_bits
+    << ":" << g.max_memory_latency << ":" << g.setup_interval;
+  return s.str();
+}
+
+std::string describe(Kind kind, const Geometry& g) {
+  std::ostringstream s;
+  s << (kind == Kind::Rtl ? "the verilated RTL" : "the SystemC core") << " for " << g.width << "x" << g.height
+    << " subpixel_bits " << g.subpixel_bits << " z_bits " << g.z_bits << " z_guard_bits "
+    << (g.z_guard_bits ? std::to_string(g.z_guard_bits) : "auto") << " memory_latency 1.." << g.max_memory_latency
+    << " setup_interval " << g.setup_interval;
+  return s.str();
+}
+
+// Runs argv with stdout and stderr into `log`, passing each output line to `on_line`. Returns the
+// exit status (128 + signal when killed).
+int run_logged(const std::vector<std::string>& argv, std::ostream& log, const std::function<void(const std::string&)>& on_line) {
+  int pipe_fds[2];
+  if (pipe(pipe_fds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+  if (pid == 0) {
+    dup2(pipe_fds[1], 1);
+    dup2(pipe_fds[1], 2);
+    close(pipe_fds[0]);
+    close(pipe_fds[1]);
+    execvp(args[0], args.data());
+    std::fprintf(stderr, "cannot run %s: %s\n", args[0], std::strerror(errno));
+    _exit(127);
+  }
+  close(pipe_fds[1]);
+  std::string pending;
+  char buffer[4096];
+  for (;;) {
+    const ssize_t n = read(pipe_fds[0], buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    log.write(buffer, n);
+    pending.append(buffer, size_t(n));
+    for (size_t end; (end = pending.find('\n')) != std::string::npos; pending.erase(0, end + 1))
+      on_line(pending.substr(0, end));
+  }
+  close(pipe_fds[0]);
+  log.flush();
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+std::string last_lines(const fs::path& file, size_t count) {
+  std::ifstream in(file);
+  std::deque<std::string> lines;
+  for (std::string line; std::getline(in, line);) {
+    lines.push_back(line);
+    if (lines.size() > count) lines.pop_front();
+  }
+  std::string out;
+  for (const std::string& l : lines) out += "  " + l + "\n";
+  return out;
+}
+
+// An exclusive lock on `path` for this object's lifetime (flock: released if the process dies).
+class FileLock {
+ public:
+  FileLock(const fs::path& path, const Progress& progress, const std::string& what) {
+    fd_ = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0) throw std::runtime_error("cannot open " + path.string() + ": " + std::strerror(errno));
+    if (flock(fd_, LOCK_EX | LOCK_NB) == 0) return;
+    progress("waiting for another rastersim that is building " + what);
+    while (flock(fd_, LOCK_EX) != 0)
+      if (errno != EINTR) throw std::runtime_error("cannot lock " + path.string() + ": " + std::strerror(errno));
+  }
+  ~FileLock() { close(fd_); }
+  FileLock(const FileLock&) = delete;
+  FileLock& operator=(const FileLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+}  // namespace
+
+Geometry geometry_for(const Profile& p) {
+  return Geometry{p.width, p.height, p.subpixel_bits, p.z_bits, p.z_guard_bits, std::max(64, p.memory_latency),
+                  p.setup_interval};
+}
+
+std::string cache_root() {
+  if (const char* dir = std::getenv("RASTERSIM_CACHE_DIR"); dir && *dir) return dir;
+  if (const char* dir = std::getenv("XDG_CACHE_HOME"); dir && *dir) return (fs::path(dir) / "rastersim").string();
+  if (const char* home = std::getenv("HOME"); home && *home) return (fs::path(home) / ".cache" / "rastersim").string();
+  throw std::runtime_error("no cache folder for built modules: set RASTERSIM_CACHE_DIR (or HOME)");
+}
+
+std::string module_library(Kind kind, const Geometry& g, const Progress& progress) {
+  const std::string config = config_entry(g);
+  Digest key;
+  key.add(kind == Kind::Rtl ? "rtl" : "systemc");
+  key.add(config);
+  key.add(RASTERSIM_MODULE_TOOLCHAIN);
+  key.add(abi_stamp());
+  key.add(sources_digest());
+  std::ostringstream name;
+  name << (kind == Kind::Rtl ? "rtl-" : "systemc-") << g.width << "x" << g.height << "-s" << g.subpixel_bits << "-z"
+       << g.z_bits << "-g" << g.z_guard_bits << "-l" << g.max_memory_latency << "-i" << g.setup_interval << "-"
+       << key.hex();
+  const fs::path modules = fs::path(cache_root()) / "modules";
+  const fs::path entry = modules / name.str();
+  const std::string library = kind == Kind::Rtl ? "librastersim_module.so" : "librastersim_systemc.so";
+  if (fs::exists(entry / library)) return (entry / library).string();
+
+  const std::string what = describe(kind, g);
+  std::error_code ec;
+  fs::create_directories(modules, ec);
+  if (ec) throw std::runtime_error("cannot create the module cache " + modules.string() + ": " + ec.message());
+  FileLock lock(modules / (name.str() + ".lock"), progress, what);
+  if (fs::exists(entry / library)) return (entry / library).string();  // built while we waited
+
+  // Only the lock holder builds this entry: a staging folder left by an interrupted build is stale.
+  for (const fs::directory_entry& e : fs::directory_iterator(modules))
+    if (e.path().filename().string().rfind(name.str() + ".staging-", 0) == 0) fs::remove_all(e.path(), ec);
+  const fs::path staging = modules / (name.str() + ".staging-" + std::to_string(getpid()));
+  const fs::path build = staging / "build";
+  fs::create_directories(build);
+  const fs::path log_path = staging / "build.log";
+  std::ofstream log(log_path);
+  progress(what + " is not built in: verilating it once into " + entry.string() +
+           " (once: later runs load it from there)");
+  std::string last_percent;
+  auto on_line = [&](const std::string& line) {
+    // cmake --build's "[ 42%] Building CXX object .../name.cpp.o": one line per step of the percentage.
+    if (line.size() > 6 && line[0] == '[' && line[5] == ']' && line.compare(1, 4, last_percent) != 0) {
+      last_percent = line.substr(1, 4);
+      const size_t slash = line.find_last_of("/ ");
+      progress("compiling " + line.substr(0, 6) + " " + line.substr(slash + 1));
+    }
+  };
+  const std::string jobs = std::to_string(std::max(1u, std::thread::hardware_concurrency()));
+  const std::vector<std::vector<std::string>> steps = {
+      {RASTERSIM_CMAKE_COMMAND, "-S", std::string(kSourceDir) + "/testbench/ondemand", "-B", build.string(),
+       "-DCMAKE_BUILD_TYPE=Release", "-DCMAKE_CXX_COMPILER=" RASTERSIM_MODULE_CXX,
+       std::string("-DRASTERSIM_MODULE_KIND=") + (kind == Kind::Rtl ? "rtl" : "systemc"),
+       "-DRASTERSIM_MODULE_CONFIG=" + config},
+      {RASTERSIM_CMAKE_COMMAND, "--build", build.string(), "-j", jobs}};
+  for (const std::vector<std::string>& step : steps) {
+    if (&step == &steps.front()) progress("verilating (" + config + ")");
+    log << "$";
+    for (const std::string& a : step) log << " " << a;
+    log << "\n";
+    if (run_logged(step, log, on_line) != 0) {
+      log.close();
+      const fs::path kept = modules / (name.str() + ".failed.log");
+      fs::rename(log_path, kept, ec);
+      fs::remove_all(staging, ec);
+      throw std::runtime_error("building " + what + " failed; its log is " + kept.string() + ", ending:\n" +
+                               last_lines(kept, 15));
+    }
+  }
+  log.close();
+  fs::rename(build / library, staging / library);
+  fs::remove_all(build);
+  // One rename publishes the entry whole: a reader sees the library only when it is complete.
+  fs::rename(staging, entry, ec);
+  if (ec) throw std::runtime_error("cannot publish the module " + entry.string() + ": " + ec.message());
+  progress("built " + (entry / library).string());
+  return (entry / library).string();
+}
+
+}  // namespace rastersim::modules
