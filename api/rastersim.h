@@ -21,7 +21,7 @@ enum {
   RASTERSIM_ERROR_INPUT = 2     /* a bad profile or triangle (the message names the problem) */
 };
 
-enum { RASTERSIM_DRAWN = 0, RASTERSIM_DEGENERATE = 1, RASTERSIM_CULLED = 2, RASTERSIM_OFFSCREEN = 3 };
+enum { RASTERSIM_DRAWN = 0, RASTERSIM_DEGENERATE = 1, RASTERSIM_CULLED = 2, RASTERSIM_OFFSCREEN = 3, RASTERSIM_NO_CENTRE = 4 };
 
 typedef struct rastersim_pipeline rastersim_pipeline;
 
@@ -49,7 +49,7 @@ typedef struct {
 
 typedef struct {
   int64_t triangle;
-  int32_t status; /* RASTERSIM_DRAWN, _DEGENERATE, _CULLED or _OFFSCREEN */
+  int32_t status; /* RASTERSIM_DRAWN, _DEGENERATE, _CULLED, _OFFSCREEN or _NO_CENTRE */
   int64_t setup_accept, setup_done, walker_load, walker_end; /* walker_*: -1 unless drawn */
   int64_t fragments, depth_pass;
   int64_t last_write; /* -1 without fragments */

@@ -4,7 +4,7 @@
 // Every function returns 0 (RASTERSIM_OK) or an error code; rastersim_last_error() says why.
 package rastersim_dpi;
   localparam int RASTERSIM_OK = 0;
-  localparam int RASTERSIM_DRAWN = 0, RASTERSIM_DEGENERATE = 1, RASTERSIM_CULLED = 2, RASTERSIM_OFFSCREEN = 3;
+  localparam int RASTERSIM_DRAWN = 0, RASTERSIM_DEGENERATE = 1, RASTERSIM_CULLED = 2, RASTERSIM_OFFSCREEN = 3, RASTERSIM_NO_CENTRE = 4;
 
   import "DPI-C" function string rastersim_version();
   import "DPI-C" function string rastersim_last_error();

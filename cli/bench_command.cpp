@@ -133,6 +133,7 @@ bool same_stats(const FrameStats& a, const FrameStats& b) {
   auto same_unit = [](const UnitCounters& x, const UnitCounters& y) { return x.busy == y.busy && x.stall == y.stall; };
   return a.triangles == b.triangles && a.triangles_culled == b.triangles_culled &&
          a.triangles_degenerate == b.triangles_degenerate && a.triangles_offscreen == b.triangles_offscreen &&
+         a.triangles_no_centre == b.triangles_no_centre &&
          a.triangles_drawn == b.triangles_drawn && a.candidates == b.candidates && a.fragments == b.fragments &&
          a.depth_pass == b.depth_pass && a.depth_fail == b.depth_fail && a.cycles == b.cycles &&
          same_unit(a.setup, b.setup) && same_unit(a.walker, b.walker) && same_unit(a.z_adder, b.z_adder) &&

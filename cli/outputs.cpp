@@ -351,6 +351,7 @@ nlohmann::ordered_json stats_to_json(const FrameStats& s, const Profile& profile
   j["triangles_culled"] = s.triangles_culled;
   j["triangles_degenerate"] = s.triangles_degenerate;
   j["triangles_offscreen"] = s.triangles_offscreen;
+  j["triangles_no_centre"] = s.triangles_no_centre;
   j["triangles_drawn"] = s.triangles_drawn;
   j["candidates"] = s.candidates;
   j["fragments"] = s.fragments;
@@ -370,9 +371,10 @@ void write_text_file(const std::string& path, const std::string& shown_path, con
 
 void print_summary(std::ostream& out, const FrameStats& s) {
   char line[256];
-  std::snprintf(line, sizeof line, "triangles  %lld (drawn %lld, culled %lld, degenerate %lld, offscreen %lld)\n",
+  std::snprintf(line, sizeof line,
+                "triangles  %lld (drawn %lld, culled %lld, degenerate %lld, offscreen %lld, no pixel centre %lld)\n",
                 (long long)s.triangles, (long long)s.triangles_drawn, (long long)s.triangles_culled,
-                (long long)s.triangles_degenerate, (long long)s.triangles_offscreen);
+                (long long)s.triangles_degenerate, (long long)s.triangles_offscreen, (long long)s.triangles_no_centre);
   out << line;
   std::snprintf(line, sizeof line, "fragments  %lld (depth pass %lld, fail %lld) of %lld candidates\n",
                 (long long)s.fragments, (long long)s.depth_pass, (long long)s.depth_fail, (long long)s.candidates);

@@ -70,7 +70,8 @@ void Pipeline::submit(const SnappedTriangle& tri) {
     switch (s.status) {
       case SetupStatus::Degenerate: ++stats_.triangles_degenerate; break;
       case SetupStatus::Culled: ++stats_.triangles_culled; break;
-      default: ++stats_.triangles_offscreen; break;
+      case SetupStatus::Offscreen: ++stats_.triangles_offscreen; break;
+      default: ++stats_.triangles_no_centre; break;
     }
     last_busy_ = std::max(last_busy_, record.setup_done);
   } else {

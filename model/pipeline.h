@@ -53,7 +53,8 @@ struct FrameStats {
   int64_t triangles = 0;
   int64_t triangles_culled = 0;
   int64_t triangles_degenerate = 0;
-  int64_t triangles_offscreen = 0;
+  int64_t triangles_offscreen = 0;  // the box's pixel-centre columns or rows all beyond the screen
+  int64_t triangles_no_centre = 0;  // on the screen, no pixel centre in the box
   int64_t triangles_drawn = 0;
   int64_t candidates = 0;
   int64_t fragments = 0;

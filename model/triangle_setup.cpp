@@ -11,6 +11,7 @@ const char* to_string(SetupStatus status) {
     case SetupStatus::Degenerate: return "degenerate";
     case SetupStatus::Culled: return "culled";
     case SetupStatus::Offscreen: return "offscreen";
+    case SetupStatus::NoCentre: return "no_centre";
   }
   return "?";
 }
@@ -53,7 +54,7 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
     fresh.front_facing = r.front_facing;
     fresh.area2 = r.area2;
     fresh.flat_color = r.flat_color;
-    if (status == SetupStatus::Offscreen) fresh.x0 = r.x0, fresh.y0 = r.y0, fresh.x1 = r.x1, fresh.y1 = r.y1;
+    if (status == SetupStatus::Offscreen || status == SetupStatus::NoCentre) fresh.x0 = r.x0, fresh.y0 = r.y0, fresh.x1 = r.x1, fresh.y1 = r.y1;
     r = fresh;
   };
   r.front_facing = false;
@@ -79,12 +80,17 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
   const int64_t half = int64_t(1) << (S - 1);
   const int64_t x_min = std::min({v[0].x, v[1].x, v[2].x}), x_max = std::max({v[0].x, v[1].x, v[2].x});
   const int64_t y_min = std::min({v[0].y, v[1].y, v[2].y}), y_max = std::max({v[0].y, v[1].y, v[2].y});
-  // Pixel i is a candidate when its centre i 2^S + 2^(S-1) lies in [min, max].
-  r.x0 = int(std::max<int64_t>(0, (x_min - half + (int64_t(1) << S) - 1) >> S));
-  r.x1 = int(std::min<int64_t>(profile_.width - 1, (x_max - half) >> S));
-  r.y0 = int(std::max<int64_t>(0, (y_min - half + (int64_t(1) << S) - 1) >> S));
-  r.y1 = int(std::min<int64_t>(profile_.height - 1, (y_max - half) >> S));
-  if (r.x0 > r.x1 || r.y0 > r.y1) return reject(SetupStatus::Offscreen);
+  // Pixel i is a candidate when its centre i 2^S + 2^(S-1) lies in [min, max]: columns [xa, xb]
+  // and rows [ya, yb] of the whole grid, then clipped to the screen.
+  const int64_t xa = (x_min - half + (int64_t(1) << S) - 1) >> S, xb = (x_max - half) >> S;
+  const int64_t ya = (y_min - half + (int64_t(1) << S) - 1) >> S, yb = (y_max - half) >> S;
+  r.x0 = int(std::max<int64_t>(0, xa));
+  r.x1 = int(std::min<int64_t>(profile_.width - 1, xb));
+  r.y0 = int(std::max<int64_t>(0, ya));
+  r.y1 = int(std::min<int64_t>(profile_.height - 1, yb));
+  if (xb < 0 || yb < 0 || xa > profile_.width - 1 || ya > profile_.height - 1) return reject(SetupStatus::Offscreen);
+  // Otherwise the clipped box is empty only when the whole-grid one is: xa > xb or ya > yb.
+  if (r.x0 > r.x1 || r.y0 > r.y1) return reject(SetupStatus::NoCentre);
   r.status = SetupStatus::Drawn;
 
   // Edge functions at the first candidate's centre.

@@ -33,7 +33,8 @@ enum class SetupStatus : uint8_t {
   Drawn,       // goes on to the walker
   Degenerate,  // zero signed area
   Culled,      // back or front face removed by the profile's cull
-  Offscreen,   // no pixel centre of the screen lies in the bounding box
+  Offscreen,   // the bounding box's pixel-centre columns or rows all lie beyond the screen
+  NoCentre,    // on the screen, but no pixel centre lies in the bounding box (it falls between them)
 };
 const char* to_string(SetupStatus status);
 

@@ -94,10 +94,10 @@ class Pipeline {
   py::dict triangle(int64_t t) const {
     rastersim_triangle_record r;
     check(rastersim_read_triangle(p_, t, &r));
-    static const char* status_names[] = {"drawn", "degenerate", "culled", "offscreen"};
+    static const char* status_names[] = {"drawn", "degenerate", "culled", "offscreen", "no_centre"};
     py::dict d;
     d["triangle"] = r.triangle;
-    d["status"] = status_names[r.status & 3];
+    d["status"] = r.status >= 0 && r.status <= 4 ? status_names[r.status] : "?";
     d["setup_accept"] = r.setup_accept;
     d["setup_done"] = r.setup_done;
     d["walker_load"] = r.walker_load;

@@ -36,7 +36,7 @@ module rastersim_core #(
   input  wire [23:0] cmd_rgb0, cmd_rgb1, cmd_rgb2,
   // Trace: setup decision (FRONT cycle) and activity.
   output wire trace_setup_decided,
-  output wire [1:0] trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen
+  output wire [2:0] trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen, 4 no centre
   output wire trace_setup_busy,
   output wire trace_setup_stall,           // a triangle offered, the unit free, not accepted (credits, slot)
   output wire trace_setup_done,            // a drawn triangle's record is in the setup output register
@@ -95,9 +95,9 @@ module rastersim_core #(
   localparam integer WALKER_LOAD_CYCLES /*verilator public*/ = 1;
   // The encodings of rastersim_widths.vh in one word, from bit 0: RS_DEPTH_NEVER .. RS_DEPTH_ALWAYS
   // (3 bits each), RS_CULL_NONE, _BACK, _FRONT (2), RS_FRONT_CCW, _CW, RS_TRAVERSAL_BBOX, _SPAN,
-  // RS_SHADING_FLAT, _GOURAUD (1), RS_STATUS_DRAWN .. RS_STATUS_OFFSCREEN (2).
-  localparam [43:0] ENCODINGS /*verilator public*/ = {
-      RS_STATUS_OFFSCREEN, RS_STATUS_CULLED, RS_STATUS_DEGENERATE, RS_STATUS_DRAWN,
+  // RS_SHADING_FLAT, _GOURAUD (1), RS_STATUS_DRAWN .. RS_STATUS_NO_CENTRE (3).
+  localparam [50:0] ENCODINGS /*verilator public*/ = {
+      RS_STATUS_NO_CENTRE, RS_STATUS_OFFSCREEN, RS_STATUS_CULLED, RS_STATUS_DEGENERATE, RS_STATUS_DRAWN,
       RS_SHADING_GOURAUD, RS_SHADING_FLAT, RS_TRAVERSAL_SPAN, RS_TRAVERSAL_BBOX, RS_FRONT_CW, RS_FRONT_CCW,
       RS_CULL_FRONT, RS_CULL_BACK, RS_CULL_NONE,
       RS_DEPTH_ALWAYS, RS_DEPTH_GEQUAL, RS_DEPTH_NOTEQUAL, RS_DEPTH_GREATER, RS_DEPTH_LEQUAL, RS_DEPTH_EQUAL,

@@ -33,7 +33,7 @@ module rastersim_top #(
   input  wire [23:0] cmd_rgb0, cmd_rgb1, cmd_rgb2,
   // Trace: setup decision (FRONT cycle) and activity.
   output wire trace_setup_decided,
-  output wire [1:0] trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen
+  output wire [2:0] trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen, 4 no centre
   output wire trace_setup_busy,
   output wire trace_setup_stall,           // a triangle offered, the unit free, every record credit held
   output wire trace_setup_done,            // a drawn triangle's record is in the setup output register

@@ -205,8 +205,8 @@ localparam [1:0] RS_CULL_NONE = 2'd0, RS_CULL_BACK = 2'd1,
 localparam [0:0] RS_FRONT_CCW = 1'b0, RS_FRONT_CW = 1'b1;
 localparam [0:0] RS_TRAVERSAL_BBOX = 1'b0, RS_TRAVERSAL_SPAN = 1'b1;
 localparam [0:0] RS_SHADING_FLAT = 1'b0, RS_SHADING_GOURAUD = 1'b1;
-localparam [1:0] RS_STATUS_DRAWN = 2'd0, RS_STATUS_DEGENERATE = 2'd1,
-                 RS_STATUS_CULLED = 2'd2, RS_STATUS_OFFSCREEN = 2'd3;
+localparam [2:0] RS_STATUS_DRAWN = 3'd0, RS_STATUS_DEGENERATE = 3'd1, RS_STATUS_CULLED = 3'd2,
+                 RS_STATUS_OFFSCREEN = 3'd3, RS_STATUS_NO_CENTRE = 3'd4;
 /* verilator lint_on UNUSEDPARAM */
 
 // The setup record as one packed vector (the model's SetupResult; the C++ side's field table is

@@ -32,9 +32,10 @@ module triangle_setup #(
   input  wire [3*rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] in_y,
   input  wire [3*Z_BITS-1:0] in_z,
   input  wire [3*24-1:0]     in_rgb,
-  // Decision, valid in the FRONT cycle: status 0 drawn, 1 degenerate, 2 culled, 3 offscreen.
+  // Decision, valid in the FRONT cycle: status 0 drawn, 1 degenerate, 2 culled, 3 offscreen,
+  // 4 no centre (RS_STATUS_*).
   output wire        decided,
-  output wire [1:0]  decided_status,
+  output wire [2:0]  decided_status,
   output wire        decided_front_facing,
   output wire signed [rs_area_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] decided_area2,  // s.2S
   output wire busy,   // accept, FRONT, DIVIDE, or OUT cycles
@@ -161,9 +162,13 @@ module triangle_setup #(
   wire signed [BB-1:0] by0 = by0_raw < 0 ? 0 : by0_raw;
   wire signed [BB-1:0] bx1 = bx1_raw > X_LAST_B ? X_LAST_B : bx1_raw;
   wire signed [BB-1:0] by1 = by1_raw > Y_LAST_B ? Y_LAST_B : by1_raw;
-  wire offscreen = bx0 > bx1 || by0 > by1;
+  // Offscreen: the box's centre columns or rows all lie beyond the screen. Otherwise the clipped
+  // box is empty only when the whole-grid one is: no pixel centre in the box.
+  wire offscreen = bx1_raw < 0 || by1_raw < 0 || bx0_raw > X_LAST_B || by0_raw > Y_LAST_B;
+  wire no_centre = bx0 > bx1 || by0 > by1;
 
-  wire [1:0] status = area2 == 0 ? RS_STATUS_DEGENERATE : culled ? RS_STATUS_CULLED : offscreen ? RS_STATUS_OFFSCREEN : RS_STATUS_DRAWN;
+  wire [2:0] status = area2 == 0 ? RS_STATUS_DEGENERATE : culled ? RS_STATUS_CULLED : offscreen ? RS_STATUS_OFFSCREEN
+                    : no_centre ? RS_STATUS_NO_CENTRE : RS_STATUS_DRAWN;
   assign decided_status = status;
   assign decided_front_facing = area2 != 0 && front_facing;
   assign decided_area2 = area2;

@@ -15,7 +15,7 @@ mutants=("$@")
                                      hazard_window_short hazard_address_bit ring_read_slot
                                      serial_floor serial_remainder_correction serial_multiplier_bits
                                      serial_bias_carry setup_slot_counter setup_floor_correction setup_missing_step
-                                     setup_credit_count setup_fifo_empty setup_edge_sign)
+                                     setup_credit_count setup_fifo_empty setup_edge_sign setup_offscreen_rows)
 
 # name -> file, text to replace, replacement (fixed strings); params: extra verilator -G settings;
 # check: mutant_check's mode (--cosim-only: the frames of `rastersim cosim --count 100` must catch it).
@@ -75,7 +75,8 @@ to[serial_multiplier_bits]=': is_edge ? SB'"'"'(2 * COORD_BITS)'  # the edge pro
 from[serial_bias_carry]='+ H'"'"'(subtract || (bit_now && use_start && bias[weight_k]));'
 to[serial_bias_carry]='+ H'"'"'(subtract);'  # the start numerators use the biased edge values
 # The pipelined setup unit and the record FIFO.
-for m in setup_slot_counter setup_floor_correction setup_missing_step setup_credit_count setup_fifo_empty setup_edge_sign; do
+for m in setup_slot_counter setup_floor_correction setup_missing_step setup_credit_count setup_fifo_empty setup_edge_sign \
+         setup_offscreen_rows; do
   params[$m]="-GSETUP_INTERVAL=2"
 done
 file[setup_slot_counter]=triangle_setup.sv
@@ -90,6 +91,9 @@ to[setup_missing_step]='NUMER_STEPS - Z_BITS + 1;'  # one shift-add step of the 
 file[setup_edge_sign]=triangle_setup.sv
 from[setup_edge_sign]='(edge_step_index == EDGE_SKIP ? -e_term : e_term)'
 to[setup_edge_sign]='e_term'  # the edge values' sign bits added instead of subtracted
+file[setup_offscreen_rows]=triangle_setup.sv
+from[setup_offscreen_rows]='wire offscreen = bx1_raw < 0 || by1_raw < 0 ||'
+to[setup_offscreen_rows]='wire offscreen = bx1_raw < 0 ||'  # a box above the screen reported no_centre
 file[setup_credit_count]=rastersim_core.sv
 from[setup_credit_count]='credits_held < setup_fifo_depth_q;'
 to[setup_credit_count]='credits_held <= setup_fifo_depth_q;'  # one record credit too many

@@ -195,6 +195,7 @@ class TraceObserver {
         case SetupStatus::Degenerate: ++stats.triangles_degenerate, r.setup_done = cycle; break;
         case SetupStatus::Culled: ++stats.triangles_culled, r.setup_done = cycle; break;
         case SetupStatus::Offscreen: ++stats.triangles_offscreen, r.setup_done = cycle; break;
+        case SetupStatus::NoCentre: ++stats.triangles_no_centre, r.setup_done = cycle; break;
       }
       undecided_.pop_front();
     }

@@ -67,6 +67,21 @@ class Generator {
     }
     return triangle(xy);
   }
+  // On the screen between two pixel-centre columns (or rows), so that its box holds no centre
+  // (status no_centre; with one subpixel bit such a box has one coordinate and the area is zero).
+  SnappedTriangle between_centres() {
+    if (p_.width < 2 && p_.height < 2) return offscreen();
+    const bool columns = p_.width >= 2 && (p_.height < 2 || uniform(0, 1));
+    const int64_t i = uniform(0, (columns ? p_.width : p_.height) - 2);
+    auto between = [&] { return i * one_ + one_ / 2 + uniform(1, std::max<int64_t>(1, one_ - 1)); };
+    auto across = [&] { return uniform(0, (columns ? p_.height : p_.width) * one_); };
+    int64_t xy[6];
+    for (int k = 0; k < 3; ++k) {
+      xy[2 * k] = columns ? between() : across();
+      xy[2 * k + 1] = columns ? across() : between();
+    }
+    return triangle(xy);
+  }
   // A thin triangle across the whole screen width: long rows.
   SnappedTriangle long_row() {
     const int64_t w = p_.width * one_, y = uniform(0, p_.height * one_);
@@ -195,6 +210,7 @@ std::vector<CosimCase> directed_cases(const Profile& profile, const std::set<std
   add("centre-on-edge ties", [&](int) { return g.centre_ties(); }, 40);
   add("huge", [&](int) { return g.huge(); }, 6);
   add("off-screen", [&](int) { return g.offscreen(); }, 12);
+  add("between centres", [&](int) { return g.between_centres(); }, 8);
   add("degenerate", [&](int) { return g.degenerate(); }, 12);
   add("long rows", [&](int) { return g.long_row(); }, 8);
   // Back-to-back tiny triangles on the same pixel: a long walk whose last fragment is pixel P, then

@@ -11,7 +11,7 @@ constexpr DepthFunc kDepthFuncs[] = {DepthFunc::Never,   DepthFunc::Less,     De
 // The bins in their fixed order; frame_coverage() fills them in the same order.
 enum Fixed : size_t {
   kTieTop, kTieLeft, kTieBottom, kTieRight, kTieVertex,
-  kDegenerate, kOffscreen, kCulled, kDrawnNoFragment, kGuardBandDrawn, kGuardBandLimit,
+  kDegenerate, kOffscreen, kNoCentre, kCulled, kDrawnNoFragment, kGuardBandDrawn, kGuardBandLimit,
   kHazardBBox, kHazardSpan, kMemoryBackPressure, kFifoFullDepth1, kFifoFullDeep, kFifoEmpty,
   kLatencyMin, kLatencyMax,
   kDepthFirst  // then per depth function: write on, write off, pass, fail
@@ -39,7 +39,8 @@ std::vector<CoverageBin> coverage_bins(const Profile& p, const std::set<std::str
   set(kTieRight, "tie_right_edge", "candidate centre exactly on a right edge, inside the others (not drawn)");
   set(kTieVertex, "tie_vertex", "candidate centre exactly on two edges at once (a vertex)");
   set(kDegenerate, "degenerate", "zero-area triangle");
-  set(kOffscreen, "offscreen", "triangle whose box holds no pixel centre of the screen");
+  set(kOffscreen, "offscreen", "triangle whose box's pixel-centre columns or rows all lie beyond the screen");
+  set(kNoCentre, "no_centre", "triangle on the screen whose box holds no pixel centre");
   set(kCulled, "culled", "triangle removed by the cull mode");
   set(kDrawnNoFragment, "drawn_without_fragment", "drawn triangle that covers no pixel centre");
   set(kGuardBandDrawn, "guard_band_drawn", "drawn triangle with a vertex outside the screen");
@@ -61,6 +62,8 @@ std::vector<CoverageBin> coverage_bins(const Profile& p, const std::set<std::str
   }
 
   if (!free("cull") && p.cull == CullMode::None) unreachable(kCulled, "cull is pinned to none");
+  if (p.subpixel_bits == 1)
+    unreachable(kNoCentre, "with one subpixel bit a box between two centres has one coordinate: zero area");
   const bool can_bbox = free("traversal") || p.traversal == Traversal::BBox;
   const bool can_span = free("traversal") || p.traversal == Traversal::Span;
   // A hazard needs the next triangle's first fragment on the last one's pixel within the latency;
@@ -113,6 +116,7 @@ CoverageCounts frame_coverage(const Profile& p, const std::vector<SnappedTriangl
     switch (record.status) {
       case SetupStatus::Degenerate: ++hits[kDegenerate]; continue;
       case SetupStatus::Offscreen: ++hits[kOffscreen]; continue;
+      case SetupStatus::NoCentre: ++hits[kNoCentre]; continue;
       case SetupStatus::Culled: ++hits[kCulled]; continue;
       case SetupStatus::Drawn: break;
     }

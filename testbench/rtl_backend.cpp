@@ -290,6 +290,7 @@ Divergence compare(const RtlResult& model, const RtlResult& rtl) {
       {"triangle_setup", "triangles_culled", m.triangles_culled, r.triangles_culled},
       {"triangle_setup", "triangles_degenerate", m.triangles_degenerate, r.triangles_degenerate},
       {"triangle_setup", "triangles_offscreen", m.triangles_offscreen, r.triangles_offscreen},
+      {"triangle_setup", "triangles_no_centre", m.triangles_no_centre, r.triangles_no_centre},
       {"triangle_setup", "triangles_drawn", m.triangles_drawn, r.triangles_drawn},
       {"scanline_walker", "candidates", m.candidates, r.candidates},
       {"zbuffer", "fragments", m.fragments, r.fragments},

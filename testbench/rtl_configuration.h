@@ -51,8 +51,9 @@ constexpr uint64_t enum_encodings() {
   put(int(FrontFace::CCW), 1), put(int(FrontFace::CW), 1);
   put(int(Traversal::BBox), 1), put(int(Traversal::Span), 1);
   put(int(Shading::Flat), 1), put(int(Shading::Gouraud), 1);
-  for (SetupStatus s : {SetupStatus::Drawn, SetupStatus::Degenerate, SetupStatus::Culled, SetupStatus::Offscreen})
-    put(int(s), 2);
+  for (SetupStatus s : {SetupStatus::Drawn, SetupStatus::Degenerate, SetupStatus::Culled, SetupStatus::Offscreen,
+                       SetupStatus::NoCentre})
+    put(int(s), 3);
   return word;
 }
 

@@ -98,6 +98,14 @@ PixelRect bounding_box(const SnappedTriangle& tri, const Profile& profile) {
   return r;
 }
 
+bool beyond_outer_centres(const SnappedTriangle& tri, const Profile& profile) {
+  const int S = profile.subpixel_bits;
+  const i128 x_min = std::min({tri.v[0].x, tri.v[1].x, tri.v[2].x}), x_max = std::max({tri.v[0].x, tri.v[1].x, tri.v[2].x});
+  const i128 y_min = std::min({tri.v[0].y, tri.v[1].y, tri.v[2].y}), y_max = std::max({tri.v[0].y, tri.v[1].y, tri.v[2].y});
+  return x_max < centre(S, 0, 0).x || x_min > centre(S, profile.width - 1, 0).x || y_max < centre(S, 0, 0).y ||
+         y_min > centre(S, 0, profile.height - 1).y;
+}
+
 std::vector<int> covered_in_row(const SnappedTriangle& tri, const Profile& profile, int j) {
   std::vector<int> out;
   for (int i = 0; i < profile.width; ++i)

@@ -44,6 +44,10 @@ struct PixelRect {
   int64_t area() const { return empty() ? 0 : (int64_t(x1) - x0 + 1) * (int64_t(y1) - y0 + 1); }
 };
 PixelRect bounding_box(const SnappedTriangle& tri, const Profile& profile);
+// True when the vertices' extent lies beyond the screen's outermost pixel centres: left of column
+// 0's, right of the last column's, above row 0's or below the last row's (an empty box is then
+// "offscreen"; an empty box otherwise is "no_centre", docs/arithmetic.md).
+bool beyond_outer_centres(const SnappedTriangle& tri, const Profile& profile);
 
 // The covered pixels of row j (left to right), testing every pixel of the row.
 std::vector<int> covered_in_row(const SnappedTriangle& tri, const Profile& profile, int j);

@@ -135,6 +135,27 @@ void check_timeline(const std::string& block) {
   }
 }
 
+// The two reasons an empty box is rejected (arithmetic.md, "Bounding box"), at 64 x 48, S = 4.
+TEST(Docs, ArithmeticEmptyBoxExample) {
+  Profile p;
+  p.width = 64, p.height = 48, p.subpixel_bits = 4;
+  const TriangleSetup setup(p);
+  SnappedTriangle t;
+  int checked = 0;
+  for (const auto& [key, value] : doc_block("arithmetic.md", "example-empty-box")) {
+    if (key == "triangle") {
+      std::istringstream in(value);
+      char comma;
+      for (SnappedVertex& v : t.v) in >> v.x >> comma >> v.y;
+      ASSERT_TRUE(in) << value;
+    } else if (key == "status") {
+      EXPECT_EQ(to_string(setup.run(t).status), value) << "triangle before line 'status = " << value << "'";
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 3);
+}
+
 TEST(Docs, CycleModelWorkedExample) { check_timeline("example-timeline"); }
 TEST(Docs, CycleModelPipelinedSetupWorkedExample) { check_timeline("example-timeline-pipelined"); }
 

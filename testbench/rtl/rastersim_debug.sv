@@ -9,7 +9,7 @@ module rastersim_debug (
   input wire       cmd_valid,
   input wire       cmd_ready,
   input wire       trace_setup_decided,
-  input wire [1:0] trace_setup_status,
+  input wire [2:0] trace_setup_status,
   input wire       trace_walker_load,
   input wire       trace_frag_valid,
   input wire       trace_frag_ready
@@ -44,7 +44,7 @@ module rastersim_debug (
       if (accept) accepted_q <= accepted_q + 32'd1;
       if (trace_setup_decided) begin
         decided_q <= decided_q + 32'd1;
-        if (trace_setup_status == 2'd0) begin
+        if (trace_setup_status == 3'd0) begin
           drawn_index[drawn_q[5:0]] <= decided_q;
           drawn_q <= drawn_q + 32'd1;
         end

@@ -126,7 +126,7 @@ Layouts make_layouts(const Profile& p) {
     l.commands.add("rgb" + std::to_string(k), 24, false, "vertex " + std::to_string(k) + " colour 0xRRGGBB");
 
   const char* const none = "; -1 (all ones): none";
-  l.triangles.add("status", 2, false, "setup decision: 0 drawn, 1 degenerate, 2 culled, 3 offscreen");
+  l.triangles.add("status", 3, false, "setup decision: 0 drawn, 1 degenerate, 2 culled, 3 offscreen, 4 no centre");
   l.triangles.add("setup_accept", 32, true, "cycle the setup unit accepted the command");
   l.triangles.add("setup_done", 32, true, "cycle its record became valid (drawn) or its decision cycle (rejected)");
   l.triangles.add("walker_load", 32, true, std::string("cycle the walker took the record") + none);
@@ -156,7 +156,8 @@ Layouts make_layouts(const Profile& p) {
       {"triangles_drawn", "setup decisions: drawn"},
       {"triangles_degenerate", "setup decisions: zero area"},
       {"triangles_culled", "setup decisions: culled"},
-      {"triangles_offscreen", "setup decisions: no pixel centre in the clipped bounding box"},
+      {"triangles_offscreen", "setup decisions: the box's pixel-centre columns or rows all beyond the screen"},
+      {"triangles_no_centre", "setup decisions: on the screen, no pixel centre in the box"},
       {"candidates", "cycles with trace_walker_candidate"},
       {"fragments", "depth-test results"},
       {"depth_pass", "results with pass"},
@@ -243,7 +244,7 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   const FrameStats& st = model.stats;
   const std::vector<std::vector<int64_t>> frame = {
       {cycle_field(st.cycles), st.triangles, st.triangles_drawn, st.triangles_degenerate, st.triangles_culled,
-       st.triangles_offscreen, st.candidates, st.fragments, st.depth_pass, st.depth_fail, st.setup.busy,
+       st.triangles_offscreen, st.triangles_no_centre, st.candidates, st.fragments, st.depth_pass, st.depth_fail, st.setup.busy,
        st.setup.stall, st.walker.busy, st.walker.stall, st.zbuffer.busy, st.zbuffer.stall}};
 
   PackageFacts facts;

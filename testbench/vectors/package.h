@@ -15,7 +15,7 @@
 namespace rastersim::vectors {
 
 // Bumped when a file, a layout or the testbench's contract changes incompatibly (docs/vectors.md).
-constexpr int kFormatVersion = 2;  // 2: check_manifest.py added
+constexpr int kFormatVersion = 3;  // 2: check_manifest.py added; 3: status no_centre, its counter
 
 // Where the triangles came from, recorded in the manifest and in the regeneration command.
 struct Source {

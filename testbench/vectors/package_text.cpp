@@ -136,7 +136,7 @@ std::string testbench_text(const PackageFacts& k) {
     << "  reg [ADDR_BITS-1:0] readback_addr = 0;\n"
     << "  wire frame_ready, cmd_ready;\n"
     << "  wire trace_setup_decided, trace_setup_busy, trace_setup_stall, trace_setup_done;\n"
-    << "  wire [1:0] trace_setup_status;\n"
+    << "  wire [2:0] trace_setup_status;\n"
     << "  wire trace_walker_load, trace_walker_busy, trace_walker_candidate, trace_walker_last;\n"
     << "  wire trace_frag_valid, trace_frag_ready;\n"
     << "  wire [X_BITS-1:0] trace_frag_x;\n"
@@ -211,7 +211,7 @@ std::string testbench_text(const PackageFacts& k) {
     << "  integer cycle, clear_wait, next_command, next_decided, n_done, n_loaded, in_setup, in_walker, last_busy, i, t, d;\n"
     << "  integer drawn_tri [0:DRAWN_SLOTS-1];  // triangle index of each drawn triangle, in order\n"
     << "  integer seen_setup_count, seen_fragment_count, seen_result_count;\n"
-    << "  integer n_triangles, n_drawn, n_degenerate, n_culled, n_offscreen, n_candidates, n_pass, n_fail;\n"
+    << "  integer n_triangles, n_drawn, n_degenerate, n_culled, n_offscreen, n_no_centre, n_candidates, n_pass, n_fail;\n"
     << "  integer setup_busy, setup_stall, walker_busy, walker_stall, zbuffer_busy, zbuffer_stall;\n"
     << "  integer passed, failed, skipped, shown, hidden, events_failed;\n"
     << "  reg submitting, busy, finished, word_ok;\n"
@@ -293,7 +293,8 @@ std::string testbench_text(const PackageFacts& k) {
     << "    next_command = 0; next_decided = 0; n_done = 0; n_loaded = 0;\n"
     << "    in_setup = -1; in_walker = -1; last_busy = -1; clear_wait = 0; cycle = -1;\n"
     << "    seen_setup_count = 0; seen_fragment_count = 0; seen_result_count = 0;\n"
-    << "    n_triangles = 0; n_drawn = 0; n_degenerate = 0; n_culled = 0; n_offscreen = 0; n_candidates = 0;\n"
+    << "    n_triangles = 0; n_drawn = 0; n_degenerate = 0; n_culled = 0; n_offscreen = 0; n_no_centre = 0;\n"
+    << "    n_candidates = 0;\n"
     << "    n_pass = 0; n_fail = 0; setup_busy = 0; setup_stall = 0; walker_busy = 0; walker_stall = 0;\n"
     << "    zbuffer_busy = 0; zbuffer_stall = 0;\n"
     << "    passed = 0; failed = 0; skipped = 0; shown = 0; hidden = 0; events_failed = 0;\n"
@@ -331,10 +332,11 @@ std::string testbench_text(const PackageFacts& k) {
     << "        if (trace_setup_decided && next_decided < next_command) begin\n"
     << "          seen_status[next_decided] = trace_setup_status;\n"
     << "          case (trace_setup_status)\n"
-    << "            2'd0: begin if (n_drawn < DRAWN_SLOTS) drawn_tri[n_drawn] = next_decided; n_drawn = n_drawn + 1; end\n"
-    << "            2'd1: begin n_degenerate = n_degenerate + 1; seen_done[next_decided] = cycle; end\n"
-    << "            2'd2: begin n_culled = n_culled + 1; seen_done[next_decided] = cycle; end\n"
-    << "            default: begin n_offscreen = n_offscreen + 1; seen_done[next_decided] = cycle; end\n"
+    << "            3'd0: begin if (n_drawn < DRAWN_SLOTS) drawn_tri[n_drawn] = next_decided; n_drawn = n_drawn + 1; end\n"
+    << "            3'd1: begin n_degenerate = n_degenerate + 1; seen_done[next_decided] = cycle; end\n"
+    << "            3'd2: begin n_culled = n_culled + 1; seen_done[next_decided] = cycle; end\n"
+    << "            3'd3: begin n_offscreen = n_offscreen + 1; seen_done[next_decided] = cycle; end\n"
+    << "            default: begin n_no_centre = n_no_centre + 1; seen_done[next_decided] = cycle; end\n"
     << "          endcase\n"
     << "          next_decided = next_decided + 1;\n"
     << "        end\n"
@@ -511,6 +513,7 @@ std::string testbench_text(const PackageFacts& k) {
     const std::map<std::string, std::string> frame = {
         {"cycles", "last_busy + 1"},         {"triangles", "n_triangles"},       {"triangles_drawn", "n_drawn"},
         {"triangles_degenerate", "n_degenerate"}, {"triangles_culled", "n_culled"}, {"triangles_offscreen", "n_offscreen"},
+        {"triangles_no_centre", "n_no_centre"},
         {"candidates", "n_candidates"},      {"fragments", "n_pass + n_fail"},   {"depth_pass", "n_pass"},
         {"depth_fail", "n_fail"},            {"setup_busy", "setup_busy"},       {"setup_stall", "setup_stall"},
         {"walker_busy", "walker_busy"},      {"walker_stall", "walker_stall"},   {"zbuffer_busy", "zbuffer_busy"},

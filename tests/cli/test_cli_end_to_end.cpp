@@ -80,7 +80,8 @@ TEST(CliRender, SmallTriWritesConsistentOutputs) {
   EXPECT_EQ(stats.at("triangles").get<int64_t>(), 4);
   EXPECT_EQ(stats.at("triangles_degenerate").get<int64_t>(), 1);
   EXPECT_EQ(stats.at("triangles_drawn").get<int64_t>() + stats.at("triangles_culled").get<int64_t>() +
-                stats.at("triangles_degenerate").get<int64_t>() + stats.at("triangles_offscreen").get<int64_t>(),
+                stats.at("triangles_degenerate").get<int64_t>() + stats.at("triangles_offscreen").get<int64_t>() +
+                stats.at("triangles_no_centre").get<int64_t>(),
             4);
   EXPECT_GE(stats.at("candidates").get<int64_t>(), stats.at("fragments").get<int64_t>());
   EXPECT_GT(stats.at("cycles").get<int64_t>(), 0);

@@ -78,21 +78,23 @@ TEST(CosimCoverage, RejectedTrianglesAndTheGuardBandAreCounted) {
   std::swap(back.v[1], back.v[2]);
   const SnappedTriangle flat = triangle(p, 0.5, 0.5, 2.5, 2.5, 4.5, 4.5);            // collinear
   const SnappedTriangle beside = kept(triangle(p, -6, 1, -2, 1, -6, 5));             // left of the screen
+  const SnappedTriangle between = kept(triangle(p, 1.625, 0.5, 1.875, 0.5, 1.75, 3));  // between centres 1.5, 2.5
   // Between the lines y - x = 0.44 and 0.5: its box holds centres, it covers none (y - x integral).
   const SnappedTriangle sliver = kept(triangle(p, 0.25, 0.75, 3.25, 3.75, 0.375, 0.75));
   const SnappedTriangle corner = kept(triangle(p, -8, -8, 16, -8, -8, 16));          // the guard band's limits
   const SnappedTriangle across = kept(triangle(p, -2, 0.5, 6, 0.5, -2, 6));          // a vertex off screen
-  const std::vector<SnappedTriangle> frame = {drawn, back, flat, beside, sliver, corner, across};
+  const std::vector<SnappedTriangle> frame = {drawn, back, flat, beside, sliver, corner, across, between};
   const RtlResult model = run_model(p, frame);
   const SetupStatus expected[] = {SetupStatus::Drawn,     SetupStatus::Culled, SetupStatus::Degenerate,
                                   SetupStatus::Offscreen, SetupStatus::Drawn,  SetupStatus::Drawn,
-                                  SetupStatus::Drawn};
+                                  SetupStatus::Drawn,     SetupStatus::NoCentre};
   for (size_t t = 0; t < frame.size(); ++t) ASSERT_EQ(model.triangles[t].status, expected[t]) << t;
   ASSERT_EQ(model.triangles[4].fragments, 0);
   const std::map<std::string, int64_t> h = hits_of(p, frame);
   EXPECT_EQ(h.at("culled"), 1);
   EXPECT_EQ(h.at("degenerate"), 1);
   EXPECT_EQ(h.at("offscreen"), 1);
+  EXPECT_EQ(h.at("no_centre"), 1);
   EXPECT_EQ(h.at("drawn_without_fragment"), 1);
   EXPECT_EQ(h.at("guard_band_limit"), 1);
   EXPECT_EQ(h.at("guard_band_drawn"), 2);
