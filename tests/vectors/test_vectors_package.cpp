@@ -80,7 +80,7 @@ Profile small_profile() {
 
 Package small_package(const PackageOptions& options = {}) {
   const Profile p = small_profile();
-  return build_package(p, suite_triangles("depth", p), Source{"suite", "depth", 0, 0}, options);
+  return build_package(p, suite_triangles("depth", p), Source{"suite", "depth", 0, 0, ""}, options);
 }
 
 const PackageFile& file_named(const Package& package, const std::string& path) {
