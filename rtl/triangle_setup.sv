@@ -599,8 +599,17 @@ module triangle_setup #(
     always @* begin
       e_term = {EDGE_BITS{1'b0}};
       edge_step_index = 32'd0;
+      eo = {EOP{1'b0}};
+      e_acc = {EDGE_BITS{1'b0}};
+      e_dx = {EDGE_BITS{1'b0}};
+      e_ndy = {EDGE_BITS{1'b0}};
+      e_rx = {RLB{1'b0}};
+      e_ry = {RLB{1'b0}};
       for (j = 0; j < EDGE_STAGES; j = j + 1) begin
-        for (n = 0; n < 3; n = n + 1) begin
+        // An empty slot's values are never used: don't-care, so that a simulator skips its steps
+        // and synthesis adds no multiplexer.
+        edge_ops_next[j*EDGES +: EDGES] = {EDGES{1'bx}};
+        if (edge_valid_q[j]) for (n = 0; n < 3; n = n + 1) begin
           eo = edge_ops_q[j*EDGES + n*EOP +: EOP];
           e_acc = eo[E_ACC +: EDGE_BITS];
           e_ry = eo[E_RY +: RLB];
@@ -675,7 +684,13 @@ module triangle_setup #(
       e1 = {EDGE_BITS{1'b0}};
       e2 = {EDGE_BITS{1'b0}};
       term = {NB{1'b0}};
+      nv = {VALS{1'b0}};
+      na = {ACCS{1'b0}};
+      nw = {WTS{1'b0}};
       for (j = 0; j < NUMER_STAGES; j = j + 1) begin
+        numer_vals_next[j*VALS +: VALS] = {VALS{1'bx}};  // an empty slot: don't-care (as the edge slots)
+        numer_acc_next[j*ACCS +: ACCS] = {ACCS{1'bx}};
+        if (numer_valid_q[j]) begin
         nv = numer_vals_q[j*VALS +: VALS];
         na = numer_acc_q[j*ACCS +: ACCS];
         nw = numer_wts_q[j*WTS +: WTS];
@@ -696,6 +711,7 @@ module triangle_setup #(
         end
         numer_vals_next[j*VALS +: VALS] = nv;
         numer_acc_next[j*ACCS +: ACCS] = na;
+        end
       end
     end
     always @(posedge clk) begin
@@ -758,7 +774,17 @@ module triangle_setup #(
       span_shifted = {(EDGE_STEP_X_BITS+1){1'b0}};
       span_difference = {(EDGE_STEP_X_BITS+1){1'b0}};
       step_index = 32'd0;
+      plane_divisor = {AREA_BITS{1'b0}};
+      plane_partial = {AREA_BITS{1'b0}};
+      plane_bits = {DIVIDER_BITS{1'b0}};
+      span_step_x = {EDGE_STEP_X_BITS{1'b0}};
+      span_divisor = {EDGE_STEP_X_BITS{1'b0}};
+      span_partial = {EDGE_STEP_X_BITS{1'b0}};
+      span_bits = {EDGE_BITS{1'b0}};
       for (j = 0; j < DIVIDE_STAGES; j = j + 1) begin
+        divide_planes_next[j*PLANES +: PLANES] = {PLANES{1'bx}};  // an empty slot: don't-care (as the edge slots)
+        divide_spans_next[j*SPANS +: SPANS] = {SPANS{1'bx}};
+        if (divide_valid_q[j]) begin
         plane_divisor = divide_pay_q[j*PAY + P_AREA +: AREA_BITS];
         for (n = 0; n < 12; n = n + 1) begin
           plane_partial = divide_planes_q[j*PLANES + n*PLANE_W + DIVIDER_BITS +: AREA_BITS];
@@ -791,6 +817,7 @@ module triangle_setup #(
           end
           divide_spans_next[j*SPANS + n*SPAN_W +: SPAN_W] =
               {divide_spans_q[j*SPANS + n*SPAN_W + SPAN_W - 1], span_partial, span_bits};
+        end
         end
       end
     end
