@@ -115,7 +115,7 @@ std::string testbench_text(const PackageFacts& k) {
     << "  localparam integer CYCLES = " << k.cycles << ";  // the frame's expected cycles (frame.hex)\n"
     << "  localparam integer CYCLE_BOUND = " << 4 * k.cycles + 1000 << ";  // the frame is abandoned after 4 CYCLES + 1000\n"
     << "  localparam integer CLEAR_BOUND = WORDS + 16;  // cycles the memory clear after reset may take\n"
-    << "  localparam integer SHOWN = 20;  // mismatches printed\n"
+    << "  localparam integer SHOWN = 20;  // mismatches printed unless +max_shown=N says otherwise\n"
     << "  localparam integer TRIANGLE_SLOTS = " << at_least_one(k.triangles) << ";  // array sizes, at least 1\n"
     << "  localparam integer DRAWN_SLOTS = " << at_least_one(k.drawn) << ";\n"
     << "  localparam integer FRAGMENT_SLOTS = " << at_least_one(k.fragments) << ";\n"
@@ -213,11 +213,12 @@ std::string testbench_text(const PackageFacts& k) {
     << "  integer seen_setup_count, seen_fragment_count, seen_result_count;\n"
     << "  integer n_triangles, n_drawn, n_degenerate, n_culled, n_offscreen, n_no_centre, n_candidates, n_pass, n_fail;\n"
     << "  integer setup_busy, setup_stall, walker_busy, walker_stall, zbuffer_busy, zbuffer_stall;\n"
-    << "  integer passed, failed, skipped, shown, hidden, events_failed;\n"
+    << "  integer passed, failed, skipped, shown, hidden, events_failed, max_shown;\n"
+    << "  reg [8*256:1] dump_file;\n"
     << "  reg submitting, busy, finished, word_ok;\n"
     << "  reg [8*64:1] context_text;\n"
     << "\n"
-    << "  // One field of one vector: prints the first SHOWN mismatches.\n"
+    << "  // One field of one vector: prints the first max_shown mismatches.\n"
     << "  task check_field;\n"
     << "    input [8*16:1] file;\n"
     << "    input integer index;\n"
@@ -227,7 +228,7 @@ std::string testbench_text(const PackageFacts& k) {
     << "    begin\n"
     << "      if (expected !== actual) begin\n"
     << "        word_ok = 1'b0;\n"
-    << "        if (shown < SHOWN) begin\n"
+    << "        if (shown < max_shown) begin\n"
     << "          if (shown == 0) $write(\"first mismatch: \"); else $write(\"mismatch: \");\n"
     << "          $display(\"%0s vector %0d field %0s: expected 0x%0h, actual 0x%0h%0s\", file, index, field, expected,\n"
     << "                   actual, context_text);\n"
@@ -251,7 +252,7 @@ std::string testbench_text(const PackageFacts& k) {
     << "    input [8*96:1] what;\n"
     << "    begin\n"
     << "      events_failed = events_failed + 1;\n"
-    << "      if (shown < SHOWN) begin\n"
+    << "      if (shown < max_shown) begin\n"
     << "        if (shown == 0) $write(\"first mismatch: \"); else $write(\"mismatch: \");\n"
     << "        $display(\"%0s: %0s\", file, what);\n"
     << "        shown = shown + 1;\n"
@@ -273,7 +274,17 @@ std::string testbench_text(const PackageFacts& k) {
     << "    end\n"
     << "  endtask\n"
     << "\n"
-    << "  initial begin\n";
+    << "  initial begin\n"
+    << "    // Plusargs: +max_shown=N mismatches printed (default SHOWN), +dump=FILE a VCD of the run.\n"
+    << "    max_shown = SHOWN;\n"
+    << "    if ($value$plusargs(\"max_shown=%d\", max_shown) && max_shown < 0) begin\n"
+    << "      $display(\"error: +max_shown=%0d: the number of mismatches to print is 0 or more\", max_shown);\n"
+    << "      $finish;\n"
+    << "    end\n"
+    << "    if ($value$plusargs(\"dump=%s\", dump_file)) begin\n"
+    << "      $dumpfile(dump_file);\n"
+    << "      $dumpvars(0, " << kTestbenchTop << ");\n"
+    << "    end\n";
   const std::pair<const char*, const char*> loads[] = {
       {"commands.hex", "commands"}, {"triangles.hex", "triangles"}, {"setup.hex", "setups"},
       {"fragments.hex", "fragments"}, {"depth.hex", "depth"}, {"color.hex", "color"}, {"frame.hex", "frame"}};
@@ -550,7 +561,9 @@ std::string script_preamble(const PackageFacts& k, const std::string& tool) {
          "# or a file differs from manifest.json.\n"
          "# RTL_DIR: the pipeline's Verilog (default " + k.rtl_folder + "/ beside this script); every .sv and .v\n"
          "# file in it is compiled, with it as the include folder. SIM_FLAGS: more compiler arguments\n"
-         "# (e.g. -DRS_NO_SETUP_RECORD for a port without the setup record wires).\n"
+         "# (e.g. -DRS_NO_SETUP_RECORD for a port without the setup record wires). Arguments go to the\n"
+         "# testbench: +max_shown=N (mismatches printed, default 20), +dump=FILE (a VCD of the run; FILE\n"
+         "# relative to this folder, where the testbench runs).\n"
          "set -euo pipefail\n"
          "here=\"$(cd \"$(dirname \"$0\")\" && pwd)\"\n"
          "rtl=\"${RTL_DIR:-" + rtl_default + "}\"\n"
@@ -589,20 +602,20 @@ std::string icarus_script(const PackageFacts& k) {
          "    \"$here/" + kTestbenchFile + "\" \"${sources[@]}\"; then\n"
          "  exit 2\n"
          "fi\n" +
-         script_run("vvp -n \"$work/tb.vvp\"");
+         script_run("vvp -n \"$work/tb.vvp\" \"$@\"");
 }
 
 std::string verilator_script(const PackageFacts& k) {
   return script_preamble(k, "Verilator 5 (verilator --binary)") +
          "# shellcheck disable=SC2086  # SIM_FLAGS is a list of words\n"
-         "if ! verilator --binary -j \"$(nproc)\" -Wno-fatal -Wno-lint -Wno-style --top-module " + kTestbenchTop +
+         "if ! verilator --binary --trace -j \"$(nproc)\" -Wno-fatal -Wno-lint -Wno-style --top-module " + kTestbenchTop +
          " \\\n"
          "    -I\"$rtl\" ${SIM_FLAGS:-} --Mdir \"$work/obj\" -o tb \"$here/" + kTestbenchFile + "\" \"${sources[@]}\" \\\n"
          "    > \"$work/build.log\" 2>&1; then\n"
          "  cat \"$work/build.log\" >&2\n"
          "  exit 2\n"
          "fi\n" +
-         script_run("\"$work/obj/tb\" | grep -v '^- .*: Verilog \\$finish$'",
+         script_run("\"$work/obj/tb\" \"$@\" | grep -v '^- .*: Verilog \\$finish$'",
                     "# Verilator reports $finish on a line of its own; the summary stays the last line.\n"
                     "# shellcheck disable=SC2016  # a literal $finish\n");
 }
@@ -621,8 +634,10 @@ std::string readme_text(const PackageFacts& k) {
     << "## Running it\n\n"
     << "```sh\n./run_icarus.sh      # Icarus Verilog 11 or later\n./run_verilator.sh   # Verilator 5, verilator --binary\n```\n\n"
     << "Each compiles the RTL in `" << k.rtl_folder << "/` (or `$RTL_DIR`) with `" << kTestbenchFile
-    << "`, runs it in this folder, prints every\nmismatch (the first " << "20 in full) and ends with `N passed, M failed`; "
-    << "the exit code is 0 only for `0 failed`.\n"
+    << "`, runs it in this folder, prints the first\n20 mismatches and ends with `N passed, M failed`; "
+    << "the exit code is 0 only for `0 failed`.\nArguments go to the testbench as plusargs: `+max_shown=N` prints the first N "
+    << "mismatches instead of 20\n(0: only the summary), `+dump=FILE` writes a VCD of the whole run (FILE relative to this "
+    << "folder):\n`./run_icarus.sh +max_shown=100 +dump=run.vcd`.\n"
     << (k.rtl_included ? "The RTL in rtl/ is the one the vectors were generated against (CRC-32s in manifest.json).\n"
                        : "The RTL is not copied: `" + k.rtl_folder + "` is the rastersim repository's rtl/ folder.\n")
     << "\n## Putting a port in place of rastersim_top\n\n"

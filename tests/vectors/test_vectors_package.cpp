@@ -356,6 +356,44 @@ TEST_F(IcarusPackage, ChangingAnySingleExpectedWordFailsNamingItsVectorAndField)
   EXPECT_GT(mutations, 60);
 }
 
+// The testbench's plusargs: +max_shown=N prints N mismatches (the rest counted), +dump=FILE a VCD.
+TEST_F(IcarusPackage, PlusargsSetTheMismatchesShownAndDumpAWaveform) {
+  std::vector<std::string> depth = split_lines(file_named(package_, "depth.hex").content);
+  ASSERT_GT(depth.size(), 30u);
+  for (const size_t index : {size_t(3), size_t(17), size_t(29)}) {  // the lowest bit of three words
+    char& digit = depth[index].back();
+    digit = "0123456789abcdef"[std::stoi(std::string(1, digit), nullptr, 16) ^ 1];
+  }
+  write_text(dir_ / "depth.hex", join_lines(depth));
+  auto mismatch_lines = [](const std::string& output) {
+    size_t n = 0;
+    for (const std::string& line : split_lines(output)) n += line.rfind("first mismatch: ", 0) == 0 || line.rfind("mismatch: ", 0) == 0;
+    return n;
+  };
+  const CommandResult all = run_command("cd '" + dir_.string() + "' && " + RASTERSIM_VVP + " -n tb.vvp");
+  EXPECT_EQ(mismatch_lines(all.output), 3u) << all.output;
+  const CommandResult one = run_command("cd '" + dir_.string() + "' && " + RASTERSIM_VVP + " -n tb.vvp +max_shown=1");
+  EXPECT_EQ(mismatch_lines(one.output), 1u) << one.output;
+  EXPECT_NE(one.output.find("(2 more mismatches not shown)"), std::string::npos) << one.output;
+  EXPECT_EQ(last_line(one.output), std::to_string(vector_count() - 3) + " passed, 3 failed") << one.output;
+  const CommandResult none = run_command("cd '" + dir_.string() + "' && " + RASTERSIM_VVP + " -n tb.vvp +max_shown=0");
+  EXPECT_EQ(mismatch_lines(none.output), 0u) << none.output;
+  EXPECT_NE(none.output.find("(3 more mismatches not shown)"), std::string::npos) << none.output;
+  const CommandResult negative =
+      run_command("cd '" + dir_.string() + "' && " + RASTERSIM_VVP + " -n tb.vvp +max_shown=-1");
+  EXPECT_NE(negative.output.find("error: +max_shown=-1"), std::string::npos) << negative.output;
+  EXPECT_EQ(negative.output.find(" passed, "), std::string::npos) << negative.output;
+
+  const CommandResult dumped =
+      run_command("cd '" + dir_.string() + "' && " + RASTERSIM_VVP + " -n tb.vvp +max_shown=0 +dump=run.vcd");
+  EXPECT_EQ(last_line(dumped.output), std::to_string(vector_count() - 3) + " passed, 3 failed") << dumped.output;
+  std::ifstream vcd(dir_ / "run.vcd");
+  const std::string text((std::istreambuf_iterator<char>(vcd)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("$enddefinitions"), std::string::npos);
+  EXPECT_NE(text.find("trace_setup_status"), std::string::npos);
+  EXPECT_NE(text.find("\n#"), std::string::npos) << "no time step in the VCD";
+}
+
 // A changed commands.hex (two commands swapped, the expected outputs left alone) once passed the
 // manifest unnoticed: the run scripts now check every file's CRC-32 first and refuse (exit 2). The
 // testbench itself, run without the check, reports the mismatches.

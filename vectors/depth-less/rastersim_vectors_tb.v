@@ -35,7 +35,7 @@ module rastersim_vectors_tb;
   localparam integer CYCLES = 327;  // the frame's expected cycles (frame.hex)
   localparam integer CYCLE_BOUND = 2308;  // the frame is abandoned after 4 CYCLES + 1000
   localparam integer CLEAR_BOUND = WORDS + 16;  // cycles the memory clear after reset may take
-  localparam integer SHOWN = 20;  // mismatches printed
+  localparam integer SHOWN = 20;  // mismatches printed unless +max_shown=N says otherwise
   localparam integer TRIANGLE_SLOTS = 11;  // array sizes, at least 1
   localparam integer DRAWN_SLOTS = 11;
   localparam integer FRAGMENT_SLOTS = 284;
@@ -133,11 +133,12 @@ module rastersim_vectors_tb;
   integer seen_setup_count, seen_fragment_count, seen_result_count;
   integer n_triangles, n_drawn, n_degenerate, n_culled, n_offscreen, n_no_centre, n_candidates, n_pass, n_fail;
   integer setup_busy, setup_stall, walker_busy, walker_stall, zbuffer_busy, zbuffer_stall;
-  integer passed, failed, skipped, shown, hidden, events_failed;
+  integer passed, failed, skipped, shown, hidden, events_failed, max_shown;
+  reg [8*256:1] dump_file;
   reg submitting, busy, finished, word_ok;
   reg [8*64:1] context_text;
 
-  // One field of one vector: prints the first SHOWN mismatches.
+  // One field of one vector: prints the first max_shown mismatches.
   task check_field;
     input [8*16:1] file;
     input integer index;
@@ -147,7 +148,7 @@ module rastersim_vectors_tb;
     begin
       if (expected !== actual) begin
         word_ok = 1'b0;
-        if (shown < SHOWN) begin
+        if (shown < max_shown) begin
           if (shown == 0) $write("first mismatch: "); else $write("mismatch: ");
           $display("%0s vector %0d field %0s: expected 0x%0h, actual 0x%0h%0s", file, index, field, expected,
                    actual, context_text);
@@ -171,7 +172,7 @@ module rastersim_vectors_tb;
     input [8*96:1] what;
     begin
       events_failed = events_failed + 1;
-      if (shown < SHOWN) begin
+      if (shown < max_shown) begin
         if (shown == 0) $write("first mismatch: "); else $write("mismatch: ");
         $display("%0s: %0s", file, what);
         shown = shown + 1;
@@ -204,6 +205,16 @@ module rastersim_vectors_tb;
   endtask
 
   initial begin
+    // Plusargs: +max_shown=N mismatches printed (default SHOWN), +dump=FILE a VCD of the run.
+    max_shown = SHOWN;
+    if ($value$plusargs("max_shown=%d", max_shown) && max_shown < 0) begin
+      $display("error: +max_shown=%0d: the number of mismatches to print is 0 or more", max_shown);
+      $finish;
+    end
+    if ($value$plusargs("dump=%s", dump_file)) begin
+      $dumpfile(dump_file);
+      $dumpvars(0, rastersim_vectors_tb);
+    end
     $readmemh("commands.hex", commands, 0, 10);
     $readmemh("triangles.hex", triangles, 0, 10);
     $readmemh("setup.hex", setups, 0, 10);

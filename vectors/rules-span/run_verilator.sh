@@ -4,7 +4,9 @@
 # or a file differs from manifest.json.
 # RTL_DIR: the pipeline's Verilog (default ../../rtl/ beside this script); every .sv and .v
 # file in it is compiled, with it as the include folder. SIM_FLAGS: more compiler arguments
-# (e.g. -DRS_NO_SETUP_RECORD for a port without the setup record wires).
+# (e.g. -DRS_NO_SETUP_RECORD for a port without the setup record wires). Arguments go to the
+# testbench: +max_shown=N (mismatches printed, default 20), +dump=FILE (a VCD of the run; FILE
+# relative to this folder, where the testbench runs).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 rtl="${RTL_DIR:-$here/../../rtl}"
@@ -24,7 +26,7 @@ fi
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 # shellcheck disable=SC2086  # SIM_FLAGS is a list of words
-if ! verilator --binary -j "$(nproc)" -Wno-fatal -Wno-lint -Wno-style --top-module rastersim_vectors_tb \
+if ! verilator --binary --trace -j "$(nproc)" -Wno-fatal -Wno-lint -Wno-style --top-module rastersim_vectors_tb \
     -I"$rtl" ${SIM_FLAGS:-} --Mdir "$work/obj" -o tb "$here/rastersim_vectors_tb.v" "${sources[@]}" \
     > "$work/build.log" 2>&1; then
   cat "$work/build.log" >&2
@@ -33,6 +35,6 @@ fi
 cd "$here"
 # Verilator reports $finish on a line of its own; the summary stays the last line.
 # shellcheck disable=SC2016  # a literal $finish
-"$work/obj/tb" | grep -v '^- .*: Verilog \$finish$' | tee "$work/log"
+"$work/obj/tb" "$@" | grep -v '^- .*: Verilog \$finish$' | tee "$work/log"
 if grep -Eq '^[0-9]+ passed, 0 failed' "$work/log"; then exit 0; fi
 exit 1

@@ -4,7 +4,9 @@
 # or a file differs from manifest.json.
 # RTL_DIR: the pipeline's Verilog (default ../../rtl/ beside this script); every .sv and .v
 # file in it is compiled, with it as the include folder. SIM_FLAGS: more compiler arguments
-# (e.g. -DRS_NO_SETUP_RECORD for a port without the setup record wires).
+# (e.g. -DRS_NO_SETUP_RECORD for a port without the setup record wires). Arguments go to the
+# testbench: +max_shown=N (mismatches printed, default 20), +dump=FILE (a VCD of the run; FILE
+# relative to this folder, where the testbench runs).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 rtl="${RTL_DIR:-$here/../../rtl}"
@@ -29,6 +31,6 @@ if ! iverilog -g2012 -I "$rtl" -s rastersim_vectors_tb ${SIM_FLAGS:-} -o "$work/
   exit 2
 fi
 cd "$here"
-vvp -n "$work/tb.vvp" | tee "$work/log"
+vvp -n "$work/tb.vvp" "$@" | tee "$work/log"
 if grep -Eq '^[0-9]+ passed, 0 failed' "$work/log"; then exit 0; fi
 exit 1
