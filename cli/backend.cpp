@@ -61,7 +61,9 @@ Backend select_backend(const std::string& name) {
 
 #ifdef RASTERSIM_HAVE_RTL
 void ensure_rtl_configuration(const Profile& profile) {
-  if (validate(profile).empty() && !rtl::has_configuration(profile))
+  // No build runs a memory stall pattern (rastersim_top's memory has none): configuration_error
+  // says so without a module being built first.
+  if (validate(profile).empty() && profile.memory_stall_percent == 0 && !rtl::has_configuration(profile))
     rtl::load_module(module_for(modules::Kind::Rtl, profile));
 }
 #endif

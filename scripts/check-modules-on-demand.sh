@@ -3,7 +3,8 @@
 # backends"): a 48x48 profile through --backend rtl, cosim and systemc, verilated on demand into a
 # cache of this test's own. Checks that two runs started together build the module once and agree;
 # the outputs equal the model's; a later run loads the module without building (and prints how long
-# it took); a bad cache folder or an invalid profile is an error (exit 2) that writes nothing.
+# it took); a bad cache folder, an invalid profile or a stall pattern (no RTL build runs one) is an
+# error (exit 2) that writes and builds nothing.
 # Usage: check-modules-on-demand.sh BUILD_DIR
 set -euo pipefail
 exe="$(cd "$1" && pwd)/rastersim"
@@ -72,4 +73,10 @@ RASTERSIM_CACHE_DIR="$work/unused" "$exe" render --backend rtl --width 40 --heig
   > /dev/null 2> invalid.err || status=$?
 [ $status -eq 2 ] || fail "an invalid profile: exit $status, not 2"
 [ ! -e "$work/unused" ] || fail "an invalid profile started a build"
+status=0
+RASTERSIM_CACHE_DIR="$work/unused" "$exe" render --backend rtl --width 40 --height 40 --memory-stall-percent 20 \
+  --scene default > /dev/null 2> stall.err || status=$?
+[ $status -eq 2 ] || fail "a stall pattern on the RTL backend: exit $status, not 2"
+grep -q 'memory_stall_percent 20' stall.err || fail "the stall refusal does not name it: $(cat stall.err)"
+[ ! -e "$work/unused" ] || fail "a profile no build can run (a stall pattern) started a build"
 echo "check-modules-on-demand: passed"

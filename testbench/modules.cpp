@@ -196,8 +196,7 @@ std::string module_library(Kind kind, const Geometry& g, const Progress& progres
   fs::create_directories(build);
   const fs::path log_path = staging / "build.log";
   std::ofstream log(log_path);
-  progress(what + " is not built in: verilating it once into " + entry.string() +
-           " (once: later runs load it from there)");
+  progress(what + " is not built in: verilating it into " + entry.string() + "; later runs load it from there");
   std::string last_percent;
   auto on_line = [&](const std::string& line) {
     // cmake --build's "[ 42%] Building CXX object .../name.cpp.o": one line per step of the percentage.

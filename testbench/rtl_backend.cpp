@@ -92,6 +92,11 @@ int built_max_memory_latency(const Profile& p) {
 std::string configuration_error(const Profile& p) {
   const std::vector<std::string> errors = validate(p);
   if (!errors.empty()) return "invalid profile: " + errors.front();
+  // Whatever the geometry: no build of rastersim_top has a memory stall pattern.
+  if (p.memory_stall_percent > 0)
+    return "memory_stall_percent " + std::to_string(p.memory_stall_percent) +
+           ": rastersim_top's on-chip memory has no back-pressure; the SystemC backend (--backend systemc) "
+           "puts a memory with a stall pattern behind the core";
   const BuiltConfiguration* c = find_configuration(p);
   if (!c) {
     std::string message = "no RTL is built for width " + std::to_string(p.width) + ", height " +
@@ -107,10 +112,6 @@ std::string configuration_error(const Profile& p) {
   if (p.memory_latency > c->max_memory_latency)
     return "memory_latency " + std::to_string(p.memory_latency) + " exceeds the built RTL's maximum " +
            std::to_string(c->max_memory_latency) + " (configuration " + c->name + ")";
-  if (p.memory_stall_percent > 0)
-    return "memory_stall_percent " + std::to_string(p.memory_stall_percent) +
-           ": rastersim_top's on-chip memory has no back-pressure; the SystemC backend (--backend systemc) "
-           "puts a memory with a stall pattern behind the core";
   return "";
 }
 

@@ -1,5 +1,5 @@
-// The RTL backend: the synthesizable pipeline (rtl/) verilated at build time for a few profiles,
-// driven cycle by cycle, with its transactions observed at the unit boundaries and turned into the
+// The RTL backend: the synthesizable pipeline (rtl/) verilated at build time for a few profiles
+// (and, through load_module, for any other profile on demand: modules.h), driven cycle by cycle, with its transactions observed at the unit boundaries and turned into the
 // same records the model produces (model/pipeline.h), so that the two compare field by field.
 #pragma once
 
