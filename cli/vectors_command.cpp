@@ -37,6 +37,10 @@ CLI::App* add_vectors_command(CLI::App& app, VectorsOptions& o) {
   cmd->add_option("--rtl-path", o.rtl_path, "do not copy the RTL into the package; its scripts use this folder, "
                                             "relative to the package (the checked-in vectors/ use ../../rtl)")
       ->type_name("REL");
+  cmd->add_option("--testbench-path", o.testbench_path,
+                  "do not copy the testbench (rastersim_vectors_tb.v) into the package; its scripts use the one in "
+                  "this folder, relative to the package (the checked-in vectors/ use ../../testbench/vectors)")
+      ->type_name("REL");
   cmd->add_flag("--force", o.force, "replace the package already in --out");
   add_camera_options(*cmd, o.camera);
   add_profile_options(*cmd, o.profile);
@@ -55,6 +59,9 @@ int run_vectors(const VectorsOptions& o) {
   if (random && (o.random < 1 || o.random > 1000000)) throw InputError("--random must be in 1..1000000");
   if (!o.rtl_path.empty() && std::filesystem::path(o.rtl_path).is_absolute())
     throw InputError("--rtl-path must be relative to the package folder (a package must not depend on where it was made)");
+  if (!o.testbench_path.empty() && std::filesystem::path(o.testbench_path).is_absolute())
+    throw InputError("--testbench-path must be relative to the package folder (a package must not depend on where it was "
+                     "made)");
 #ifndef RASTERSIM_HAVE_VECTORS
   (void)profile;
   throw InputError("vectors needs the RTL library, which is not built in this binary (install Verilator and rebuild)");
@@ -98,6 +105,7 @@ int run_vectors(const VectorsOptions& o) {
   }
   vectors::PackageOptions options;
   options.rtl_path = o.rtl_path;
+  options.testbench_path = o.testbench_path;
   const vectors::Package package = vectors::build_package(profile, triangles, source, options);
   vectors::write_package(package, o.out, o.force, remember_temporary_folder);
   std::cout << "wrote " << o.out << ": " << package.triangles << " triangles (" << package.drawn << " drawn), "

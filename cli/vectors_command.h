@@ -20,6 +20,7 @@ struct VectorsOptions {
   int64_t random = 0;         // triangles, with --random
   uint64_t seed = 1;          // with --random
   std::string rtl_path;       // refer to the RTL at this relative path instead of copying it
+  std::string testbench_path; // refer to the testbench's folder at this relative path instead of copying it
   bool force = false;         // replace an existing package
   CLI::Option* random_option = nullptr;
   CLI::Option* seed_option = nullptr;

@@ -23,7 +23,7 @@ while read -r name args; do
   case "$name" in '' | '#'*) continue ;; esac
   names+=("$name")
   # shellcheck disable=SC2086  # args is a list of words
-  if ! "$exe" vectors $args --rtl-path ../../rtl --out "$out/$name" --force > /dev/null; then
+  if ! "$exe" vectors $args --rtl-path ../../rtl --testbench-path ../../testbench/vectors --out "$out/$name" --force > /dev/null; then
     echo "vectors-regenerate: rastersim vectors failed for $name" >&2
     status=1
     continue

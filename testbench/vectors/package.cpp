@@ -259,8 +259,11 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   facts.source_text = source_text(source);
   facts.rtl_included = options.rtl_path.empty();
   facts.rtl_folder = facts.rtl_included ? "rtl" : options.rtl_path;
+  facts.testbench_folder = options.testbench_path.empty() ? "." : options.testbench_path;
   facts.regenerate_command = "rastersim vectors " + source.arguments() + profile_flags(profile) +
-                             (facts.rtl_included ? "" : " --rtl-path " + options.rtl_path) + " --out DIR";
+                             (facts.rtl_included ? "" : " --rtl-path " + options.rtl_path) +
+                             (options.testbench_path.empty() ? "" : " --testbench-path " + options.testbench_path) +
+                             " --out DIR";
 
   Package package;
   package.triangles = facts.triangles;
@@ -271,11 +274,14 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   const std::vector<std::vector<int64_t>>* contents[] = {&commands, &triangles, &setups, &fragments,
                                                          &depth,    &color,     &frame};
   package.files.push_back({"README.md", readme_text(facts), false});
-  package.files.push_back({kTestbenchFile, testbench_text(facts), false});
+  package.files.push_back({kParamsFile, params_text(facts), false});
   package.files.push_back({"run_icarus.sh", icarus_script(facts), true});
   package.files.push_back({"run_verilator.sh", verilator_script(facts), true});
-  for (const EmbeddedFile& f : embedded_package_tools())
-    package.files.push_back({f.name, std::string(reinterpret_cast<const char*>(f.data), f.size), true});
+  for (const EmbeddedFile& f : embedded_package_tools()) {
+    const bool testbench = f.name == kTestbenchFile;
+    if (testbench && !options.testbench_path.empty()) continue;
+    package.files.push_back({f.name, std::string(reinterpret_cast<const char*>(f.data), f.size), !testbench});
+  }
   for (size_t k = 0; k < files.size(); ++k) package.files.push_back({files[k].path, lines(*files[k].layout, *contents[k]), false});
   if (facts.rtl_included)
     for (const EmbeddedFile& f : embedded_rtl())
@@ -342,7 +348,9 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
     } else if (f.path == "README.md") {
       e["meaning"] = "what the package is, how to run it, every file's bit layout";
     } else if (f.path == kTestbenchFile) {
-      e["meaning"] = std::string("self-checking testbench, top module ") + kTestbenchTop;
+      e["meaning"] = std::string("self-checking testbench, top module ") + kTestbenchTop + " (the same for every package)";
+    } else if (f.path == kParamsFile) {
+      e["meaning"] = std::string("the testbench's parameters: profile, widths, vector counts, every field's place");
     } else if (f.path == "run_icarus.sh" || f.path == "run_verilator.sh") {
       e["meaning"] = f.path == "run_icarus.sh" ? "runs the testbench with Icarus Verilog"
                                                : "runs the testbench with verilator --binary";

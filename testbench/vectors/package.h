@@ -15,7 +15,8 @@
 namespace rastersim::vectors {
 
 // Bumped when a file, a layout or the testbench's contract changes incompatibly (docs/vectors.md).
-constexpr int kFormatVersion = 3;  // 2: check_manifest.py added; 3: status no_centre, its counter
+constexpr int kFormatVersion = 4;  // 2: check_manifest.py added; 3: status no_centre, its counter;
+                                   // 4: one testbench with a parameter file, +functional
 
 // Where the triangles came from, recorded in the manifest and in the regeneration command.
 struct Source {
@@ -32,6 +33,10 @@ struct PackageOptions {
   // Empty: the RTL sources are copied into rtl/ (self-contained). Otherwise the package refers to
   // the RTL folder at this path relative to the package (vectors/ in this repository: ../../rtl).
   std::string rtl_path;
+  // Empty: the testbench (rastersim_vectors_tb.v, the same for every package) is copied into the
+  // package. Otherwise its scripts use the one in this folder relative to the package (vectors/ in
+  // this repository: ../../testbench/vectors, so that the repository keeps one copy).
+  std::string testbench_path;
 };
 
 // The word layouts of the vector files for one profile.

@@ -1,5 +1,6 @@
-// The text files of a test-vector package, written from what package.cpp computed: the Verilog
-// testbench, the two run scripts and the README. Internal to testbench/vectors/.
+// The text files of a test-vector package, written from what package.cpp computed: the
+// testbench's parameter file, the two run scripts and the README. (The testbench itself,
+// rastersim_vectors_tb.v, is a file of this folder, the same for every package.) Internal to testbench/vectors/.
 #pragma once
 
 #include <cstdint>
@@ -21,13 +22,16 @@ struct PackageFacts {
   std::string regenerate_command; // rastersim vectors ... --out DIR
   std::string rtl_folder;         // the RTL folder relative to the package: "rtl" or options.rtl_path
   bool rtl_included = true;
+  std::string testbench_folder;   // the testbench's folder relative to the package: "." when copied
 };
 
 // File names inside the package.
 inline const char* const kTestbenchFile = "rastersim_vectors_tb.v";
 inline const char* const kTestbenchTop = "rastersim_vectors_tb";
+inline const char* const kParamsFile = "rastersim_vectors_params.vh";
 
-std::string testbench_text(const PackageFacts& facts);
+// The parameter file the testbench includes: profile, widths, vector counts, field places.
+std::string params_text(const PackageFacts& facts);
 std::string icarus_script(const PackageFacts& facts);
 std::string verilator_script(const PackageFacts& facts);
 std::string readme_text(const PackageFacts& facts);

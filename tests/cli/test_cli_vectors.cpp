@@ -38,7 +38,8 @@ TEST(CliVectors, WritesAPackageFromEachSource) {
     EXPECT_EQ(manifest["format"], "rastersim-vectors");
     EXPECT_EQ(manifest["profile"]["width"], 32);
     for (const char* file : {"commands.hex", "triangles.hex", "setup.hex", "fragments.hex", "depth.hex", "color.hex",
-                             "frame.hex", "rastersim_vectors_tb.v", "run_icarus.sh", "run_verilator.sh", "README.md",
+                             "frame.hex", "rastersim_vectors_tb.v", "rastersim_vectors_params.vh", "run_icarus.sh", "run_verilator.sh",
+                             "README.md",
                              "rtl/rastersim_top.sv"})
       EXPECT_TRUE(fs::exists(dir.path(out) / file)) << out << "/" << file;
     EXPECT_TRUE((fs::status(dir.path(out) / "run_icarus.sh").permissions() & fs::perms::owner_exec) != fs::perms::none);
@@ -149,6 +150,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadVectors{"RandomZero", {"--random", "0"}, "--random must be in 1..1000000"},
         BadVectors{"RandomNotANumber", {"--random", "many"}, "--random"},
         BadVectors{"AbsoluteRtlPath", {"--suite", "depth", "--rtl-path", "/work/rtl"}, "--rtl-path must be relative"},
+        BadVectors{"AbsoluteTestbenchPath", {"--suite", "depth", "--testbench-path", "/work/tb"},
+                   "--testbench-path must be relative"},
         BadVectors{"BadTriLine", {"bad.tri"}, "bad.tri:2: y2 'nine' is not a number"},
         BadVectors{"MissingInput", {"missing.tri"}, "missing.tri: cannot open"},
         BadVectors{"UnknownScene", {"--scene", "teapot"}, "unknown scene 'teapot'"},

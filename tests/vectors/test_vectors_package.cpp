@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -298,12 +299,31 @@ class IcarusPackage : public ::testing::Test {
   void SetUp() override {
     dir_ = dir_holder_.path() / "pkg";
     write_package(package_, dir_.string(), false);
-    const std::string compile = std::string(RASTERSIM_IVERILOG) + " -g2012 -I rtl -s rastersim_vectors_tb -o tb.vvp " +
+    const std::string compile = std::string(RASTERSIM_IVERILOG) + " -g2012 -I . -I rtl -s rastersim_vectors_tb -o tb.vvp " +
                                 "rastersim_vectors_tb.v rtl/*.sv";
     const CommandResult built = run_command("cd '" + dir_.string() + "' && " + compile);
     ASSERT_EQ(built.status, 0) << built.output;
   }
-  CommandResult replay() const { return run_command("cd '" + dir_.string() + "' && " + RASTERSIM_VVP + " -n tb.vvp"); }
+  CommandResult replay(const std::string& plusargs = "", const std::string& vvp = "tb.vvp") const {
+    return run_command("cd '" + dir_.string() + "' && " + RASTERSIM_VVP + " -n " + vvp + " " + plusargs);
+  }
+  // The testbench compiled against a copy of the package's RTL with rastersim_core.sv rewritten by
+  // `edit` (a port with another micro-architecture, or a bug); returns the .vvp's name.
+  std::string build_variant(const std::string& name, const std::function<std::string(std::string)>& edit) const {
+    const fs::path rtl = dir_ / ("rtl_" + name);
+    fs::create_directory(rtl);
+    for (const fs::directory_entry& e : fs::directory_iterator(dir_ / "rtl")) fs::copy(e.path(), rtl / e.path().filename());
+    const std::string core = read_text(rtl / "rastersim_core.sv");
+    const std::string edited = edit(core);
+    EXPECT_NE(edited, core) << name << ": the edit changed nothing";
+    write_text(rtl / "rastersim_core.sv", edited);
+    const std::string vvp = name + ".vvp";
+    const CommandResult built = run_command("cd '" + dir_.string() + "' && " + RASTERSIM_IVERILOG + " -g2012 -I . -I " +
+                                            rtl.filename().string() + " -s rastersim_vectors_tb -o " + vvp +
+                                            " rastersim_vectors_tb.v " + rtl.filename().string() + "/*.sv");
+    EXPECT_EQ(built.status, 0) << built.output;
+    return vvp;
+  }
   int64_t vector_count() const {
     int64_t n = 0;
     for (const char* file : {"triangles.hex", "setup.hex", "fragments.hex", "depth.hex", "color.hex", "frame.hex"})
@@ -392,6 +412,108 @@ TEST_F(IcarusPackage, PlusargsSetTheMismatchesShownAndDumpAWaveform) {
   EXPECT_NE(text.find("$enddefinitions"), std::string::npos);
   EXPECT_NE(text.find("trace_setup_status"), std::string::npos);
   EXPECT_NE(text.find("\n#"), std::string::npos) << "no time step in the VCD";
+}
+
+// Mismatches come earliest first, by the cycle where they show, whatever file they are in.
+TEST_F(IcarusPackage, MismatchesArePrintedEarliestFirst) {
+  const Layouts layouts = make_layouts(small_profile());
+  auto flip_lowest_bit = [&](const std::string& path, size_t index, const WordLayout& layout, const std::string& field) {
+    std::vector<std::string> lines = split_lines(file_named(package_, path).content);
+    const int digit = (layout.word_bits() - 1 - layout.field(field).lsb) / 4;
+    char& c = lines.at(index)[size_t(digit)];
+    c = "0123456789abcdef"[std::stoi(std::string(1, c), nullptr, 16) ^ 1];
+    write_text(dir_ / path, join_lines(lines));
+  };
+  const size_t last_fragment = split_lines(file_named(package_, "fragments.hex").content).size() - 1;
+  flip_lowest_bit("depth.hex", 0, layouts.depth, "depth");                          // after the frame
+  flip_lowest_bit("fragments.hex", last_fragment, layouts.fragments, "z");           // the last fragment
+  flip_lowest_bit("triangles.hex", 1, layouts.triangles, "walker_end");              // early
+  const CommandResult r = replay();
+  const std::vector<std::string> lines = split_lines(r.output);
+  std::vector<std::string> shown;
+  for (const std::string& line : lines)
+    if (line.rfind("first mismatch: ", 0) == 0 || line.rfind("mismatch: ", 0) == 0) shown.push_back(line);
+  ASSERT_EQ(shown.size(), 3u) << r.output;
+  EXPECT_EQ(shown[0].rfind("first mismatch: triangles.hex vector 1 field walker_end:", 0), 0u) << r.output;
+  EXPECT_EQ(shown[1].rfind("mismatch: fragments.hex vector " + std::to_string(last_fragment) + " field z:", 0), 0u)
+      << r.output;
+  EXPECT_EQ(shown[2].rfind("mismatch: depth.hex vector 0 field depth:", 0), 0u) << r.output;
+  EXPECT_EQ(last_line(r.output), std::to_string(vector_count() - 3) + " passed, 3 failed") << r.output;
+}
+
+// A port with one more pipeline stage between the setup unit and the record FIFO: every record
+// a cycle later. Cycle-exact mode fails it; functional mode passes it and reports its cycles.
+TEST_F(IcarusPackage, AnExtraSetupStageFailsCycleExactAndPassesFunctional) {
+  const std::string vvp = build_variant("extra_stage", [](std::string core) {
+    const std::string declared = "  wire setup_valid;\n  wire [RECORD_BITS-1:0] setup_record;\n";
+    const std::string outputs = "    .out_valid(setup_valid),\n    .out_record(setup_record));\n";
+    const size_t d = core.find(declared), o = core.find(outputs);
+    if (d == std::string::npos || o == std::string::npos) return core;
+    core.replace(o, outputs.size(),
+                 "    .out_valid(setup_valid_stage),\n    .out_record(setup_record_stage));\n"
+                 "  reg setup_valid_late;\n  reg [RECORD_BITS-1:0] setup_record_late;\n"
+                 "  always @(posedge clk) begin\n    setup_valid_late <= !rst && setup_valid_stage;\n"
+                 "    setup_record_late <= setup_record_stage;\n  end\n"
+                 "  assign setup_valid = setup_valid_late;\n  assign setup_record = setup_record_late;\n");
+    core.insert(d + declared.size(), "  wire setup_valid_stage;\n  wire [RECORD_BITS-1:0] setup_record_stage;\n");
+    return core;
+  });
+  const CommandResult exact = replay("", vvp);
+  EXPECT_TRUE(std::regex_match(last_line(exact.output), std::regex("[0-9]+ passed, [1-9][0-9]* failed"))) << exact.output;
+  EXPECT_NE(exact.output.find("first mismatch: "), std::string::npos) << exact.output;
+  const CommandResult functional = replay("+functional", vvp);
+  EXPECT_EQ(last_line(functional.output), std::to_string(vector_count()) + " passed, 0 failed") << functional.output;
+  const std::smatch cycles = [&] {
+    std::smatch m;
+    std::regex_search(functional.output, m, std::regex("the frame took ([0-9]+) cycles \\(the model: ([0-9]+)\\)"));
+    return m;
+  }();
+  ASSERT_EQ(cycles.size(), 3u) << functional.output;
+  EXPECT_GT(std::stoll(cycles[1].str()), std::stoll(cycles[2].str())) << functional.output;
+}
+
+// A port that drops one fragment (the 41st the walker offers): functional mode reports one
+// mismatch, naming the triangle and the pixel; what follows from it is counted apart.
+TEST_F(IcarusPackage, ADroppedFragmentIsOneFunctionalMismatchNamingTriangleAndPixel) {
+  const std::string vvp = build_variant("dropped_fragment", [](std::string core) {
+    const std::string walker_port = "    .frag_valid(frag_valid), .frag_ready(frag_ready), .frag_x(frag_x), .frag_y(frag_y),\n"
+                                    "    .busy(trace_walker_busy)";
+    const std::string zbuffer_port = "    .frag_valid(frag_valid), .frag_ready(frag_ready), .frag_x(frag_x), .frag_y(frag_y),\n"
+                                     "    .frag_z(frag_z)";
+    const std::string trace = "  assign trace_frag_valid = frag_valid;\n";
+    const size_t w = core.find(walker_port);
+    if (w == std::string::npos) return core;
+    core.replace(w, walker_port.size(),
+                 "    .frag_valid(frag_valid), .frag_ready(frag_ready_walker), .frag_x(frag_x), .frag_y(frag_y),\n"
+                 "    .busy(trace_walker_busy)");
+    const size_t z = core.find(zbuffer_port);
+    const size_t t = core.find(trace);
+    if (z == std::string::npos || t == std::string::npos) return std::string();
+    core.replace(z, zbuffer_port.size(),
+                 "    .frag_valid(frag_kept), .frag_ready(frag_ready), .frag_x(frag_x), .frag_y(frag_y),\n"
+                 "    .frag_z(frag_z)");
+    core.replace(core.find(trace), trace.size(), "  assign trace_frag_valid = frag_kept;\n");
+    const std::string anchor = "  scanline_walker #(";
+    core.insert(core.find(anchor),
+                "  reg [31:0] offered_q;\n  wire dropped = frag_valid && offered_q == 32'd40;\n"
+                "  wire frag_kept = frag_valid && !dropped;\n  wire frag_ready_walker = frag_ready || dropped;\n"
+                "  always @(posedge clk)\n    if (rst) offered_q <= 32'd0;\n"
+                "    else if (frag_valid && frag_ready_walker) offered_q <= offered_q + 32'd1;\n");
+    return core;
+  });
+  // The 41st expected fragment, read from the package's words (not from the testbench).
+  const Layouts layouts = make_layouts(small_profile());
+  const std::vector<int64_t> dropped = layouts.fragments.parse(split_lines(file_named(package_, "fragments.hex").content).at(40));
+  const std::string named = "fragments.hex vector 40: missing: triangle " + std::to_string(dropped[0]) + ", pixel (" +
+                            std::to_string(dropped[2]) + ", " + std::to_string(dropped[3]) + ")";
+  const CommandResult functional = replay("+functional", vvp);
+  EXPECT_NE(functional.output.find("first mismatch: " + named), std::string::npos) << named << "\n" << functional.output;
+  EXPECT_EQ(functional.output.find("\nmismatch: "), std::string::npos) << functional.output;
+  EXPECT_TRUE(std::regex_match(last_line(functional.output), std::regex("[0-9]+ passed, 1 failed"))) << functional.output;
+  EXPECT_TRUE(std::regex_search(functional.output, std::regex("; [1-9][0-9]* vectors differ only as a consequence")))
+      << functional.output;
+  const CommandResult exact = replay("", vvp);
+  EXPECT_NE(exact.output.find(named), std::string::npos) << exact.output;
 }
 
 // A changed commands.hex (two commands swapped, the expected outputs left alone) once passed the

@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
-# Runs this package's testbench (rastersim_vectors_tb.v) with Icarus Verilog 11 or later.
+# Runs this package's testbench (rastersim_vectors_tb.v with rastersim_vectors_params.vh) with Icarus Verilog 11 or later.
 # Exit 0 when the last line is "N passed, 0 failed"; 1 when a vector failed; 2 when it cannot build
 # or a file differs from manifest.json.
 # RTL_DIR: the pipeline's Verilog (default ../../rtl/ beside this script); every .sv and .v
 # file in it is compiled, with it as the include folder. SIM_FLAGS: more compiler arguments
 # (e.g. -DRS_NO_SETUP_RECORD for a port without the setup record wires). Arguments go to the
-# testbench: +max_shown=N (mismatches printed, default 20), +dump=FILE (a VCD of the run; FILE
-# relative to this folder, where the testbench runs).
+# testbench: +functional (compare functionally, not cycle for cycle), +max_shown=N (mismatches
+# printed, default 20), +dump=FILE (a VCD of the run; FILE relative to this folder, where the
+# testbench runs), +cycle_bound=N.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
+testbench="$here/../../testbench/vectors/rastersim_vectors_tb.v"
 rtl="${RTL_DIR:-$here/../../rtl}"
 shopt -s nullglob
 sources=("$rtl"/*.sv "$rtl"/*.v)
@@ -26,8 +28,8 @@ fi
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 # shellcheck disable=SC2086  # SIM_FLAGS is a list of words
-if ! iverilog -g2012 -I "$rtl" -s rastersim_vectors_tb ${SIM_FLAGS:-} -o "$work/tb.vvp" \
-    "$here/rastersim_vectors_tb.v" "${sources[@]}"; then
+if ! iverilog -g2012 -I "$here" -I "$rtl" -s rastersim_vectors_tb ${SIM_FLAGS:-} -o "$work/tb.vvp" \
+    "$testbench" "${sources[@]}"; then
   exit 2
 fi
 cd "$here"

@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
-# Runs this package's testbench (rastersim_vectors_tb.v) with Verilator 5 (verilator --binary).
+# Runs this package's testbench (rastersim_vectors_tb.v with rastersim_vectors_params.vh) with Verilator 5 (verilator --binary).
 # Exit 0 when the last line is "N passed, 0 failed"; 1 when a vector failed; 2 when it cannot build
 # or a file differs from manifest.json.
 # RTL_DIR: the pipeline's Verilog (default ../../rtl/ beside this script); every .sv and .v
 # file in it is compiled, with it as the include folder. SIM_FLAGS: more compiler arguments
 # (e.g. -DRS_NO_SETUP_RECORD for a port without the setup record wires). Arguments go to the
-# testbench: +max_shown=N (mismatches printed, default 20), +dump=FILE (a VCD of the run; FILE
-# relative to this folder, where the testbench runs).
+# testbench: +functional (compare functionally, not cycle for cycle), +max_shown=N (mismatches
+# printed, default 20), +dump=FILE (a VCD of the run; FILE relative to this folder, where the
+# testbench runs), +cycle_bound=N.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
+testbench="$here/../../testbench/vectors/rastersim_vectors_tb.v"
 rtl="${RTL_DIR:-$here/../../rtl}"
 shopt -s nullglob
 sources=("$rtl"/*.sv "$rtl"/*.v)
@@ -27,7 +29,7 @@ work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 # shellcheck disable=SC2086  # SIM_FLAGS is a list of words
 if ! verilator --binary --trace -j "$(nproc)" -Wno-fatal -Wno-lint -Wno-style --top-module rastersim_vectors_tb \
-    -I"$rtl" ${SIM_FLAGS:-} --Mdir "$work/obj" -o tb "$here/rastersim_vectors_tb.v" "${sources[@]}" \
+    -I"$here" -I"$rtl" ${SIM_FLAGS:-} --Mdir "$work/obj" -o tb "$testbench" "${sources[@]}" \
     > "$work/build.log" 2>&1; then
   cat "$work/build.log" >&2
   exit 2
