@@ -41,6 +41,10 @@ CLI::App* add_vectors_command(CLI::App& app, VectorsOptions& o) {
                   "do not copy the testbench (rastersim_vectors_tb.v) into the package; its scripts use the one in "
                   "this folder, relative to the package (the checked-in vectors/ use ../../testbench/vectors)")
       ->type_name("REL");
+  cmd->add_option("--top", o.top, "the module the package tests: rastersim_top (on-chip memory) or rastersim_core "
+                                  "(a memory model with the profile's latency and back-pressure on its memory port); "
+                                  "default rastersim_core when --memory-stall-percent is above 0, else rastersim_top")
+      ->type_name("MODULE");
   cmd->add_flag("--force", o.force, "replace the package already in --out");
   add_camera_options(*cmd, o.camera);
   add_profile_options(*cmd, o.profile);
@@ -59,6 +63,11 @@ int run_vectors(const VectorsOptions& o) {
   if (random && (o.random < 1 || o.random > 1000000)) throw InputError("--random must be in 1..1000000");
   if (!o.rtl_path.empty() && std::filesystem::path(o.rtl_path).is_absolute())
     throw InputError("--rtl-path must be relative to the package folder (a package must not depend on where it was made)");
+  if (!o.top.empty() && o.top != "rastersim_top" && o.top != "rastersim_core")
+    throw InputError("--top must be rastersim_top or rastersim_core, not '" + o.top + "'");
+  if (o.top == "rastersim_top" && profile.memory_stall_percent > 0)
+    throw InputError("--top rastersim_top with memory_stall_percent " + std::to_string(profile.memory_stall_percent) +
+                     ": its on-chip memory has no back-pressure; use --top rastersim_core");
   if (!o.testbench_path.empty() && std::filesystem::path(o.testbench_path).is_absolute())
     throw InputError("--testbench-path must be relative to the package folder (a package must not depend on where it was "
                      "made)");
@@ -106,6 +115,7 @@ int run_vectors(const VectorsOptions& o) {
   vectors::PackageOptions options;
   options.rtl_path = o.rtl_path;
   options.testbench_path = o.testbench_path;
+  options.external_memory = o.top == "rastersim_core" || (o.top.empty() && profile.memory_stall_percent > 0);
   const vectors::Package package = vectors::build_package(profile, triangles, source, options);
   vectors::write_package(package, o.out, o.force, remember_temporary_folder);
   std::cout << "wrote " << o.out << ": " << package.triangles << " triangles (" << package.drawn << " drawn), "

@@ -21,6 +21,7 @@ struct VectorsOptions {
   uint64_t seed = 1;          // with --random
   std::string rtl_path;       // refer to the RTL at this relative path instead of copying it
   std::string testbench_path; // refer to the testbench's folder at this relative path instead of copying it
+  std::string top;            // "rastersim_top", "rastersim_core" or empty (by memory_stall_percent)
   bool force = false;         // replace an existing package
   CLI::Option* random_option = nullptr;
   CLI::Option* seed_option = nullptr;

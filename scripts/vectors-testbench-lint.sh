@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Verilator -Wall lint of the package testbench (testbench/vectors/rastersim_vectors_tb.v) with
-# the parameter files of two packages this build writes: Gouraud and flat shading (their setup
-# layouts differ), each with and without the setup record. Waivers: testbench/vectors/lint_waivers.vlt
+# Verilator -Wall lint of the package testbench (testbench/vectors/rastersim_vectors_tb.v), memory
+# model (rastersim_memory_model.v) and board self-test (rastersim_selftest.v) with the parameter files of three packages this build
+# writes: Gouraud and flat shading (their setup layouts differ) and a package of rastersim_core
+# with back-pressure (the memory model on its memory port), each with and without the setup record. Waivers: testbench/vectors/lint_waivers.vlt
 # and rtl/lint_waivers.vlt, each with its reason. Exit 1 on any warning.
 # Usage: scripts/vectors-testbench-lint.sh [RASTERSIM]   (default: build/rastersim)
 set -euo pipefail
@@ -10,20 +11,33 @@ exe="${1:-$root/build/rastersim}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 status=0
-for shading in gouraud flat; do
-  package="$work/$shading"
-  "$exe" vectors --suite depth --width 16 --height 12 --shading "$shading" --rtl-path ../../rtl \
+for variant in gouraud flat core; do
+  package="$work/$variant"
+  case "$variant" in
+    core) flags=(--memory-stall-percent 30) ;;
+    *) flags=(--shading "$variant") ;;
+  esac
+  "$exe" vectors --suite depth --width 16 --height 12 "${flags[@]}" --rtl-path ../../rtl \
     --testbench-path ../../testbench/vectors --out "$package" > /dev/null
   for defines in "" "-DRS_NO_SETUP_RECORD"; do
     # shellcheck disable=SC2086  # defines is a list of words
     if ! out=$(verilator --lint-only -Wall --timing -I"$package" -I"$root/rtl" $defines "$root/rtl/lint_waivers.vlt" \
                  "$root/testbench/vectors/lint_waivers.vlt" --top-module rastersim_vectors_tb \
-                 "$root/testbench/vectors/rastersim_vectors_tb.v" "$root"/rtl/*.sv 2>&1); then
-      echo "lint failed: $shading ${defines:-(setup record read)}"
+                 "$root/testbench/vectors/rastersim_vectors_tb.v" "$root/testbench/vectors/rastersim_memory_model.v" \
+                 "$root"/rtl/*.sv 2>&1); then
+      echo "lint failed: $variant ${defines:-(setup record read)}"
       echo "$out"
       status=1
     fi
   done
+  # The board self-test (synthesizable: SYNTHESIS hides its simulation wrapper, as yosys does).
+  if ! out=$(verilator --lint-only -Wall -DSYNTHESIS -I"$package" -I"$root/rtl" "$root/rtl/lint_waivers.vlt" \
+               "$root/testbench/vectors/lint_waivers.vlt" --top-module rastersim_selftest \
+               "$root/testbench/vectors/rastersim_selftest.v" "$root"/rtl/*.sv 2>&1); then
+    echo "lint failed: $variant rastersim_selftest"
+    echo "$out"
+    status=1
+  fi
 done
-[ $status -eq 0 ] && echo "vectors-testbench-lint: the testbench is clean"
+[ $status -eq 0 ] && echo "vectors-testbench-lint: the testbench, memory model and self-test are clean"
 exit $status

@@ -208,9 +208,10 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
                       const PackageOptions& options) {
   const std::vector<std::string> problems = validate(profile);
   if (!problems.empty()) throw InputError("invalid profile: " + problems.front());
-  if (profile.memory_stall_percent > 0)
+  if (profile.memory_stall_percent > 0 && !options.external_memory)
     throw InputError("memory_stall_percent " + std::to_string(profile.memory_stall_percent) +
-                     ": a package tests rastersim_top, whose on-chip memory has no back-pressure");
+                     ": rastersim_top's on-chip memory has no back-pressure; a package of rastersim_core "
+                     "(--top rastersim_core) puts a memory model with the stall pattern on its memory port");
   const rtl::RtlResult model = rtl::run_model(profile, tris);
   const Layouts layouts = make_layouts(profile);
   const Widths widths = derive_widths(profile);
@@ -260,8 +261,10 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   facts.rtl_included = options.rtl_path.empty();
   facts.rtl_folder = facts.rtl_included ? "rtl" : options.rtl_path;
   facts.testbench_folder = options.testbench_path.empty() ? "." : options.testbench_path;
+  facts.external_memory = options.external_memory;
   facts.regenerate_command = "rastersim vectors " + source.arguments() + profile_flags(profile) +
                              (facts.rtl_included ? "" : " --rtl-path " + options.rtl_path) +
+                             (options.external_memory ? " --top rastersim_core" : "") +
                              (options.testbench_path.empty() ? "" : " --testbench-path " + options.testbench_path) +
                              " --out DIR";
 
@@ -277,8 +280,12 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   package.files.push_back({kParamsFile, params_text(facts), false});
   package.files.push_back({"run_icarus.sh", icarus_script(facts), true});
   package.files.push_back({"run_verilator.sh", verilator_script(facts), true});
+  package.files.push_back({"run_selftest_icarus.sh", selftest_icarus_script(facts), true});
+  package.files.push_back({"build_selftest_hx8k.sh", selftest_hx8k_script(facts), true});
+  package.files.push_back({kSelftestCrcFile, selftest_crcs(facts, model.depth, model.color), false});
+  package.files.push_back({kSelftestPinFile, selftest_pins(), false});
   for (const EmbeddedFile& f : embedded_package_tools()) {
-    const bool testbench = f.name == kTestbenchFile;
+    const bool testbench = f.name == kTestbenchFile || f.name == kMemoryModelFile || f.name == kSelftestFile;
     if (testbench && !options.testbench_path.empty()) continue;
     package.files.push_back({f.name, std::string(reinterpret_cast<const char*>(f.data), f.size), !testbench});
   }
@@ -321,7 +328,7 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   wj["setup_rejected_latency"] = setup.rejected_latency;
   m["widths"] = wj;
   Json rtl;
-  rtl["top"] = "rastersim_top";
+  rtl["top"] = options.external_memory ? "rastersim_core" : "rastersim_top";
   rtl["parameters"] = {{"WIDTH", profile.width},
                        {"HEIGHT", profile.height},
                        {"SUBPIXEL_BITS", profile.subpixel_bits},
@@ -349,6 +356,20 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
       e["meaning"] = "what the package is, how to run it, every file's bit layout";
     } else if (f.path == kTestbenchFile) {
       e["meaning"] = std::string("self-checking testbench, top module ") + kTestbenchTop + " (the same for every package)";
+    } else if (f.path == kSelftestFile) {
+      e["meaning"] = "board self-test: the commands from a ROM, the core with its frame memory in block RAM, CRC-32s "
+                     "of both memories against selftest.hex, done and pass pins";
+    } else if (f.path == kSelftestCrcFile) {
+      e["meaning"] = "the board self-test's expected CRC-32s: depth memory, colour memory";
+      e["word_bits"] = 32;
+      e["words"] = 2;
+    } else if (f.path == kSelftestPinFile) {
+      e["meaning"] = "pins of the board self-test on the iCE40-HX8K Breakout Board";
+    } else if (f.path == "run_selftest_icarus.sh" || f.path == "build_selftest_hx8k.sh") {
+      e["meaning"] = f.path == "run_selftest_icarus.sh" ? "simulates the board self-test with Icarus Verilog"
+                                                        : "builds the board self-test's iCE40 HX8K bitstream";
+    } else if (f.path == kMemoryModelFile) {
+      e["meaning"] = "frame memory model with the profile's latency and back-pressure (packages of rastersim_core)";
     } else if (f.path == kParamsFile) {
       e["meaning"] = std::string("the testbench's parameters: profile, widths, vector counts, every field's place");
     } else if (f.path == "run_icarus.sh" || f.path == "run_verilator.sh") {
@@ -361,7 +382,9 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
     }
     e["bytes"] = f.content.size();
     e["crc32"] = hex32(crc32(f.content));
-    if (vf != files.end()) {
+    if (f.path == kSelftestCrcFile) {
+      e["layout"] = Json::array({Json{{"field", "crc32"}, {"bits", 32}, {"signed", false}, {"slot", {31, 0}}}});
+    } else if (vf != files.end()) {
       Json fields = Json::array();
       for (const Field& field : vf->layout->fields()) {
         Json fj;
@@ -393,6 +416,11 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   stats["depth_pass"] = st.depth_pass;
   stats["depth_fail"] = st.depth_fail;
   m["stats"] = stats;
+  // The manifest's own CRC-32: of its text with this value written as 0x00000000, so that a changed
+  // digit anywhere in it is caught as well (check_manifest.py).
+  m["manifest_crc32"] = hex32(0);
+  const std::string unsigned_text = json_text(m) + "\n";
+  m["manifest_crc32"] = hex32(crc32(unsigned_text));
   package.files.push_back({"manifest.json", json_text(m) + "\n", false});
   return package;
 }

@@ -37,6 +37,10 @@ struct PackageOptions {
   // package. Otherwise its scripts use the one in this folder relative to the package (vectors/ in
   // this repository: ../../testbench/vectors, so that the repository keeps one copy).
   std::string testbench_path;
+  // true: the package tests rastersim_core with rastersim_memory_model.v (the profile's latency and
+  // back-pressure pattern) on its memory port; false: rastersim_top with its on-chip memory, which
+  // has no back-pressure (memory_stall_percent must be 0).
+  bool external_memory = false;
 };
 
 // The word layouts of the vector files for one profile.

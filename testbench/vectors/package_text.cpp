@@ -100,6 +100,11 @@ std::string params_text(const PackageFacts& k) {
     << "localparam integer SETUP_FIFO_DEPTH = " << p.setup_fifo_depth
     << ";  // cfg_setup_fifo_depth and MAX_SETUP_FIFO_DEPTH\n"
     << "localparam integer SETUP_INTERVAL = " << p.setup_interval << ";  // 0: serial setup; I: pipelined\n"
+    << "localparam integer MEMORY_STALL_PERCENT = " << p.memory_stall_percent << ";  // the memory model's back-pressure\n"
+    << "localparam integer MEMORY_STALL_SEED = " << p.memory_stall_seed << ";\n"
+    << (k.external_memory ? "// The package tests rastersim_core with rastersim_memory_model.v on its memory port.\n"
+                            "`define RS_EXTERNAL_MEMORY\n"
+                          : "")
     << "\n// Port and record widths (manifest.json \"widths\").\n"
     << "localparam integer COORD_BITS = " << w.coord_bits << ";\n"
     << "localparam integer X_BITS = " << w.x_bits << ";\n"
@@ -142,13 +147,9 @@ std::string params_text(const PackageFacts& k) {
 
 namespace {
 
-// The part both scripts share: the package folder, the RTL sources, a scratch folder.
-std::string script_preamble(const PackageFacts& k, const std::string& tool) {
-  const std::string rtl_default = "$here/" + k.rtl_folder;
-  const std::string testbench = k.testbench_folder == "." ? "$here/" + std::string(kTestbenchFile)
-                                                          : "$here/" + k.testbench_folder + "/" + kTestbenchFile;
-  return "#!/usr/bin/env bash\n"
-         "# Runs this package's testbench (" + std::string(kTestbenchFile) + " with " + kParamsFile + ") with " + tool +
+// What the testbench scripts say of themselves.
+std::string testbench_usage(const PackageFacts& k, const std::string& tool) {
+  return "# Runs this package's testbench (" + std::string(kTestbenchFile) + " with " + kParamsFile + ") with " + tool +
          ".\n"
          "# Exit 0 when the last line is \"N passed, 0 failed\"; 1 when a vector failed; 2 when it cannot build\n"
          "# or a file differs from manifest.json.\n"
@@ -157,10 +158,16 @@ std::string script_preamble(const PackageFacts& k, const std::string& tool) {
          "# (e.g. -DRS_NO_SETUP_RECORD for a port without the setup record wires). Arguments go to the\n"
          "# testbench: +functional (compare functionally, not cycle for cycle), +max_shown=N (mismatches\n"
          "# printed, default 20), +dump=FILE (a VCD of the run; FILE relative to this folder, where the\n"
-         "# testbench runs), +cycle_bound=N.\n"
+         "# testbench runs), +cycle_bound=N.\n";
+}
+
+// The part every script shares: the package folder, the RTL sources, the manifest check, a
+// scratch folder. `usage`: the script's own comment lines.
+std::string script_preamble(const PackageFacts& k, const std::string& usage) {
+  const std::string rtl_default = "$here/" + k.rtl_folder;
+  return "#!/usr/bin/env bash\n" + usage +
          "set -euo pipefail\n"
          "here=\"$(cd \"$(dirname \"$0\")\" && pwd)\"\n"
-         "testbench=\"" + testbench + "\"\n"
          "rtl=\"${RTL_DIR:-" + rtl_default + "}\"\n"
          "shopt -s nullglob\n"
          "sources=(\"$rtl\"/*.sv \"$rtl\"/*.v)\n"
@@ -179,6 +186,12 @@ std::string script_preamble(const PackageFacts& k, const std::string& tool) {
          "trap 'rm -rf \"$work\"' EXIT\n";
 }
 
+// The testbench's two files (in the package or in --testbench-path).
+std::string testbench_files(const PackageFacts& k) {
+  const std::string folder = k.testbench_folder == "." ? "$here" : "$here/" + k.testbench_folder;
+  return "testbench=(\"" + folder + "/" + kTestbenchFile + "\" \"" + folder + "/" + kMemoryModelFile + "\")\n";
+}
+
 // Runs the built simulation in the package folder ($readmemh reads the .hex files there) and
 // decides the exit code from its summary line.
 // `comment`: lines put just before the command (a shellcheck directive must be).
@@ -191,21 +204,21 @@ std::string script_run(const std::string& command, const std::string& comment = 
 }  // namespace
 
 std::string icarus_script(const PackageFacts& k) {
-  return script_preamble(k, "Icarus Verilog 11 or later") +
+  return script_preamble(k, testbench_usage(k, "Icarus Verilog 11 or later")) + testbench_files(k) +
          "# shellcheck disable=SC2086  # SIM_FLAGS is a list of words\n"
          "if ! iverilog -g2012 -I \"$here\" -I \"$rtl\" -s " + kTestbenchTop + " ${SIM_FLAGS:-} -o \"$work/tb.vvp\" \\\n"
-         "    \"$testbench\" \"${sources[@]}\"; then\n"
+         "    \"${testbench[@]}\" \"${sources[@]}\"; then\n"
          "  exit 2\n"
          "fi\n" +
          script_run("vvp -n \"$work/tb.vvp\" \"$@\"");
 }
 
 std::string verilator_script(const PackageFacts& k) {
-  return script_preamble(k, "Verilator 5 (verilator --binary)") +
+  return script_preamble(k, testbench_usage(k, "Verilator 5 (verilator --binary)")) + testbench_files(k) +
          "# shellcheck disable=SC2086  # SIM_FLAGS is a list of words\n"
          "if ! verilator --binary --trace -j \"$(nproc)\" -Wno-fatal -Wno-lint -Wno-style --top-module " + kTestbenchTop +
          " \\\n"
-         "    -I\"$here\" -I\"$rtl\" ${SIM_FLAGS:-} --Mdir \"$work/obj\" -o tb \"$testbench\" \"${sources[@]}\" \\\n"
+         "    -I\"$here\" -I\"$rtl\" ${SIM_FLAGS:-} --Mdir \"$work/obj\" -o tb \"${testbench[@]}\" \"${sources[@]}\" \\\n"
          "    > \"$work/build.log\" 2>&1; then\n"
          "  cat \"$work/build.log\" >&2\n"
          "  exit 2\n"
@@ -215,8 +228,76 @@ std::string verilator_script(const PackageFacts& k) {
                     "# shellcheck disable=SC2016  # a literal $finish\n");
 }
 
+std::string selftest_crcs(const PackageFacts& k, const std::vector<uint32_t>& depth, const std::vector<uint32_t>& color) {
+  const int depth_bytes = (k.profile.z_bits + 7) / 8;
+  std::string depth_bytes_text, color_bytes_text;
+  for (const uint32_t w : depth)
+    for (int b = 0; b < depth_bytes; ++b) depth_bytes_text += char((w >> (8 * b)) & 0xFF);
+  for (const uint32_t w : color)
+    for (int b = 0; b < 3; ++b) color_bytes_text += char((w >> (8 * b)) & 0xFF);
+  char text[32];
+  std::snprintf(text, sizeof text, "%08x\n%08x\n", crc32(depth_bytes_text), crc32(color_bytes_text));
+  return text;
+}
+
+std::string selftest_pins() {
+  return "# Pins of the board self-test (rastersim_selftest.v) on the iCE40-HX8K Breakout Board (CT256):\n"
+         "# the 12 MHz oscillator, and two of the eight LEDs. Change them for another board.\n"
+         "set_io clk J3\n"
+         "set_io pass B5\n"
+         "set_io done B4\n";
+}
+
+std::string selftest_icarus_script(const PackageFacts& k) {
+  const std::string folder = k.testbench_folder == "." ? "$here" : "$here/" + k.testbench_folder;
+  return script_preamble(k, "# Simulates the board self-test (" + std::string(kSelftestFile) + ", top module "
+                            "rastersim_selftest_sim) with Icarus\n"
+                            "# Verilog: the frame's cycles, both CRC-32s and the verdict the board's pins give.\n"
+                            "# Exit 0 on \"selftest: PASS\", 1 on FAIL, 2 when it cannot build or a file differs from\n"
+                            "# manifest.json. RTL_DIR: the pipeline's Verilog (default " + k.rtl_folder + "/).\n") +
+         "selftest=\"" + folder + "/" + kSelftestFile + "\"\n"
+         "if ! iverilog -g2012 -I \"$here\" -I \"$rtl\" -s rastersim_selftest_sim -o \"$work/selftest.vvp\" \"$selftest\" \\\n"
+         "    \"${sources[@]}\"; then\n"
+         "  exit 2\n"
+         "fi\n"
+         "cd \"$here\"\n"
+         "vvp -n \"$work/selftest.vvp\" | tee \"$work/log\"\n"
+         "if grep -q '^selftest: PASS$' \"$work/log\"; then exit 0; fi\n"
+         "exit 1\n";
+}
+
+std::string selftest_hx8k_script(const PackageFacts& k) {
+  const std::string folder = k.testbench_folder == "." ? "$here" : "$here/" + k.testbench_folder;
+  return script_preamble(k, "# Builds an iCE40 HX8K bitstream of the board self-test (" + std::string(kSelftestFile) +
+                            ") with yosys,\n# nextpnr-ice40 and icepack. RTL_DIR: the pipeline's Verilog (default " +
+                            k.rtl_folder + "/).\n") +
+         "# OUT: where the bitstream and the logs go (default selftest_hx8k/ in this folder): rastersim_selftest.bin,\n"
+         "# yosys.log, nextpnr.log (utilisation and the timing report). Pins: " + kSelftestPinFile + ". Exit 0 when the\n"
+         "# design fits the HX8K and routes; the last lines give its logic cells and Fmax.\n"
+         "selftest=\"" + folder + "/" + kSelftestFile + "\"\n"
+         "out=\"${OUT:-$here/selftest_hx8k}\"\n"
+         "mkdir -p \"$out\"\n"
+         "cd \"$here\"  # $readmemh reads commands.hex and selftest.hex from here\n"
+         "if ! yosys -q -l \"$out/yosys.log\" -p \"read_verilog -sv -I$here -I$rtl $selftest ${sources[*]}; \\\n"
+         "    synth_ice40 -top rastersim_selftest -json $out/selftest.json\"; then\n"
+         "  echo \"$0: yosys failed (log: $out/yosys.log)\" >&2\n"
+         "  exit 2\n"
+         "fi\n"
+         "if ! nextpnr-ice40 --hx8k --package ct256 --pcf \"$here/" + kSelftestPinFile + "\" --json \"$out/selftest.json\" \\\n"
+         "    --asc \"$out/selftest.asc\" --freq 50 --timing-allow-fail --seed 1 -l \"$out/nextpnr.log\" 2> /dev/null; then\n"
+         "  echo \"$0: nextpnr-ice40 failed: the design does not fit or route (log: $out/nextpnr.log)\" >&2\n"
+         "  grep -E 'ERROR|Info: Device utilisation' -A 12 \"$out/nextpnr.log\" | head -n 20 >&2 || true\n"
+         "  exit 1\n"
+         "fi\n"
+         "icepack \"$out/selftest.asc\" \"$out/rastersim_selftest.bin\"\n"
+         "grep -E 'ICESTORM_LC:|ICESTORM_RAM:' \"$out/nextpnr.log\" | tail -n 2\n"
+         "grep -E \"Max frequency for clock\" \"$out/nextpnr.log\" | tail -n 1\n"
+         "echo \"bitstream: $out/rastersim_selftest.bin\"\n";
+}
+
 std::string readme_text(const PackageFacts& k) {
   const Profile& p = k.profile;
+  const std::string top = k.external_memory ? "rastersim_core" : "rastersim_top";
   std::ostringstream r;
   r << "# rastersim test-vector package\n\n"
     << "Generated by " << generator_name() << " (package format " << kFormatVersion << ") from "
@@ -245,16 +326,27 @@ std::string readme_text(const PackageFacts& k) {
     << "per\ntriangle as sets, matched by pixel: a missing or an extra fragment is one mismatch.\n"
     << (k.rtl_included ? "The RTL in rtl/ is the one the vectors were generated against (CRC-32s in manifest.json).\n"
                        : "The RTL is not copied: `" + k.rtl_folder + "` is the rastersim repository's rtl/ folder.\n")
-    << "\n## Putting a port in place of rastersim_top\n\n"
-    << "The testbench instantiates `rastersim_top` with the parameters WIDTH = " << p.width << ", HEIGHT = " << p.height
+    << "\n## Putting a port in place of " << top << "\n\n"
+    << "The testbench instantiates `" << top << "` with the parameters WIDTH = " << p.width << ", HEIGHT = " << p.height
     << ", SUBPIXEL_BITS = " << p.subpixel_bits << ",\nZ_BITS = " << p.z_bits << ", Z_GUARD_BITS = " << p.z_guard_bits
     << " (0: derived), MAX_MEMORY_LATENCY = " << p.memory_latency << ", MAX_SETUP_FIFO_DEPTH = " << p.setup_fifo_depth
     << ", SETUP_INTERVAL = " << p.setup_interval
-    << "\nand the ports of rastersim/rtl/rastersim_top.sv. A port with the same module name, parameters and ports "
+    << "\nand the ports of rastersim/rtl/" << top << ".sv. A port with the same module name, parameters and ports "
     << "runs unchanged:\n`RTL_DIR=path/to/port ./run_icarus.sh`. The setup record (setup.hex) is read from the "
-    << "internal wires `dut.core.rec_*`\n(`SIM_FLAGS=-DRS_RECORD_PATH=dut.other` names another instance); a port "
-    << "without them is run with\n`SIM_FLAGS=-DRS_NO_SETUP_RECORD`, which skips those vectors (`N passed, M failed, "
-    << "K skipped`).\n\n"
+    << "internal wires `" << (k.external_memory ? "dut" : "dut.core") << ".rec_*`\n(`SIM_FLAGS=-DRS_RECORD_PATH=dut.other` "
+    << "names another instance); a port without them is run with\n`SIM_FLAGS=-DRS_NO_SETUP_RECORD`, which skips those "
+    << "vectors (`N passed, M failed, K skipped`).\n"
+    << (k.external_memory
+            ? "\nThe frame memory is outside the core, as on a board: `" + std::string(kMemoryModelFile) +
+                  "` sits on its memory port (`mem_*`,\ncontract in rastersim/rtl/zbuffer.sv) with read latency " +
+                  std::to_string(p.memory_latency) + " and the model's back-pressure pattern: in frame cycle c it "
+                  "refuses reads\n(`mem_rd_ready` low) when the profile's stall hash of (seed " +
+                  std::to_string(p.memory_stall_seed) + ", c) modulo 100 is below " +
+                  std::to_string(p.memory_stall_percent) + " (memory_stall_percent), the\nsame cycles as the model's "
+                  "memory, so the cycle numbers hold under back-pressure. The final memories are read\nthrough the "
+                  "model's read-back port.\n"
+            : "")
+    << "\n"
     << "What the testbench drives and expects, cycle by cycle:\n\n"
     << "- `rst` is high for four rising edges, with the `cfg_*` inputs at the profile's values (held for the frame).\n"
     << "- Cycle 0 is the first clock cycle with `frame_ready` high (the memory clear may take any number of cycles, "
@@ -265,7 +357,8 @@ std::string readme_text(const PackageFacts& k) {
     << "so each sample is what the next rising edge sees. The cycle numbers in triangles.hex, fragments.hex and "
     << "frame.hex count these clock periods from cycle 0 and must be met exactly (cycle-exact mode).\n"
     << "- The frame ends after the first cycle with no command left to offer, `trace_setup_busy`, "
-    << "`trace_walker_busy` and `trace_zbuffer_busy` low and no fragment awaiting its depth-test result.\n"
+    << "`trace_walker_busy`, `trace_zbuffer_busy` and `trace_frag_valid` low and no fragment awaiting its depth-test "
+    << "result.\n"
     << "- Then every word of the memories is read through the read-back port: the data for `readback_addr` set in "
     << "cycle c is on `readback_depth` / `readback_rgb` in cycle c + 1.\n\n"
     << "## Files\n\n"
@@ -278,7 +371,13 @@ std::string readme_text(const PackageFacts& k) {
     << "| " << kParamsFile << " | | | the testbench's parameters: profile, widths, vector counts, every field's place |\n"
     << "| " << kTestbenchFile << " | | | the self-checking testbench (top module " << kTestbenchTop << "), the same for "
     << "every package" << (k.testbench_folder == "." ? "" : "; in `" + k.testbench_folder + "/`") << " |\n"
+    << "| " << kMemoryModelFile << " | | | the frame memory model of packages of rastersim_core (latency, back-pressure)"
+    << (k.testbench_folder == "." ? "" : "; in `" + k.testbench_folder + "/`") << " |\n"
     << "| run_icarus.sh, run_verilator.sh | | | build and run it |\n"
+    << "| " << kSelftestFile << ", " << kSelftestCrcFile << ", " << kSelftestPinFile << " | | | the board self-test "
+    << "(below), its expected CRC-32s, its pins" << (k.testbench_folder == "." ? "" : "; the .v in `" + k.testbench_folder + "/`")
+    << " |\n"
+    << "| run_selftest_icarus.sh, build_selftest_hx8k.sh | | | simulate the self-test; build its iCE40 HX8K bitstream |\n"
     << "| check_manifest.py | | | checks every file's size and CRC-32 against manifest.json (the run scripts call it first) |\n"
     << (k.rtl_included ? "| rtl/ | | | the RTL it was generated against |\n" : "")
     << "\nEvery `.hex` file is read with `$readmemh`: one word per line, lowercase hex, no header; the line number "

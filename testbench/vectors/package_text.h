@@ -22,6 +22,7 @@ struct PackageFacts {
   std::string regenerate_command; // rastersim vectors ... --out DIR
   std::string rtl_folder;         // the RTL folder relative to the package: "rtl" or options.rtl_path
   bool rtl_included = true;
+  bool external_memory = false;  // rastersim_core with rastersim_memory_model.v, not rastersim_top
   std::string testbench_folder;   // the testbench's folder relative to the package: "." when copied
 };
 
@@ -29,12 +30,22 @@ struct PackageFacts {
 inline const char* const kTestbenchFile = "rastersim_vectors_tb.v";
 inline const char* const kTestbenchTop = "rastersim_vectors_tb";
 inline const char* const kParamsFile = "rastersim_vectors_params.vh";
+inline const char* const kMemoryModelFile = "rastersim_memory_model.v";
+inline const char* const kSelftestFile = "rastersim_selftest.v";
+inline const char* const kSelftestCrcFile = "selftest.hex";
+inline const char* const kSelftestPinFile = "selftest_hx8k.pcf";
 
 // The parameter file the testbench includes: profile, widths, vector counts, field places.
 std::string params_text(const PackageFacts& facts);
 std::string icarus_script(const PackageFacts& facts);
 std::string verilator_script(const PackageFacts& facts);
 std::string readme_text(const PackageFacts& facts);
+// The board self-test's files: its expected CRC-32s (depth words as ceil(z_bits / 8) bytes, colour
+// words as 3, least significant byte first), its pin file, and its Icarus and iCE40 scripts.
+std::string selftest_crcs(const PackageFacts& facts, const std::vector<uint32_t>& depth, const std::vector<uint32_t>& color);
+std::string selftest_pins();
+std::string selftest_icarus_script(const PackageFacts& facts);
+std::string selftest_hx8k_script(const PackageFacts& facts);
 
 // The vector files in package order: name, layout, what one word is.
 struct VectorFile {

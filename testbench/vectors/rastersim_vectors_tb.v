@@ -28,11 +28,17 @@
 // Compile-time options:
 //   RS_NO_SETUP_RECORD  a port without the setup -> walker record wires (RS_RECORD_PATH.rec_*):
 //                       setup.hex is skipped ("N passed, M failed, K skipped")
-//   RS_RECORD_PATH      where the record wires are (default dut.core)
+//   RS_RECORD_PATH      where the record wires are (default dut.core; dut with RS_EXTERNAL_MEMORY)
+//   RS_EXTERNAL_MEMORY  the package tests rastersim_core with rastersim_memory_model.v on its memory
+//                       port instead of rastersim_top (the parameter file defines it for such packages)
 module rastersim_vectors_tb;
 `include "rastersim_vectors_params.vh"
 `ifndef RS_RECORD_PATH
+`ifdef RS_EXTERNAL_MEMORY
+`define RS_RECORD_PATH dut
+`else
 `define RS_RECORD_PATH dut.core
+`endif
 `endif
 
   localparam integer CLEAR_BOUND = WORDS + 16;  // cycles the memory clear after reset may take
@@ -68,32 +74,65 @@ module rastersim_vectors_tb;
   wire [Z_BITS-1:0] readback_depth;
   wire [23:0] readback_rgb;
 
-  // The pipeline under test: rastersim_top, or a port with the same parameters and ports.
+  // The pipeline under test, with the ports every package drives and observes.
+`define RS_PIPELINE_PORTS \
+    .clk(clk), .rst(rst), \
+    .cfg_depth_func(CFG_DEPTH_FUNC), .cfg_depth_write(CFG_DEPTH_WRITE), .cfg_cull(CFG_CULL), \
+    .cfg_front_face(CFG_FRONT_FACE), .cfg_traversal(CFG_TRAVERSAL), .cfg_shading(CFG_SHADING), \
+    .cfg_memory_latency(CFG_MEMORY_LATENCY), .cfg_setup_fifo_depth(CFG_SETUP_FIFO_DEPTH), \
+    .frame_ready(frame_ready), \
+    .cmd_valid(cmd_valid), .cmd_ready(cmd_ready), \
+    .cmd_x0(cmd_x0), .cmd_y0(cmd_y0), .cmd_x1(cmd_x1), .cmd_y1(cmd_y1), .cmd_x2(cmd_x2), .cmd_y2(cmd_y2), \
+    .cmd_z0(cmd_z0), .cmd_z1(cmd_z1), .cmd_z2(cmd_z2), .cmd_rgb0(cmd_rgb0), .cmd_rgb1(cmd_rgb1), .cmd_rgb2(cmd_rgb2), \
+    .trace_setup_decided(trace_setup_decided), .trace_setup_status(trace_setup_status), \
+    .trace_setup_busy(trace_setup_busy), .trace_setup_stall(trace_setup_stall), \
+    .trace_setup_done(trace_setup_done), \
+    .trace_walker_load(trace_walker_load), .trace_walker_busy(trace_walker_busy), \
+    .trace_walker_candidate(trace_walker_candidate), .trace_walker_last(trace_walker_last), \
+    .trace_frag_valid(trace_frag_valid), .trace_frag_ready(trace_frag_ready), \
+    .trace_frag_x(trace_frag_x), .trace_frag_y(trace_frag_y), .trace_frag_z(trace_frag_z), \
+    .trace_frag_rgb(trace_frag_rgb), \
+    .trace_result_valid(trace_result_valid), .trace_result_pass(trace_result_pass), \
+    .trace_zbuffer_busy(trace_zbuffer_busy)
+`ifdef RS_EXTERNAL_MEMORY
+  // rastersim_core (or a port with its parameters and ports) with the frame memory outside: the
+  // memory model with the profile's latency and back-pressure pattern on its memory port.
+  wire mem_clear_done, mem_rd_valid, mem_rd_ready, mem_wr_depth_en, mem_wr_color_en;
+  wire [ADDR_BITS-1:0] mem_rd_addr, mem_wr_addr;
+  wire [Z_BITS-1:0] mem_rd_depth, mem_wr_depth;
+  wire [23:0] mem_wr_rgb;
+  wire [31:0] refused_reads, bad_accesses;
+  rastersim_core #(
+    .WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
+    .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MEMORY_LATENCY),
+    .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL)
+  ) dut (
+    `RS_PIPELINE_PORTS,
+    .mem_clear_done(mem_clear_done), .mem_rd_valid(mem_rd_valid), .mem_rd_ready(mem_rd_ready),
+    .mem_rd_addr(mem_rd_addr), .mem_rd_depth(mem_rd_depth), .mem_wr_depth_en(mem_wr_depth_en),
+    .mem_wr_color_en(mem_wr_color_en), .mem_wr_addr(mem_wr_addr), .mem_wr_depth(mem_wr_depth),
+    .mem_wr_rgb(mem_wr_rgb));
+  rastersim_memory_model #(
+    .WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .ADDR_BITS(ADDR_BITS), .LATENCY(MEMORY_LATENCY),
+    .STALL_PERCENT(MEMORY_STALL_PERCENT), .STALL_SEED(MEMORY_STALL_SEED)
+  ) memory (
+    .clk(clk), .rst(rst), .depth_clear(CFG_DEPTH_CLEAR), .clear_done(mem_clear_done),
+    .rd_valid(mem_rd_valid), .rd_ready(mem_rd_ready), .rd_addr(mem_rd_addr), .rd_depth(mem_rd_depth),
+    .wr_depth_en(mem_wr_depth_en), .wr_color_en(mem_wr_color_en), .wr_addr(mem_wr_addr),
+    .wr_depth(mem_wr_depth), .wr_rgb(mem_wr_rgb),
+    .readback_addr(readback_addr), .readback_depth(readback_depth), .readback_rgb(readback_rgb),
+    .refused_reads(refused_reads), .bad_accesses(bad_accesses));
+`else
+  // rastersim_top (or a port with its parameters and ports): the frame memory on chip.
   rastersim_top #(
     .WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
     .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MEMORY_LATENCY),
     .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL)
   ) dut (
-    .clk(clk), .rst(rst),
-    // The profile's run-time keys, sampled while rst is high.
-    .cfg_depth_func(CFG_DEPTH_FUNC), .cfg_depth_write(CFG_DEPTH_WRITE), .cfg_depth_clear(CFG_DEPTH_CLEAR),
-    .cfg_cull(CFG_CULL), .cfg_front_face(CFG_FRONT_FACE), .cfg_traversal(CFG_TRAVERSAL), .cfg_shading(CFG_SHADING),
-    .cfg_memory_latency(CFG_MEMORY_LATENCY), .cfg_setup_fifo_depth(CFG_SETUP_FIFO_DEPTH),
-    .frame_ready(frame_ready),
-    .cmd_valid(cmd_valid), .cmd_ready(cmd_ready),
-    .cmd_x0(cmd_x0), .cmd_y0(cmd_y0), .cmd_x1(cmd_x1), .cmd_y1(cmd_y1), .cmd_x2(cmd_x2), .cmd_y2(cmd_y2),
-    .cmd_z0(cmd_z0), .cmd_z1(cmd_z1), .cmd_z2(cmd_z2), .cmd_rgb0(cmd_rgb0), .cmd_rgb1(cmd_rgb1), .cmd_rgb2(cmd_rgb2),
-    .trace_setup_decided(trace_setup_decided), .trace_setup_status(trace_setup_status),
-    .trace_setup_busy(trace_setup_busy), .trace_setup_stall(trace_setup_stall),
-    .trace_setup_done(trace_setup_done),
-    .trace_walker_load(trace_walker_load), .trace_walker_busy(trace_walker_busy),
-    .trace_walker_candidate(trace_walker_candidate), .trace_walker_last(trace_walker_last),
-    .trace_frag_valid(trace_frag_valid), .trace_frag_ready(trace_frag_ready),
-    .trace_frag_x(trace_frag_x), .trace_frag_y(trace_frag_y), .trace_frag_z(trace_frag_z),
-    .trace_frag_rgb(trace_frag_rgb),
-    .trace_result_valid(trace_result_valid), .trace_result_pass(trace_result_pass),
-    .trace_zbuffer_busy(trace_zbuffer_busy),
+    `RS_PIPELINE_PORTS,
+    .cfg_depth_clear(CFG_DEPTH_CLEAR),
     .readback_addr(readback_addr), .readback_depth(readback_depth), .readback_rgb(readback_rgb));
+`endif
 
   // ---- Words and their fields ------------------------------------------------------------------
   // A field's slot of a word (zero-extended to 64 bits), and a value put into a field's slot.
@@ -649,7 +688,8 @@ module rastersim_vectors_tb;
         end
         busy = trace_setup_busy || trace_walker_busy || trace_zbuffer_busy;
         if (busy) last_busy = cycle;
-        if (!submitting && !busy && seen_result_count >= seen_fragment_count) begin
+        // A fragment the memory refuses leaves every unit's busy low but is still to come.
+        if (!submitting && !busy && !trace_frag_valid && seen_result_count >= seen_fragment_count) begin
           finished = 1'b1;
         end else if (cycle >= cycle_bound) begin
           unexpected(cycle, "frame.hex", "the frame did not finish within the cycle bound (+cycle_bound=N)");
@@ -676,6 +716,13 @@ module rastersim_vectors_tb;
       #1;
       if (i + 1 < WORDS) readback_addr = i + 1;
     end
+
+`ifdef RS_EXTERNAL_MEMORY
+    if (bad_accesses != 0) begin
+      $sformat(text, "%0d reads or writes outside the memory (rastersim_memory_model printed each)", bad_accesses);
+      unexpected(NO_CYCLE - 1, "frame.hex", text);
+    end
+`endif
 
     // ---- Comparison, in time order of the triangles ----
     // The fragments of each triangle, expected and observed, as lists in their order.

@@ -52,6 +52,21 @@ TEST(CliVectors, WritesAPackageFromEachSource) {
 
 // Camera flags on a 3D input (once refused): the package holds the frame `render` draws with the
 // same flags, and its manifest records them in the source and the regenerate command.
+// A stall pattern makes a package of rastersim_core with the memory model on its memory port.
+TEST(CliVectors, AStallPatternMakesAPackageOfTheCoreWithAMemoryModel) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"vectors", "--suite", "depth", "--width", "16", "--height", "12",
+                                          "--memory-stall-percent", "30", "--out", "core"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json manifest = nlohmann::json::parse(read_text(dir.path("core") / "manifest.json"));
+  EXPECT_EQ(manifest["rtl"]["top"], "rastersim_core");
+  EXPECT_EQ(manifest["profile"]["memory_stall_percent"], 30);
+  EXPECT_TRUE(contains(manifest["regenerate"].get<std::string>(), " --top rastersim_core")) << manifest["regenerate"];
+  EXPECT_TRUE(fs::exists(dir.path("core") / "rastersim_memory_model.v"));
+  EXPECT_TRUE(contains(read_text(dir.path("core") / "rastersim_vectors_params.vh"), "`define RS_EXTERNAL_MEMORY"));
+  EXPECT_TRUE(contains(read_text(dir.path("core") / "README.md"), "## Putting a port in place of rastersim_core"));
+}
+
 TEST(CliVectors, CameraFlagsApplyToA3DInput) {
   ScratchDir dir;
   dir.write("quad.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3\nf 1 3 4\n");
@@ -157,7 +172,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadVectors{"UnknownScene", {"--scene", "teapot"}, "unknown scene 'teapot'"},
         BadVectors{"BadProfile", {"--suite", "depth", "--z-bits", "8"}, "z_bits is 8"},
         BadVectors{"BadDepthFunc", {"--suite", "depth", "--depth-func", "sometimes"}, "depth_func is 'sometimes'"},
-        BadVectors{"StallPattern", {"--suite", "depth", "--memory-stall-percent", "10"}, "no back-pressure"}),
+        BadVectors{"StallPatternOnTheTop", {"--suite", "depth", "--memory-stall-percent", "10", "--top", "rastersim_top"},
+                   "no back-pressure"},
+        BadVectors{"UnknownTop", {"--suite", "depth", "--top", "rastersim_walker"},
+                   "--top must be rastersim_top or rastersim_core, not 'rastersim_walker'"}),
     [](const ::testing::TestParamInfo<BadVectors>& info) { return info.param.name; });
 
 #endif

@@ -132,6 +132,14 @@ TEST(VectorsManifest, DescribesEveryFileExactly) {
   EXPECT_EQ(m["source"]["name"], "depth");
 
   ASSERT_EQ(m["files"].size(), package.files.size() - 1);  // every file but the manifest itself
+  // Its own CRC-32: of its text with the value written as zeros.
+  std::string unsigned_text = package.files.back().content;
+  const std::string own = "\"manifest_crc32\": \"" + m["manifest_crc32"].get<std::string>() + "\"";
+  ASSERT_NE(unsigned_text.find(own), std::string::npos);
+  unsigned_text.replace(unsigned_text.find(own), own.size(), "\"manifest_crc32\": \"0x00000000\"");
+  char own_crc[16];
+  std::snprintf(own_crc, sizeof own_crc, "0x%08x", crc32(unsigned_text));
+  EXPECT_EQ(m["manifest_crc32"], own_crc);
   const std::regex hex_word("[0-9a-f]+");
   for (size_t i = 0; i + 1 < package.files.size(); ++i) {
     const PackageFile& f = package.files[i];
@@ -514,6 +522,111 @@ TEST_F(IcarusPackage, ADroppedFragmentIsOneFunctionalMismatchNamingTriangleAndPi
       << functional.output;
   const CommandResult exact = replay("", vvp);
   EXPECT_NE(exact.output.find(named), std::string::npos) << exact.output;
+}
+
+// A package of rastersim_core with 30 % back-pressure: the memory model on its memory port refuses
+// reads in the model's stall cycles, so the cycle-exact run passes; the same package with another
+// stall seed in its parameter file fails (the pattern is what makes the cycles).
+TEST(IcarusCorePackage, BackPressureFromTheModelsStallPatternStaysCycleExact) {
+  Profile p = small_profile();
+  p.memory_stall_percent = 30;
+  p.memory_stall_seed = 5;
+  PackageOptions options;
+  EXPECT_THROW(build_package(p, suite_triangles("depth", p), Source{"suite", "depth", 0, 0, ""}, options), InputError);
+  options.external_memory = true;
+  const Package package = build_package(p, suite_triangles("depth", p), Source{"suite", "depth", 0, 0, ""}, options);
+  const Json manifest = Json::parse(file_named(package, "manifest.json").content);
+  EXPECT_EQ(manifest["rtl"]["top"], "rastersim_core");
+  const std::string params = file_named(package, "rastersim_vectors_params.vh").content;
+  EXPECT_NE(params.find("`define RS_EXTERNAL_MEMORY"), std::string::npos) << params;
+  const std::vector<int64_t> frame = make_layouts(p).frame.parse(split_lines(file_named(package, "frame.hex").content).at(0));
+  const std::vector<Field>& fields = make_layouts(p).frame.fields();
+  const size_t walker_stall = size_t(std::find_if(fields.begin(), fields.end(), [](const Field& f) { return f.name == "walker_stall"; }) - fields.begin());
+  EXPECT_GT(frame.at(walker_stall), 0) << "the stall pattern refused no read the walker offered";
+
+  TempDir dir;
+  const fs::path pkg = dir.path() / "pkg";
+  write_package(package, pkg.string(), false);
+  const CommandResult run = run_command("'" + (pkg / "run_icarus.sh").string() + "'");
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_TRUE(std::regex_match(last_line(run.output), std::regex("[0-9]+ passed, 0 failed"))) << run.output;
+
+  std::string other = read_text(pkg / "rastersim_vectors_params.vh");
+  const std::string seed = "localparam integer MEMORY_STALL_SEED = 5;";
+  ASSERT_NE(other.find(seed), std::string::npos) << other;
+  other.replace(other.find(seed), seed.size(), "localparam integer MEMORY_STALL_SEED = 6;");
+  write_text(pkg / "rastersim_vectors_params.vh", other);
+  const CommandResult built = run_command("cd '" + pkg.string() + "' && " + RASTERSIM_IVERILOG +
+                                          " -g2012 -I . -I rtl -s rastersim_vectors_tb -o tb.vvp rastersim_vectors_tb.v "
+                                          "rastersim_memory_model.v rtl/*.sv && " + RASTERSIM_VVP + " -n tb.vvp");
+  EXPECT_TRUE(std::regex_match(last_line(built.output), std::regex("[0-9]+ passed, [1-9][0-9]* failed"))) << built.output;
+  EXPECT_NE(built.output.find("field cycle: "), std::string::npos) << built.output;
+}
+
+// The board self-test in Icarus: PASS with the package's CRCs (computed here from depth.hex and
+// color.hex, not by the package writer), FAIL when one expected CRC word changes; and the run
+// script refuses the changed selftest.hex before simulating (manifest CRC-32).
+TEST(IcarusSelftest, PassesWithThePackagesCrcsAndFailsWhenOneChanges) {
+  const Profile p = small_profile();
+  const Package package = small_package();
+  // The expected CRCs from the expected memories: depth words as 3 bytes (N = 24), colour as 3.
+  std::string depth_bytes, color_bytes;
+  for (const std::string& line : split_lines(file_named(package, "depth.hex").content))
+    for (int b = 0; b < (p.z_bits + 7) / 8; ++b) depth_bytes += char((std::stoul(line, nullptr, 16) >> (8 * b)) & 0xFF);
+  for (const std::string& line : split_lines(file_named(package, "color.hex").content))
+    for (int b = 0; b < 3; ++b) color_bytes += char((std::stoul(line, nullptr, 16) >> (8 * b)) & 0xFF);
+  char expected[32];
+  std::snprintf(expected, sizeof expected, "%08x\n%08x\n", crc32(depth_bytes), crc32(color_bytes));
+  EXPECT_EQ(file_named(package, "selftest.hex").content, expected);
+
+  TempDir dir;
+  const fs::path pkg = dir.path() / "pkg";
+  write_package(package, pkg.string(), false);
+  const CommandResult passed = run_command("'" + (pkg / "run_selftest_icarus.sh").string() + "'");
+  EXPECT_EQ(passed.status, 0) << passed.output;
+  EXPECT_EQ(last_line(passed.output), "selftest: PASS") << passed.output;
+  EXPECT_NE(passed.output.find(std::string("depth CRC 0x") + std::string(expected, 8)), std::string::npos) << passed.output;
+
+  for (int line = 0; line < 2; ++line) {
+    std::vector<std::string> crcs = split_lines(file_named(package, "selftest.hex").content);
+    crcs[size_t(line)][7] = crcs[size_t(line)][7] == '0' ? '1' : '0';
+    write_text(pkg / "selftest.hex", join_lines(crcs));
+    const CommandResult refused = run_command("'" + (pkg / "run_selftest_icarus.sh").string() + "'");
+    EXPECT_EQ(refused.status, 2) << refused.output;
+    EXPECT_NE(refused.output.find("check_manifest: selftest.hex: "), std::string::npos) << refused.output;
+    const CommandResult failed = run_command("cd '" + pkg.string() + "' && " + RASTERSIM_IVERILOG +
+                                             " -g2012 -I . -I rtl -s rastersim_selftest_sim -o st.vvp "
+                                             "rastersim_selftest.v rtl/*.sv && " + RASTERSIM_VVP + " -n st.vvp");
+    EXPECT_EQ(last_line(failed.output), "selftest: FAIL") << line << "\n" << failed.output;
+  }
+}
+
+// A flipped digit in any file of a package, the manifest included, is caught by check_manifest.py
+// (which the run scripts call before anything else) naming that file.
+TEST(PackageCheck, AFlippedDigitInAnyFileIsCaughtBeforeTheRun) {
+  TempDir dir;
+  const fs::path pkg = dir.path() / "pkg";
+  const Package package = small_package();
+  write_package(package, pkg.string(), false);
+  const CommandResult clean = run_command("python3 '" + (pkg / "check_manifest.py").string() + "'");
+  ASSERT_EQ(clean.status, 0) << clean.output;
+  int flipped = 0;
+  for (const PackageFile& f : package.files) {
+    std::string text = f.content;
+    // The last digit of the file (a hex digit in .hex files, a digit of a number elsewhere).
+    const size_t at = text.find_last_of("0123456789");
+    if (at == std::string::npos) continue;
+    text[at] = text[at] == '0' ? '1' : '0';
+    write_text(pkg / f.path, text);
+    const CommandResult r = run_command("python3 '" + (pkg / "check_manifest.py").string() + "'");
+    // (The checker itself, changed, still names itself; its exit code is then its own business.)
+    if (f.path != "check_manifest.py") EXPECT_EQ(r.status, 2) << f.path << "\n" << r.output;
+    EXPECT_NE(r.output.find("check_manifest: " + f.path + ": "), std::string::npos) << f.path << "\n" << r.output;
+    write_text(pkg / f.path, f.content);
+    ++flipped;
+  }
+  EXPECT_GE(flipped, 20);
+  EXPECT_EQ(run_command("python3 '" + (pkg / "check_manifest.py").string() + "'").status, 0);
 }
 
 // A changed commands.hex (two commands swapped, the expected outputs left alone) once passed the

@@ -10,7 +10,6 @@
 # testbench runs), +cycle_bound=N.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-testbench="$here/../../testbench/vectors/rastersim_vectors_tb.v"
 rtl="${RTL_DIR:-$here/../../rtl}"
 shopt -s nullglob
 sources=("$rtl"/*.sv "$rtl"/*.v)
@@ -27,9 +26,10 @@ else
 fi
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
+testbench=("$here/../../testbench/vectors/rastersim_vectors_tb.v" "$here/../../testbench/vectors/rastersim_memory_model.v")
 # shellcheck disable=SC2086  # SIM_FLAGS is a list of words
 if ! iverilog -g2012 -I "$here" -I "$rtl" -s rastersim_vectors_tb ${SIM_FLAGS:-} -o "$work/tb.vvp" \
-    "$testbench" "${sources[@]}"; then
+    "${testbench[@]}" "${sources[@]}"; then
   exit 2
 fi
 cd "$here"

@@ -12,6 +12,8 @@ localparam integer Z_GUARD_BITS = 0;  // 0: the RTL derives it
 localparam integer MEMORY_LATENCY = 5;  // cfg_memory_latency and MAX_MEMORY_LATENCY
 localparam integer SETUP_FIFO_DEPTH = 8;  // cfg_setup_fifo_depth and MAX_SETUP_FIFO_DEPTH
 localparam integer SETUP_INTERVAL = 4;  // 0: serial setup; I: pipelined
+localparam integer MEMORY_STALL_PERCENT = 0;  // the memory model's back-pressure
+localparam integer MEMORY_STALL_SEED = 1;
 
 // Port and record widths (manifest.json "widths").
 localparam integer COORD_BITS = 11;

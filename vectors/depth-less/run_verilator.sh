@@ -10,7 +10,6 @@
 # testbench runs), +cycle_bound=N.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-testbench="$here/../../testbench/vectors/rastersim_vectors_tb.v"
 rtl="${RTL_DIR:-$here/../../rtl}"
 shopt -s nullglob
 sources=("$rtl"/*.sv "$rtl"/*.v)
@@ -27,9 +26,10 @@ else
 fi
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
+testbench=("$here/../../testbench/vectors/rastersim_vectors_tb.v" "$here/../../testbench/vectors/rastersim_memory_model.v")
 # shellcheck disable=SC2086  # SIM_FLAGS is a list of words
 if ! verilator --binary --trace -j "$(nproc)" -Wno-fatal -Wno-lint -Wno-style --top-module rastersim_vectors_tb \
-    -I"$here" -I"$rtl" ${SIM_FLAGS:-} --Mdir "$work/obj" -o tb "$testbench" "${sources[@]}" \
+    -I"$here" -I"$rtl" ${SIM_FLAGS:-} --Mdir "$work/obj" -o tb "${testbench[@]}" "${sources[@]}" \
     > "$work/build.log" 2>&1; then
   cat "$work/build.log" >&2
   exit 2

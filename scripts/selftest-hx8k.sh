@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# The board self-test of a small whole-core configuration on an iCE40 HX8K (docs/performance.md,
+# "The whole core on one iCE40 HX8K"): writes a test-vector package of the depth suite at the
+# profile below, simulates its self-test in Icarus (it must print "selftest: PASS"), builds its
+# bitstream with the package's build_selftest_hx8k.sh (yosys, nextpnr-ice40 seed 1, icepack) and
+# fails unless it fits the device and its Fmax is at least MIN_MHZ (the documented figure).
+# Usage: scripts/selftest-hx8k.sh [RASTERSIM] [MIN_MHZ]   (defaults: build/rastersim, 27)
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+exe="${1:-$root/build/rastersim}"
+min_mhz="${2:-27}"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+# The small profile: 32 x 24, S = 2, N = 16, the serial setup unit, memory latency 1, one record.
+profile=(--width 32 --height 24 --subpixel-bits 2 --z-bits 16 --setup-interval 0 --memory-latency 1
+         --setup-fifo-depth 1)
+"$exe" vectors --suite depth "${profile[@]}" --out "$work/package" > /dev/null
+echo "selftest-hx8k: package: rastersim vectors --suite depth ${profile[*]}"
+if ! "$work/package/run_selftest_icarus.sh" > "$work/icarus.log" 2>&1; then
+  cat "$work/icarus.log"
+  echo "selftest-hx8k: the self-test does not pass in Icarus"
+  exit 1
+fi
+grep '^selftest:' "$work/icarus.log"
+if ! OUT="$work/hx8k" "$work/package/build_selftest_hx8k.sh" > "$work/build.log" 2>&1; then
+  cat "$work/build.log"
+  echo "selftest-hx8k: no bitstream (see above)"
+  exit 1
+fi
+cat "$work/build.log"
+cells=$(awk '/ICESTORM_LC:/ { print $2 }' "$work/hx8k/nextpnr.log" | tail -n 1)
+mhz=$(grep -E "Max frequency for clock" "$work/hx8k/nextpnr.log" | tail -n 1 | sed -E 's/.*: ([0-9.]+) MHz.*/\1/')
+echo "selftest-hx8k: $cells logic cells of the HX8K, Fmax $mhz MHz (at least $min_mhz required)"
+if ! awk -v f="$mhz" -v m="$min_mhz" 'BEGIN { exit !(f >= m) }'; then
+  echo "selftest-hx8k: Fmax $mhz MHz is below the documented $min_mhz MHz"
+  exit 1
+fi
