@@ -149,11 +149,14 @@ module triangle_setup #(
   wire signed [BB-1:0] x_max = $signed({{(BB-COORD_BITS){x_max_c[COORD_BITS-1]}}, x_max_c});
   wire signed [BB-1:0] y_min = $signed({{(BB-COORD_BITS){y_min_c[COORD_BITS-1]}}, y_min_c});
   wire signed [BB-1:0] y_max = $signed({{(BB-COORD_BITS){y_max_c[COORD_BITS-1]}}, y_max_c});
+  // The extremes the box is cut from: x_min .. y_max themselves in the pipelined unit, registered
+  // copies in the serial unit (below).
+  wire signed [BB-1:0] box_x_min, box_x_max, box_y_min, box_y_max;
   // Pixel i is a candidate when its centre i 2^S + 2^(S-1) lies in [min, max].
-  wire signed [BB-1:0] bx0_num = x_min - HALF_B + ONE_LESS_B;
-  wire signed [BB-1:0] by0_num = y_min - HALF_B + ONE_LESS_B;
-  wire signed [BB-1:0] bx1_num = x_max - HALF_B;
-  wire signed [BB-1:0] by1_num = y_max - HALF_B;
+  wire signed [BB-1:0] bx0_num = box_x_min - HALF_B + ONE_LESS_B;
+  wire signed [BB-1:0] by0_num = box_y_min - HALF_B + ONE_LESS_B;
+  wire signed [BB-1:0] bx1_num = box_x_max - HALF_B;
+  wire signed [BB-1:0] by1_num = box_y_max - HALF_B;
   wire signed [BB-1:0] bx0_raw = bx0_num >>> S;
   wire signed [BB-1:0] by0_raw = by0_num >>> S;
   wire signed [BB-1:0] bx1_raw = bx1_num >>> S;
@@ -166,9 +169,15 @@ module triangle_setup #(
   // box is empty only when the whole-grid one is: no pixel centre in the box.
   wire offscreen = bx1_raw < 0 || by1_raw < 0 || bx0_raw > X_LAST_B || by0_raw > Y_LAST_B;
   wire no_centre = bx0 > bx1 || by0 > by1;
+  // The box's decision as the status takes it: the pipelined unit's FRONT cycle uses the
+  // combinational box; the serial unit computes the box in two registered steps (the extremes,
+  // then the clipped box), which takes that chain off its critical path and moves no cycle: its
+  // vertices are loaded 2 DELTA_BITS + 2 cycles before DECIDE, and the box does not change when
+  // DECIDE swaps two vertices.
+  wire box_offscreen, box_no_centre;
 
-  wire [2:0] status = area2 == 0 ? RS_STATUS_DEGENERATE : culled ? RS_STATUS_CULLED : offscreen ? RS_STATUS_OFFSCREEN
-                    : no_centre ? RS_STATUS_NO_CENTRE : RS_STATUS_DRAWN;
+  wire [2:0] status = area2 == 0 ? RS_STATUS_DEGENERATE : culled ? RS_STATUS_CULLED
+                    : box_offscreen ? RS_STATUS_OFFSCREEN : box_no_centre ? RS_STATUS_NO_CENTRE : RS_STATUS_DRAWN;
   assign decided_status = status;
   assign decided_front_facing = area2 != 0 && front_facing;
   assign decided_area2 = area2;
@@ -213,38 +222,74 @@ module triangle_setup #(
     reg [COLOR_REG_BITS-1:0] color_q [0:8];
 
     // Ordered edge deltas (the vertices are swapped in DECIDE when area2 < 0): dx = b.x - a.x and
-    // ndy = a.y - b.y, so edge_step_x = ndy 2^S and edge_step_y = dx 2^S.
+    // ndy = a.y - b.y, so edge_step_x = ndy 2^S and edge_step_y = dx 2^S. Registered: computed
+    // from the command at the accept, and when DECIDE swaps v1 and v2 the edges trade places and
+    // turn round (dx'0 = -dx2, dx'1 = -dx1, dx'2 = -dx0, ndy alike), so that no step waits for
+    // a subtraction of vertex registers.
+    reg signed [DELTA_BITS-1:0] dx_q [0:2];
+    reg signed [DELTA_BITS-1:0] ndy_q [0:2];
+    integer d;
+    always @(posedge clk) begin
+      if (load_vertices) begin
+        for (d = 0; d < 3; d = d + 1) begin
+          dx_q[d] <= DELTA_BITS'($signed(in_x[((d + 1) % 3)*COORD_BITS +: COORD_BITS]))
+                     - DELTA_BITS'($signed(in_x[d*COORD_BITS +: COORD_BITS]));
+          ndy_q[d] <= DELTA_BITS'($signed(in_y[d*COORD_BITS +: COORD_BITS]))
+                      - DELTA_BITS'($signed(in_y[((d + 1) % 3)*COORD_BITS +: COORD_BITS]));
+        end
+      end else if (swap_vertices) begin
+        for (d = 0; d < 3; d = d + 1) begin
+          dx_q[d] <= -dx_q[2 - d];
+          ndy_q[d] <= -ndy_q[2 - d];
+        end
+      end
+    end
     wire signed [DELTA_BITS-1:0] dx [0:2];
     wire signed [DELTA_BITS-1:0] ndy [0:2];
     wire [2:0] bias;                // 1 unless the edge is top or left
     genvar k;
     for (k = 0; k < 3; k = k + 1) begin : deltas
-      assign dx[k] = DELTA_BITS'(vx[(k + 1) % 3]) - DELTA_BITS'(vx[k]);
-      assign ndy[k] = DELTA_BITS'(vy[k]) - DELTA_BITS'(vy[(k + 1) % 3]);
+      assign dx[k] = dx_q[k];
+      assign ndy[k] = ndy_q[k];
       // Interior to the right (dy < 0) is a left edge; horizontal with interior below is top.
       assign bias[k] = !(ndy[k] > 0 || (ndy[k] == 0 && dx[k] > 0));
       assign out_edge_step_x[k*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS] = EDGE_STEP_X_BITS'({ndy[k], {S{1'b0}}});
       assign out_edge_step_y[k*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS] = EDGE_STEP_Y_BITS'({dx[k], {S{1'b0}}});
     end
 
-    // The operation's shape.
-    wire is_area = op_q == OP_AREA;
-    wire is_edge = op_q >= OP_EDGE && op_q < OP_SPAN;
-    wire is_span = op_q >= OP_SPAN && op_q < OP_PLANE;
-    wire is_plane = op_q >= OP_PLANE && op_q < OP_FINAL;
+    // The operation's shape, decoded into op_shape_q whenever op_q is set (from the operation it
+    // is set to), so that no step waits for the decode of op_q: {is_area, is_edge, is_span,
+    // is_plane, edge_k[1:0], span_k[1:0], span_step, plane_div, plane_p[1:0], plane_c[1:0]}.
+    localparam integer SHAPE_BITS = 14;
     /* verilator lint_off UNUSEDSIGNAL */
-    wire [5:0] edge_op = op_q - OP_EDGE;
-    wire [5:0] span_op = op_q - OP_SPAN;
-    wire [5:0] plane_op = op_q - OP_PLANE;
-    wire [1:0] edge_k = edge_op[1:0];
-    wire [1:0] span_k = span_op[2:1];
-    wire span_step = span_op[0];                  // SPAN STEP (else SPAN START)
-    wire plane_div = plane_op[0];                 // the division (else the numerator)
-    wire [3:0] plane_n = plane_op[4:1];
-    wire [1:0] plane_p = plane_n < 3 ? 2'd0 : plane_n < 6 ? 2'd1 : plane_n < 9 ? 2'd2 : 2'd3;
-    wire [3:0] plane_c_wide = plane_n - 4'(3 * plane_p);
+    function automatic [SHAPE_BITS-1:0] op_shape(input [5:0] op);
+      reg [5:0] edge_op, span_op, plane_op;
+      reg [3:0] plane_n, plane_c_wide;
+      reg [1:0] plane_p;
+      begin
+        edge_op = op - OP_EDGE;
+        span_op = op - OP_SPAN;
+        plane_op = op - OP_PLANE;
+        plane_n = plane_op[4:1];  // plane n = 3p + c: p depth, r, g, b; c start, step x, step y
+        plane_p = plane_n < 3 ? 2'd0 : plane_n < 6 ? 2'd1 : plane_n < 9 ? 2'd2 : 2'd3;
+        plane_c_wide = plane_n - 4'(3 * plane_p);
+        op_shape = {op == OP_AREA, op >= OP_EDGE && op < OP_SPAN, op >= OP_SPAN && op < OP_PLANE,
+                    op >= OP_PLANE && op < OP_FINAL, edge_op[1:0], span_op[2:1], span_op[0], plane_op[0], plane_p,
+                    plane_c_wide[1:0]};
+      end
+    endfunction
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [1:0] plane_c = plane_c_wide[1:0];
+    reg [SHAPE_BITS-1:0] op_shape_q;
+    wire is_area = op_shape_q[13];
+    wire is_edge = op_shape_q[12];
+    wire is_span = op_shape_q[11];
+    wire is_plane = op_shape_q[10];
+    wire [1:0] edge_k = op_shape_q[9:8];
+    wire [1:0] span_k = op_shape_q[7:6];
+    wire span_step = op_shape_q[5];                // SPAN STEP (else SPAN START)
+    wire plane_div = op_shape_q[4];                // the division (else the numerator)
+    wire [1:0] plane_p = op_shape_q[3:2];
+    wire [1:0] plane_c = op_shape_q[1:0];
     wire is_mul = is_area || is_edge || (is_plane && !plane_div);
     wire is_div = is_span || (is_plane && plane_div);
     wire [SB-1:0] plane_bits = plane_p == 2'd0 ? SB'(Z_BITS) : SB'(8);  // m: the vertex values' bits
@@ -284,9 +329,38 @@ module triangle_setup #(
     wire fits = !trial[AREA_BITS];
     wire quotient_bit = (fits && divisor_nonzero) ^ sign_q;
 
+    // ---- The box, in two registered steps (the vertices change only at accept and swap) ----
+    reg signed [BB-1:0] x_min_q, x_max_q, y_min_q, y_max_q;
+    always @(posedge clk) begin
+      x_min_q <= x_min;
+      x_max_q <= x_max;
+      y_min_q <= y_min;
+      y_max_q <= y_max;
+    end
+    assign box_x_min = x_min_q;
+    assign box_x_max = x_max_q;
+    assign box_y_min = y_min_q;
+    assign box_y_max = y_max_q;
+    reg signed [BB-1:0] box_x0_q, box_y0_q;  // the first candidate (its centre feeds the edge operations)
+    reg [X_BITS-1:0] box_x1_q;               // the last candidate column and row (the record's)
+    reg [Y_BITS-1:0] box_y1_q;
+    reg box_offscreen_q, box_no_centre_q;
+    always @(posedge clk) begin
+      box_x0_q <= bx0;
+      box_x1_q <= bx1[X_BITS-1:0];
+      box_y0_q <= by0;
+      box_y1_q <= by1[Y_BITS-1:0];
+      box_offscreen_q <= offscreen;
+      box_no_centre_q <= no_centre;
+    end
+    wire signed [BB-1:0] box_x0 = box_x0_q;
+    wire signed [BB-1:0] box_y0 = box_y0_q;
+    assign box_offscreen = box_offscreen_q;
+    assign box_no_centre = box_no_centre_q;
+
     // ---- Operands of the load cycle ----
-    wire signed [BB-1:0] centre_x = (bx0 <<< S) + HALF_B;
-    wire signed [BB-1:0] centre_y = (by0 <<< S) + HALF_B;
+    wire signed [BB-1:0] centre_x = (box_x0 <<< S) + HALF_B;
+    wire signed [BB-1:0] centre_y = (box_y0 <<< S) + HALF_B;
     wire signed [BB-1:0] rel_x = centre_x - BB'(vx[edge_k]);
     wire signed [BB-1:0] rel_y = centre_y - BB'(vy[edge_k]);
     wire [Z_BITS-1:0] value [0:2];  // plane p's vertex values
@@ -318,12 +392,14 @@ module triangle_setup #(
         out_q <= 1'b0;
         load_q <= 1'b0;
         op_q <= OP_AREA;
+        op_shape_q <= op_shape(OP_AREA);
       end else begin
         out_q <= 1'b0;
         if (load_vertices) begin
           active_q <= 1'b1;
           load_q <= 1'b1;
           op_q <= OP_AREA;
+          op_shape_q <= op_shape(OP_AREA);
         end else if (active_q && load_q) begin
           if (op_q == OP_FINAL) begin
             active_q <= 1'b0;
@@ -332,12 +408,14 @@ module triangle_setup #(
             active_q <= 1'b0;
           end else if (steps == 0) begin
             op_q <= op_q + 1'b1;
+            op_shape_q <= op_shape(op_q + 1'b1);
           end else begin
             load_q <= 1'b0;
           end
         end else if (active_q && left_q == SB'(1)) begin
           load_q <= 1'b1;
           op_q <= op_q + 1'b1;
+          op_shape_q <= op_shape(op_q + 1'b1);
         end
       end
     end
@@ -423,10 +501,10 @@ module triangle_setup #(
     assign out_depth_start = depth_q[0];
     assign out_depth_step_x = depth_q[1];
     assign out_depth_step_y = depth_q[2];
-    assign out_x0 = bx0[X_BITS-1:0];
-    assign out_x1 = bx1[X_BITS-1:0];
-    assign out_y0 = by0[Y_BITS-1:0];
-    assign out_y1 = by1[Y_BITS-1:0];
+    assign out_x0 = box_x0[X_BITS-1:0];
+    assign out_x1 = box_x1_q;
+    assign out_y0 = box_y0[Y_BITS-1:0];
+    assign out_y1 = box_y1_q;
     assign out_flat_rgb = vrgb[0];
   end else begin : pipelined
     // ---- FRONT: the area's two products (delta_bits x delta_bits), the only ones in one cycle ----
@@ -464,6 +542,12 @@ module triangle_setup #(
 
     // The first candidate's centre, >= 0 and < 2^(COORD_BITS-1) (on screen): the top bit is a sign copy.
     /* verilator lint_off UNUSEDSIGNAL */
+    assign box_x_min = x_min;
+    assign box_x_max = x_max;
+    assign box_y_min = y_min;
+    assign box_y_max = y_max;
+    assign box_offscreen = offscreen;
+    assign box_no_centre = no_centre;
     wire signed [BB-1:0] centre_x = (bx0 <<< S) + HALF_B;
     wire signed [BB-1:0] centre_y = (by0 <<< S) + HALF_B;
     /* verilator lint_on UNUSEDSIGNAL */

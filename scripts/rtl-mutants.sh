@@ -62,7 +62,7 @@ to[hazard_address_bit]='if (live[k] && ring_pixel_q[k][PIXEL_BITS-1:1] == frag_p
 from[ring_read_slot]='ram_read_q <= ring_data_q[next_done_slot];'
 to[ring_read_slot]='ram_read_q <= ring_data_q[done_slot];'  # the in-flight RAM read a cycle late
 # The serial setup unit.
-for m in serial_floor serial_remainder_correction serial_multiplier_bits serial_bias_carry; do
+for m in serial_floor serial_remainder_correction serial_multiplier_bits serial_bias_carry serial_swap_deltas; do
   file[$m]=triangle_setup.sv
   params[$m]="-GSETUP_INTERVAL=0"
 done
@@ -74,6 +74,8 @@ from[serial_multiplier_bits]=': is_edge ? SB'"'"'(2 * (COORD_BITS + 1))'
 to[serial_multiplier_bits]=': is_edge ? SB'"'"'(2 * COORD_BITS)'  # the edge products one multiplier bit short
 from[serial_bias_carry]='+ H'"'"'(subtract || (bit_now && use_start && bias[weight_k]));'
 to[serial_bias_carry]='+ H'"'"'(subtract);'  # the start numerators use the biased edge values
+from[serial_swap_deltas]='dx_q[d] <= -dx_q[2 - d];'
+to[serial_swap_deltas]='dx_q[d] <= dx_q[2 - d];'  # the swapped edges keep their x direction
 # The pipelined setup unit and the record FIFO.
 for m in setup_slot_counter setup_floor_correction setup_missing_step setup_credit_count setup_fifo_empty setup_edge_sign \
          setup_offscreen_rows; do
