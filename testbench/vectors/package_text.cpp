@@ -279,7 +279,7 @@ std::string selftest_hx8k_script(const PackageFacts& k) {
          "mkdir -p \"$out\"\n"
          "cd \"$here\"  # $readmemh reads commands.hex and selftest.hex from here\n"
          "if ! yosys -q -l \"$out/yosys.log\" -p \"read_verilog -sv -I$here -I$rtl $selftest ${sources[*]}; \\\n"
-         "    synth_ice40 -top rastersim_selftest -json $out/selftest.json\"; then\n"
+         "    synth_ice40 -top rastersim_selftest -json $out/selftest.json\" 2> \"$out/yosys.warnings\"; then\n"
          "  echo \"$0: yosys failed (log: $out/yosys.log)\" >&2\n"
          "  exit 2\n"
          "fi\n"

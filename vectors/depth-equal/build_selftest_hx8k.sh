@@ -27,7 +27,7 @@ out="${OUT:-$here/selftest_hx8k}"
 mkdir -p "$out"
 cd "$here"  # $readmemh reads commands.hex and selftest.hex from here
 if ! yosys -q -l "$out/yosys.log" -p "read_verilog -sv -I$here -I$rtl $selftest ${sources[*]}; \
-    synth_ice40 -top rastersim_selftest -json $out/selftest.json"; then
+    synth_ice40 -top rastersim_selftest -json $out/selftest.json" 2> "$out/yosys.warnings"; then
   echo "$0: yosys failed (log: $out/yosys.log)" >&2
   exit 2
 fi
