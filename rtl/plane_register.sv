@@ -29,10 +29,10 @@ module plane_register #(
     $error("plane_register: need GUARD_BITS, OUT_BITS, OFFSET_BITS >= 1 and OUT_BITS + GUARD_BITS + 1 <= REG_BITS <= 64");
   end
 `endif
-  reg [REG_BITS-1:0] value, row, step_x_q, step_y_q;
+  reg [REG_BITS-1:0] value_q, row_q, step_x_q, step_y_q;
 
   // Products and sums are taken modulo 2^REG_BITS: the register wraps by design.
-  wire [REG_BITS-1:0] next_row_value = row + step_y_q;
+  wire [REG_BITS-1:0] next_row_value = row_q + step_y_q;
   // Only the low REG_BITS of the product matter (modular register).
   /* verilator lint_off UNUSEDSIGNAL */
   // The operand follows from_record, not load, so that the product does not wait for the handshake.
@@ -42,25 +42,25 @@ module plane_register #(
 
   always @(posedge clk) begin
     if (load) begin
-      value <= start + offset_product[REG_BITS-1:0];
-      row <= start;
+      value_q <= start + offset_product[REG_BITS-1:0];
+      row_q <= start;
       step_x_q <= step_x_in;
       step_y_q <= step_y_in;
     end else if (row_enter) begin
-      value <= next_row_value + offset_product[REG_BITS-1:0];
-      row <= next_row_value;
+      value_q <= next_row_value + offset_product[REG_BITS-1:0];
+      row_q <= next_row_value;
     end else if (next_row) begin
-      value <= next_row_value;
-      row <= next_row_value;
+      value_q <= next_row_value;
+      row_q <= next_row_value;
     end else if (step_x) begin
-      value <= value + step_x_q;
+      value_q <= value_q + step_x_q;
     end
   end
 
   localparam integer ROUNDED_BITS = REG_BITS - GUARD_BITS;
   // The fraction bits are dropped by the rounding shift.
   /* verilator lint_off UNUSEDSIGNAL */
-  wire [REG_BITS-1:0] biased = value + {{(REG_BITS-GUARD_BITS){1'b0}}, 1'b1, {(GUARD_BITS-1){1'b0}}};
+  wire [REG_BITS-1:0] biased = value_q + {{(REG_BITS-GUARD_BITS){1'b0}}, 1'b1, {(GUARD_BITS-1){1'b0}}};
   /* verilator lint_on UNUSEDSIGNAL */
   wire signed [ROUNDED_BITS-1:0] rounded = biased[REG_BITS-1:GUARD_BITS];
   wire [ROUNDED_BITS-1:0] out_max = {{(ROUNDED_BITS-OUT_BITS){1'b0}}, {OUT_BITS{1'b1}}};

@@ -146,13 +146,13 @@ module rastersim_core #(
   // Record credits (docs/cycle-model.md): a triangle holds one from its accept until it is rejected
   // or its record is loaded by the walker; the setup unit accepts only while one is free.
   localparam integer CREDIT_BITS = rs_ubits32(MAX_SETUP_FIFO_DEPTH);
-  reg [CREDIT_BITS-1:0] credits_held;
-  wire credit_free = credits_held < setup_fifo_depth_q;
+  reg [CREDIT_BITS-1:0] credits_held_q;
+  wire credit_free = credits_held_q < setup_fifo_depth_q;
   wire accept = cmd_valid && cmd_ready;
   wire rejected = trace_setup_decided && trace_setup_status != RS_STATUS_DRAWN;
   always @(posedge clk) begin
-    if (rst) credits_held <= {CREDIT_BITS{1'b0}};
-    else credits_held <= credits_held + {{(CREDIT_BITS-1){1'b0}}, accept}
+    if (rst) credits_held_q <= {CREDIT_BITS{1'b0}};
+    else credits_held_q <= credits_held_q + {{(CREDIT_BITS-1){1'b0}}, accept}
                          - {{(CREDIT_BITS-1){1'b0}}, rejected} - {{(CREDIT_BITS-1){1'b0}}, trace_walker_load};
   end
 

@@ -82,36 +82,36 @@ module scanline_walker #(
   wire [3*SPAN_REM_BITS-1:0] in_span_step_rem = in_record[LSB_SPAN_STEP_REM +: 3*SPAN_REM_BITS];
 
   wire span_traversal = cfg_traversal == RS_TRAVERSAL_SPAN;
-  reg walking;  // a triangle is loaded and not finished
+  reg walking_q;  // a triangle is loaded and not finished
 
-  reg [X_BITS-1:0] x0, x1, x_end;
-  reg [Y_BITS-1:0] y1;
-  reg          row_empty;                // span: the current row has no covered pixel
-  reg signed [EDGE_BITS-1:0]  edge_row [0:2];    // edge value at x0: bbox the current row, span the next
-  reg signed [EDGE_BITS-1:0]  edge_value [0:2];  // bbox: edge value at (x, y)
-  reg signed [EDGE_BITS-1:0]  step_x [0:2];     // sign-extended to EDGE_BITS at load
-  reg signed [EDGE_BITS-1:0]  step_y [0:2];
-  reg signed [EDGE_BITS-1:0]  quot [0:2];        // span DDA of the next row: floor(edge_row / d), d = |step_x|
-  reg [SPAN_REM_BITS-1:0]         rem [0:2];         // edge_row - quot * d, in [0, d)
-  reg signed [EDGE_BITS-1:0]  step_quot [0:2];
-  reg [SPAN_REM_BITS-1:0]         step_rem [0:2];
-  reg [SPAN_REM_BITS-1:0]         divisor [0:2];
+  reg [X_BITS-1:0] x0_q, x1_q, x_end_q;
+  reg [Y_BITS-1:0] y1_q;
+  reg          row_empty_q;                // span: the current row has no covered pixel
+  reg signed [EDGE_BITS-1:0]  edge_row_q [0:2];    // edge value at x0: bbox the current row, span the next
+  reg signed [EDGE_BITS-1:0]  edge_value_q [0:2];  // bbox: edge value at (x, y)
+  reg signed [EDGE_BITS-1:0]  step_x_q [0:2];     // sign-extended to EDGE_BITS at load
+  reg signed [EDGE_BITS-1:0]  step_y_q [0:2];
+  reg signed [EDGE_BITS-1:0]  quot_q [0:2];        // span DDA of the next row: floor(edge_row / d), d = |step_x|
+  reg [SPAN_REM_BITS-1:0]         rem_q [0:2];         // edge_row - quot * d, in [0, d)
+  reg signed [EDGE_BITS-1:0]  step_quot_q [0:2];
+  reg [SPAN_REM_BITS-1:0]         step_rem_q [0:2];
+  reg [SPAN_REM_BITS-1:0]         divisor_q [0:2];
 
   // ---- the current candidate ----
-  wire covered = !edge_value[0][EDGE_BITS-1] && !edge_value[1][EDGE_BITS-1] && !edge_value[2][EDGE_BITS-1];
-  assign frag_valid = walking && (span_traversal ? !row_empty : covered);
-  wire advance = walking && (frag_ready || !frag_valid);
-  wire row_done = span_traversal ? row_empty || frag_x == x_end : frag_x == x1;
-  reg  last_row;  // frag_y == y1, kept as a register (set with frag_y)
-  assign last = advance && row_done && last_row;
-  assign in_ready = !walking || last;
+  wire covered = !edge_value_q[0][EDGE_BITS-1] && !edge_value_q[1][EDGE_BITS-1] && !edge_value_q[2][EDGE_BITS-1];
+  assign frag_valid = walking_q && (span_traversal ? !row_empty_q : covered);
+  wire advance = walking_q && (frag_ready || !frag_valid);
+  wire row_done = span_traversal ? row_empty_q || frag_x == x_end_q : frag_x == x1_q;
+  reg  last_row_q;  // frag_y == y1, kept as a register (set with frag_y)
+  assign last = advance && row_done && last_row_q;
+  assign in_ready = !walking_q || last;
   wire load = in_valid && in_ready;
-  wire next_row = advance && row_done && !last_row;
+  wire next_row = advance && row_done && !last_row_q;
 
   // ---- the DDA and span of the row about to start: the record's first row while the walker is
   // idle or on its last row (a load can only happen then), else the registers' next row. The choice
   // does not wait for the z-buffer's ready: `load` and `next_row` only enable the registers. ----
-  wire use_record = !walking || last_row;
+  wire use_record = !walking_q || last_row_q;
   wire signed [EDGE_BITS-1:0] src_edge_row [0:2];
   wire signed [EDGE_BITS-1:0] src_step_x [0:2];
   wire signed [EDGE_BITS-1:0] src_step_y [0:2];
@@ -127,14 +127,14 @@ module scanline_walker #(
       wire signed [EDGE_BITS-1:0] in_step_y_wide = $signed({{(EDGE_BITS-EDGE_STEP_Y_BITS){in_edge_step_y[g*EDGE_STEP_Y_BITS + EDGE_STEP_Y_BITS - 1]}}, in_edge_step_y[g*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]});
       wire signed [EDGE_BITS-1:0] in_step_quot_wide = $signed({{(EDGE_BITS-EDGE_STEP_Y_BITS){in_span_step_quot[g*EDGE_STEP_Y_BITS + EDGE_STEP_Y_BITS - 1]}}, in_span_step_quot[g*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]});
       wire [SPAN_REM_BITS-1:0] in_divisor = in_edge_step_x[g*EDGE_STEP_X_BITS + EDGE_STEP_X_BITS - 1] ? -in_edge_step_x[g*EDGE_STEP_X_BITS +: SPAN_REM_BITS] : in_edge_step_x[g*EDGE_STEP_X_BITS +: SPAN_REM_BITS];
-      assign src_edge_row[g] = use_record ? in_edge_start[g*EDGE_BITS +: EDGE_BITS] : edge_row[g];
-      assign src_step_x[g] = use_record ? in_step_x_wide : step_x[g];
-      assign src_step_y[g] = use_record ? in_step_y_wide : step_y[g];
-      assign src_quot[g] = use_record ? in_span_quot[g*EDGE_BITS +: EDGE_BITS] : quot[g];
-      assign src_rem[g] = use_record ? in_span_rem[g*SPAN_REM_BITS +: SPAN_REM_BITS] : rem[g];
-      assign src_step_quot[g] = use_record ? in_step_quot_wide : step_quot[g];
-      assign src_step_rem[g] = use_record ? in_span_step_rem[g*SPAN_REM_BITS +: SPAN_REM_BITS] : step_rem[g];
-      assign src_divisor[g] = use_record ? in_divisor : divisor[g];
+      assign src_edge_row[g] = use_record ? in_edge_start[g*EDGE_BITS +: EDGE_BITS] : edge_row_q[g];
+      assign src_step_x[g] = use_record ? in_step_x_wide : step_x_q[g];
+      assign src_step_y[g] = use_record ? in_step_y_wide : step_y_q[g];
+      assign src_quot[g] = use_record ? in_span_quot[g*EDGE_BITS +: EDGE_BITS] : quot_q[g];
+      assign src_rem[g] = use_record ? in_span_rem[g*SPAN_REM_BITS +: SPAN_REM_BITS] : rem_q[g];
+      assign src_step_quot[g] = use_record ? in_step_quot_wide : step_quot_q[g];
+      assign src_step_rem[g] = use_record ? in_span_step_rem[g*SPAN_REM_BITS +: SPAN_REM_BITS] : step_rem_q[g];
+      assign src_divisor[g] = use_record ? in_divisor : divisor_q[g];
     end
   endgenerate
   // Left edges have step_x > 0, right ones < 0: the step's sign and a zero test, registered at load
@@ -149,8 +149,8 @@ module scanline_walker #(
   endgenerate
   assign src_left = use_record ? in_left : left_q;
   assign src_right = use_record ? in_right : right_q;
-  wire [X_BITS-1:0] src_x0 = use_record ? in_x0 : x0;
-  wire [X_BITS-1:0] src_x1 = use_record ? in_x1 : x1;
+  wire [X_BITS-1:0] src_x0 = use_record ? in_x0 : x0_q;
+  wire [X_BITS-1:0] src_x1 = use_record ? in_x1 : x1_q;
 
   // Span bounds: offsets t from x0 with every edge >= 0, on X_BITS + 1 bits: each edge's bound is
   // saturated first (a bound at or beyond 2^X_BITS only ever means "outside the box", as the box's last
@@ -199,44 +199,44 @@ module scanline_walker #(
   assign candidate = advance && (frag_valid || !span_traversal);
 
   always @(posedge clk) begin
-    if (rst) walking <= 1'b0;
-    else if (load) walking <= 1'b1;
-    else if (last) walking <= 1'b0;
+    if (rst) walking_q <= 1'b0;
+    else if (load) walking_q <= 1'b1;
+    else if (last) walking_q <= 1'b0;
   end
 
   // Counters and edge registers (no reset: loaded in the load cycle before use).
   integer i;
   always @(posedge clk) begin
     if (load) begin
-      x0 <= in_x0;
-      x1 <= in_x1;
-      y1 <= in_y1;
+      x0_q <= in_x0;
+      x1_q <= in_x1;
+      y1_q <= in_y1;
       frag_x <= in_x0;
       frag_y <= in_y0;
-      last_row <= in_y0 == in_y1;
+      last_row_q <= in_y0 == in_y1;
       left_q <= in_left;
       right_q <= in_right;
       for (i = 0; i < 3; i = i + 1) begin
-        edge_row[i] <= src_edge_row[i];
-        edge_value[i] <= src_edge_row[i];
-        step_x[i] <= src_step_x[i];
-        step_y[i] <= src_step_y[i];
-        step_quot[i] <= src_step_quot[i];
-        step_rem[i] <= src_step_rem[i];
-        divisor[i] <= src_divisor[i];
+        edge_row_q[i] <= src_edge_row[i];
+        edge_value_q[i] <= src_edge_row[i];
+        step_x_q[i] <= src_step_x[i];
+        step_y_q[i] <= src_step_y[i];
+        step_quot_q[i] <= src_step_quot[i];
+        step_rem_q[i] <= src_step_rem[i];
+        divisor_q[i] <= src_divisor[i];
       end
     end else if (advance) begin
       if (!row_done) begin
         frag_x <= frag_x + 1'b1;
-        for (i = 0; i < 3; i = i + 1) edge_value[i] <= edge_value[i] + step_x[i];
-      end else if (!last_row) begin
+        for (i = 0; i < 3; i = i + 1) edge_value_q[i] <= edge_value_q[i] + step_x_q[i];
+      end else if (!last_row_q) begin
         frag_y <= frag_y + 1'b1;
-        last_row <= frag_y + 1'b1 == y1;
+        last_row_q <= frag_y + 1'b1 == y1_q;
         if (!span_traversal) begin
-          frag_x <= x0;
+          frag_x <= x0_q;
           for (i = 0; i < 3; i = i + 1) begin
-            edge_row[i] <= edge_row[i] + step_y[i];
-            edge_value[i] <= edge_row[i] + step_y[i];
+            edge_row_q[i] <= edge_row_q[i] + step_y_q[i];
+            edge_value_q[i] <= edge_row_q[i] + step_y_q[i];
           end
         end
       end
@@ -244,21 +244,21 @@ module scanline_walker #(
     if (enter_span_row) begin
       // The row about to start: its span; the DDA steps every edge to the row after it.
       frag_x <= src_x0 + span_lo[X_BITS-1:0];
-      x_end <= src_x0 + span_hi;
-      row_empty <= !span_nonempty;
+      x_end_q <= src_x0 + span_hi;
+      row_empty_q <= !span_nonempty;
       for (i = 0; i < 3; i = i + 1) begin
-        edge_row[i] <= src_edge_row[i] + src_step_y[i];
+        edge_row_q[i] <= src_edge_row[i] + src_step_y[i];
         if (src_left[i] || src_right[i]) begin
           if ({1'b0, src_rem[i]} + {1'b0, src_step_rem[i]} >= {1'b0, src_divisor[i]}) begin
-            rem[i] <= src_rem[i] + src_step_rem[i] - src_divisor[i];
-            quot[i] <= src_quot[i] + src_step_quot[i] + CARRY;  // all EDGE_BITS bits: modular, sign-agnostic
+            rem_q[i] <= src_rem[i] + src_step_rem[i] - src_divisor[i];
+            quot_q[i] <= src_quot[i] + src_step_quot[i] + CARRY;  // all EDGE_BITS bits: modular, sign-agnostic
           end else begin
-            rem[i] <= src_rem[i] + src_step_rem[i];
-            quot[i] <= src_quot[i] + src_step_quot[i];
+            rem_q[i] <= src_rem[i] + src_step_rem[i];
+            quot_q[i] <= src_quot[i] + src_step_quot[i];
           end
         end else begin
-          rem[i] <= src_rem[i];
-          quot[i] <= src_quot[i];
+          rem_q[i] <= src_rem[i];
+          quot_q[i] <= src_quot[i];
         end
       end
     end

@@ -21,26 +21,26 @@ module setup_fifo #(
   localparam integer LAST_INDEX = ENTRIES - 1;
   localparam [INDEX_BITS-1:0] LAST = LAST_INDEX[INDEX_BITS-1:0];
 
-  reg [RECORD_BITS-1:0] entries [0:ENTRIES-1];
-  reg [INDEX_BITS-1:0] read_index, write_index;
-  reg [COUNT_BITS-1:0] count;
+  reg [RECORD_BITS-1:0] entries_q [0:ENTRIES-1];
+  reg [INDEX_BITS-1:0] read_index_q, write_index_q;
+  reg [COUNT_BITS-1:0] count_q;
 
-  assign empty = count == {COUNT_BITS{1'b0}};
-  assign head = entries[read_index];
+  assign empty = count_q == {COUNT_BITS{1'b0}};
+  assign head = entries_q[read_index_q];
 
   always @(posedge clk) begin
     if (rst) begin
-      read_index <= {INDEX_BITS{1'b0}};
-      write_index <= {INDEX_BITS{1'b0}};
-      count <= {COUNT_BITS{1'b0}};
+      read_index_q <= {INDEX_BITS{1'b0}};
+      write_index_q <= {INDEX_BITS{1'b0}};
+      count_q <= {COUNT_BITS{1'b0}};
     end else begin
-      if (push) write_index <= write_index == LAST ? {INDEX_BITS{1'b0}} : write_index + 1'b1;
-      if (pop) read_index <= read_index == LAST ? {INDEX_BITS{1'b0}} : read_index + 1'b1;
-      if (push && !pop) count <= count + 1'b1;
-      else if (pop && !push) count <= count - 1'b1;
+      if (push) write_index_q <= write_index_q == LAST ? {INDEX_BITS{1'b0}} : write_index_q + 1'b1;
+      if (pop) read_index_q <= read_index_q == LAST ? {INDEX_BITS{1'b0}} : read_index_q + 1'b1;
+      if (push && !pop) count_q <= count_q + 1'b1;
+      else if (pop && !push) count_q <= count_q - 1'b1;
     end
   end
 
   // Storage (no reset: an entry is written before it is read).
-  always @(posedge clk) if (push) entries[write_index] <= push_data;
+  always @(posedge clk) if (push) entries_q[write_index_q] <= push_data;
 endmodule

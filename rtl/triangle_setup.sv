@@ -123,10 +123,10 @@ module triangle_setup #(
   wire swap_vertices;  // order the vertices so that area2 > 0 (v1 and v2 trade places)
 
   // Vertices as accepted.
-  reg signed [COORD_BITS-1:0] vx [0:2];
-  reg signed [COORD_BITS-1:0] vy [0:2];
-  reg [Z_BITS-1:0]    vz [0:2];
-  reg [23:0]          vrgb [0:2];
+  reg signed [COORD_BITS-1:0] vx_q [0:2];
+  reg signed [COORD_BITS-1:0] vy_q [0:2];
+  reg [Z_BITS-1:0]    vz_q [0:2];
+  reg [23:0]          vrgb_q [0:2];
 
   // ---- FRONT: area, facing, cull, bounding box (from the registered vertices) ----
   // Twice the signed area of the vertices as accepted, s.2S: combinational in the pipelined unit's
@@ -137,14 +137,14 @@ module triangle_setup #(
   wire culled = (cfg_cull == RS_CULL_BACK && !front_facing) || (cfg_cull == RS_CULL_FRONT && front_facing);
   wire swap = area2[AREA_BITS-1];  // order the vertices so that area2 > 0
 
-  wire signed [COORD_BITS-1:0] x_min01 = vx[0] < vx[1] ? vx[0] : vx[1];
-  wire signed [COORD_BITS-1:0] x_max01 = vx[0] > vx[1] ? vx[0] : vx[1];
-  wire signed [COORD_BITS-1:0] y_min01 = vy[0] < vy[1] ? vy[0] : vy[1];
-  wire signed [COORD_BITS-1:0] y_max01 = vy[0] > vy[1] ? vy[0] : vy[1];
-  wire signed [COORD_BITS-1:0] x_min_c = x_min01 < vx[2] ? x_min01 : vx[2];
-  wire signed [COORD_BITS-1:0] x_max_c = x_max01 > vx[2] ? x_max01 : vx[2];
-  wire signed [COORD_BITS-1:0] y_min_c = y_min01 < vy[2] ? y_min01 : vy[2];
-  wire signed [COORD_BITS-1:0] y_max_c = y_max01 > vy[2] ? y_max01 : vy[2];
+  wire signed [COORD_BITS-1:0] x_min01 = vx_q[0] < vx_q[1] ? vx_q[0] : vx_q[1];
+  wire signed [COORD_BITS-1:0] x_max01 = vx_q[0] > vx_q[1] ? vx_q[0] : vx_q[1];
+  wire signed [COORD_BITS-1:0] y_min01 = vy_q[0] < vy_q[1] ? vy_q[0] : vy_q[1];
+  wire signed [COORD_BITS-1:0] y_max01 = vy_q[0] > vy_q[1] ? vy_q[0] : vy_q[1];
+  wire signed [COORD_BITS-1:0] x_min_c = x_min01 < vx_q[2] ? x_min01 : vx_q[2];
+  wire signed [COORD_BITS-1:0] x_max_c = x_max01 > vx_q[2] ? x_max01 : vx_q[2];
+  wire signed [COORD_BITS-1:0] y_min_c = y_min01 < vy_q[2] ? y_min01 : vy_q[2];
+  wire signed [COORD_BITS-1:0] y_max_c = y_max01 > vy_q[2] ? y_max01 : vy_q[2];
   wire signed [BB-1:0] x_min = $signed({{(BB-COORD_BITS){x_min_c[COORD_BITS-1]}}, x_min_c});
   wire signed [BB-1:0] x_max = $signed({{(BB-COORD_BITS){x_max_c[COORD_BITS-1]}}, x_max_c});
   wire signed [BB-1:0] y_min = $signed({{(BB-COORD_BITS){y_min_c[COORD_BITS-1]}}, y_min_c});
@@ -361,13 +361,13 @@ module triangle_setup #(
     // ---- Operands of the load cycle ----
     wire signed [BB-1:0] centre_x = (box_x0 <<< S) + HALF_B;
     wire signed [BB-1:0] centre_y = (box_y0 <<< S) + HALF_B;
-    wire signed [BB-1:0] rel_x = centre_x - BB'(vx[edge_k]);
-    wire signed [BB-1:0] rel_y = centre_y - BB'(vy[edge_k]);
+    wire signed [BB-1:0] rel_x = centre_x - BB'(vx_q[edge_k]);
+    wire signed [BB-1:0] rel_y = centre_y - BB'(vy_q[edge_k]);
     wire [Z_BITS-1:0] value [0:2];  // plane p's vertex values
     genvar v;
     for (v = 0; v < 3; v = v + 1) begin : values
-      wire [7:0] color = plane_p == 2'd1 ? vrgb[v][23:16] : plane_p == 2'd2 ? vrgb[v][15:8] : vrgb[v][7:0];
-      assign value[v] = plane_p == 2'd0 ? vz[v] : Z_BITS'(color);
+      wire [7:0] color = plane_p == 2'd1 ? vrgb_q[v][23:16] : plane_p == 2'd2 ? vrgb_q[v][15:8] : vrgb_q[v][7:0];
+      assign value[v] = plane_p == 2'd0 ? vz_q[v] : Z_BITS'(color);
     end
     wire signed [DELTA_BITS-1:0] span_dividend_small = dx[span_k];
     wire signed [H-1:0] span_dividend = span_step ? H'(span_dividend_small) : H'(start_q[span_k]);
@@ -505,13 +505,13 @@ module triangle_setup #(
     assign out_x1 = box_x1_q;
     assign out_y0 = box_y0[Y_BITS-1:0];
     assign out_y1 = box_y1_q;
-    assign out_flat_rgb = vrgb[0];
+    assign out_flat_rgb = vrgb_q[0];
   end else begin : pipelined
     // ---- FRONT: the area's two products (delta_bits x delta_bits), the only ones in one cycle ----
-    wire signed [DELTA_BITS-1:0] d10x = vx[1] - vx[0];
-    wire signed [DELTA_BITS-1:0] d10y = vy[1] - vy[0];
-    wire signed [DELTA_BITS-1:0] d20x = vx[2] - vx[0];
-    wire signed [DELTA_BITS-1:0] d20y = vy[2] - vy[0];
+    wire signed [DELTA_BITS-1:0] d10x = vx_q[1] - vx_q[0];
+    wire signed [DELTA_BITS-1:0] d10y = vy_q[1] - vy_q[0];
+    wire signed [DELTA_BITS-1:0] d20x = vx_q[2] - vx_q[0];
+    wire signed [DELTA_BITS-1:0] d20y = vy_q[2] - vy_q[0];
     wire signed [2*DELTA_BITS-1:0] cross_a = d10x * d20y;
     wire signed [2*DELTA_BITS-1:0] cross_b = d20x * d10y;
     // |area2| <= 9 W H M^2 fits AREA_BITS bits (docs/widths.md): the top bits are sign copies.
@@ -527,18 +527,18 @@ module triangle_setup #(
     wire signed [COORD_BITS-1:0] oy [0:2];
     wire [Z_BITS-1:0]    oz [0:2];
     wire [23:0]          orgb [0:2];
-    assign ox[0] = vx[0];
-    assign oy[0] = vy[0];
-    assign oz[0] = vz[0];
-    assign orgb[0] = vrgb[0];
-    assign ox[1] = swap ? vx[2] : vx[1];
-    assign oy[1] = swap ? vy[2] : vy[1];
-    assign oz[1] = swap ? vz[2] : vz[1];
-    assign orgb[1] = swap ? vrgb[2] : vrgb[1];
-    assign ox[2] = swap ? vx[1] : vx[2];
-    assign oy[2] = swap ? vy[1] : vy[2];
-    assign oz[2] = swap ? vz[1] : vz[2];
-    assign orgb[2] = swap ? vrgb[1] : vrgb[2];
+    assign ox[0] = vx_q[0];
+    assign oy[0] = vy_q[0];
+    assign oz[0] = vz_q[0];
+    assign orgb[0] = vrgb_q[0];
+    assign ox[1] = swap ? vx_q[2] : vx_q[1];
+    assign oy[1] = swap ? vy_q[2] : vy_q[1];
+    assign oz[1] = swap ? vz_q[2] : vz_q[1];
+    assign orgb[1] = swap ? vrgb_q[2] : vrgb_q[1];
+    assign ox[2] = swap ? vx_q[1] : vx_q[2];
+    assign oy[2] = swap ? vy_q[1] : vy_q[2];
+    assign oz[2] = swap ? vz_q[1] : vz_q[2];
+    assign orgb[2] = swap ? vrgb_q[1] : vrgb_q[2];
 
     // The first candidate's centre, >= 0 and < 2^(COORD_BITS-1) (on screen): the top bit is a sign copy.
     /* verilator lint_off UNUSEDSIGNAL */
@@ -668,7 +668,7 @@ module triangle_setup #(
     end
     wire [PAY-1:0] front_pay = {bx0[X_BITS-1:0], bx1[X_BITS-1:0], by0[Y_BITS-1:0], by1[Y_BITS-1:0], {(3*EDGE_BITS){1'b0}},
                                 edge_step_x[2], edge_step_x[1], edge_step_x[0],
-                                edge_step_y[2], edge_step_y[1], edge_step_y[0], vrgb[0], area};
+                                edge_step_y[2], edge_step_y[1], edge_step_y[0], vrgb_q[0], area};
 
     // ---- Edge slots: E = 2 E + (rel_y bit ? dx : 0) + (rel_x bit ? ndy : 0), MSB first ----
     // The first real step takes the sign bits, which weigh -2^(RLB-1): it subtracts.
@@ -986,20 +986,20 @@ module triangle_setup #(
   always @(posedge clk) begin
     if (load_vertices) begin
       for (v = 0; v < 3; v = v + 1) begin
-        vx[v] <= in_x[v*COORD_BITS +: COORD_BITS];
-        vy[v] <= in_y[v*COORD_BITS +: COORD_BITS];
-        vz[v] <= in_z[v*Z_BITS +: Z_BITS];
-        vrgb[v] <= in_rgb[v*24 +: 24];
+        vx_q[v] <= in_x[v*COORD_BITS +: COORD_BITS];
+        vy_q[v] <= in_y[v*COORD_BITS +: COORD_BITS];
+        vz_q[v] <= in_z[v*Z_BITS +: Z_BITS];
+        vrgb_q[v] <= in_rgb[v*24 +: 24];
       end
     end else if (swap_vertices) begin
-      vx[1] <= vx[2];
-      vx[2] <= vx[1];
-      vy[1] <= vy[2];
-      vy[2] <= vy[1];
-      vz[1] <= vz[2];
-      vz[2] <= vz[1];
-      vrgb[1] <= vrgb[2];
-      vrgb[2] <= vrgb[1];
+      vx_q[1] <= vx_q[2];
+      vx_q[2] <= vx_q[1];
+      vy_q[1] <= vy_q[2];
+      vy_q[2] <= vy_q[1];
+      vz_q[1] <= vz_q[2];
+      vz_q[2] <= vz_q[1];
+      vrgb_q[1] <= vrgb_q[2];
+      vrgb_q[2] <= vrgb_q[1];
     end
   end
 endmodule

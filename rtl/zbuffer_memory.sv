@@ -85,14 +85,14 @@ module zbuffer_memory #(
   endfunction
   /* verilator lint_on UNUSEDSIGNAL */
 
-  reg [BITMAP_ROW_BITS-1:0] clear_row;
+  reg [BITMAP_ROW_BITS-1:0] clear_row_q;
   always @(posedge clk) begin
     if (rst) begin
       clear_done <= 1'b0;
-      clear_row <= {BITMAP_ROW_BITS{1'b0}};
+      clear_row_q <= {BITMAP_ROW_BITS{1'b0}};
     end else if (!clear_done) begin
-      clear_row <= clear_row + 1'b1;
-      if (clear_row == LAST_ROW_A) clear_done <= 1'b1;
+      clear_row_q <= clear_row_q + 1'b1;
+      if (clear_row_q == LAST_ROW_A) clear_done <= 1'b1;
     end
   end
   assign rd_ready = clear_done;
@@ -100,8 +100,8 @@ module zbuffer_memory #(
   // One write port (clear sweep, then word writes), the read port and the read-back port.
   always @(posedge clk) begin
     if (!clear_done) begin
-      depth_written[clear_row] <= 64'd0;
-      color_written[clear_row] <= 64'd0;
+      depth_written[clear_row_q] <= 64'd0;
+      color_written[clear_row_q] <= 64'd0;
     end else begin
       if (wr_depth_en) begin
         depth_mem[wr_addr] <= wr_depth;
@@ -131,8 +131,8 @@ module zbuffer_memory #(
   // age 2; read_value is age 1), one entry written every cycle.
   localparam integer RING_BITS = MAX_MEMORY_LATENCY > 2 ? $clog2(MAX_MEMORY_LATENCY) : 1;
   localparam integer RING = 1 << RING_BITS;
-  reg [RING_BITS-1:0]     now_slot;
-  reg [Z_BITS-1:0] ring_data [0:RING-1];
+  reg [RING_BITS-1:0]     now_slot_q;
+  reg [Z_BITS-1:0] ring_data_q [0:RING-1];
   /* verilator lint_off UNUSEDSIGNAL */
   function automatic [RING_BITS-1:0] slot_of_age(input [RING_BITS-1:0] now, input [LATENCY_BITS-1:0] age);
     reg [LATENCY_BITS:0] wide_age;
@@ -142,11 +142,11 @@ module zbuffer_memory #(
     end
   endfunction
   /* verilator lint_on UNUSEDSIGNAL */
-  wire [RING_BITS-1:0] previous_slot = slot_of_age(now_slot, {{(LATENCY_BITS-1){1'b0}}, 1'b1});
-  assign rd_depth = latency_q == {{(LATENCY_BITS-1){1'b0}}, 1'b1} ? read_value : ring_data[slot_of_age(now_slot, latency_q)];
+  wire [RING_BITS-1:0] previous_slot = slot_of_age(now_slot_q, {{(LATENCY_BITS-1){1'b0}}, 1'b1});
+  assign rd_depth = latency_q == {{(LATENCY_BITS-1){1'b0}}, 1'b1} ? read_value : ring_data_q[slot_of_age(now_slot_q, latency_q)];
   always @(posedge clk) begin
-    if (rst) now_slot <= {RING_BITS{1'b0}};
-    else now_slot <= now_slot + 1'b1;
-    ring_data[previous_slot] <= read_value;
+    if (rst) now_slot_q <= {RING_BITS{1'b0}};
+    else now_slot_q <= now_slot_q + 1'b1;
+    ring_data_q[previous_slot] <= read_value;
   end
 endmodule

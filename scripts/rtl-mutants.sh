@@ -22,30 +22,30 @@ mutants=("$@")
 declare -A file from to params check
 max_latency=8
 file[edge_compare]=scanline_walker.sv
-from[edge_compare]='!edge_value[0][EDGE_BITS-1]'
-to[edge_compare]='(edge_value[0] > 0)'            # edge test E >= 0 becomes E > 0
+from[edge_compare]='!edge_value_q[0][EDGE_BITS-1]'
+to[edge_compare]='(edge_value_q[0] > 0)'            # edge test E >= 0 becomes E > 0
 file[walker_backpressure]=scanline_walker.sv
-from[walker_backpressure]='wire advance = walking && (frag_ready || !frag_valid);'
-to[walker_backpressure]='wire advance = walking;'  # the walker ignores the z-buffer's back-pressure
+from[walker_backpressure]='wire advance = walking_q && (frag_ready || !frag_valid);'
+to[walker_backpressure]='wire advance = walking_q;'  # the walker ignores the z-buffer's back-pressure
 params[walker_backpressure]="-GSETUP_INTERVAL=4"  # back-to-back triangles: hazard stalls happen
 check[walker_backpressure]=--cosim-only  # once it survived 100 random frames; the coverage frames reach hazards
 # The walker's overlapped load and its span look-ahead.
 file[walker_no_overlap]=scanline_walker.sv
-from[walker_no_overlap]='assign in_ready = !walking || last;'
-to[walker_no_overlap]='assign in_ready = !walking;'  # the next record waits for a cycle of its own
+from[walker_no_overlap]='assign in_ready = !walking_q || last;'
+to[walker_no_overlap]='assign in_ready = !walking_q;'  # the next record waits for a cycle of its own
 params[walker_no_overlap]="-GSETUP_INTERVAL=4"  # records waiting in the FIFO: loads overlap
 file[walker_first_row_span]=scanline_walker.sv
-from[walker_first_row_span]='assign src_quot[g] = use_record ? in_span_quot[g*EDGE_BITS +: EDGE_BITS] : quot[g];'
-to[walker_first_row_span]='assign src_quot[g] = quot[g];'  # the first row's span from the last triangle's DDA
+from[walker_first_row_span]='assign src_quot[g] = use_record ? in_span_quot[g*EDGE_BITS +: EDGE_BITS] : quot_q[g];'
+to[walker_first_row_span]='assign src_quot[g] = quot_q[g];'  # the first row's span from the last triangle's DDA
 file[walker_empty_row]=scanline_walker.sv
-from[walker_empty_row]='row_empty <= !span_nonempty;'
-to[walker_empty_row]='row_empty <= 1'"'"'b0;'  # an empty row presents a fragment
+from[walker_empty_row]='row_empty_q <= !span_nonempty;'
+to[walker_empty_row]='row_empty_q <= 1'"'"'b0;'  # an empty row presents a fragment
 file[z_adder_first_row]=plane_register.sv
-from[z_adder_first_row]='value <= start + offset_product[REG_BITS-1:0];'
-to[z_adder_first_row]='value <= start;'  # the first row's planes not moved to its span start
+from[z_adder_first_row]='value_q <= start + offset_product[REG_BITS-1:0];'
+to[z_adder_first_row]='value_q <= start;'  # the first row's planes not moved to its span start
 file[z_adder_carry]=plane_register.sv
-from[z_adder_carry]='value <= value + step_x_q;'
-to[z_adder_carry]='value <= value + step_x_q + 1'"'"'b1;'  # carry-in of the x-step adder flipped
+from[z_adder_carry]='value_q <= value_q + step_x_q;'
+to[z_adder_carry]='value_q <= value_q + step_x_q + 1'"'"'b1;'  # carry-in of the x-step adder flipped
 file[hazard_stall]=zbuffer.sv
 from[hazard_stall]='wire can_accept = mem_clear_done && !hazard;'
 to[hazard_stall]='wire can_accept = mem_clear_done;'  # read-after-write stall removed
@@ -97,11 +97,11 @@ file[setup_offscreen_rows]=triangle_setup.sv
 from[setup_offscreen_rows]='wire offscreen = bx1_raw < 0 || by1_raw < 0 ||'
 to[setup_offscreen_rows]='wire offscreen = bx1_raw < 0 ||'  # a box above the screen reported no_centre
 file[setup_credit_count]=rastersim_core.sv
-from[setup_credit_count]='credits_held < setup_fifo_depth_q;'
-to[setup_credit_count]='credits_held <= setup_fifo_depth_q;'  # one record credit too many
+from[setup_credit_count]='credits_held_q < setup_fifo_depth_q;'
+to[setup_credit_count]='credits_held_q <= setup_fifo_depth_q;'  # one record credit too many
 file[setup_fifo_empty]=setup_fifo.sv
-from[setup_fifo_empty]='assign empty = count == {COUNT_BITS{1'"'"'b0}};'
-to[setup_fifo_empty]='assign empty = count <= {{(COUNT_BITS-1){1'"'"'b0}}, 1'"'"'b1};'  # one record looks like none
+from[setup_fifo_empty]='assign empty = count_q == {COUNT_BITS{1'"'"'b0}};'
+to[setup_fifo_empty]='assign empty = count_q <= {{(COUNT_BITS-1){1'"'"'b0}}, 1'"'"'b1};'  # one record looks like none
 
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT

@@ -39,34 +39,6 @@ module rastersim_selftest (
     $readmemh("commands.hex", commands, 0, COMMAND_SLOTS - 1);
     $readmemh("selftest.hex", expected_crc, 0, 1);
   end
-  function [COORD_BITS-1:0] command_field;  // field k of a command word (rastersim_vectors_params.vh)
-    input [COMMAND_BITS-1:0] word;
-    input integer k;
-    reg [COMMAND_BITS-1:0] shifted;
-    begin
-      shifted = word >> COMMAND_FIELD_LSB[16*k +: 16];
-      command_field = shifted[COORD_BITS-1:0];
-    end
-  endfunction
-  function [Z_BITS-1:0] depth_field;
-    input [COMMAND_BITS-1:0] word;
-    input integer k;
-    reg [COMMAND_BITS-1:0] shifted;
-    begin
-      shifted = word >> COMMAND_FIELD_LSB[16*k +: 16];
-      depth_field = shifted[Z_BITS-1:0];
-    end
-  endfunction
-  function [23:0] color_field;
-    input [COMMAND_BITS-1:0] word;
-    input integer k;
-    reg [COMMAND_BITS-1:0] shifted;
-    begin
-      shifted = word >> COMMAND_FIELD_LSB[16*k +: 16];
-      color_field = shifted[23:0];
-    end
-  endfunction
-
   reg [COUNT_BITS-1:0] next_command;
   reg [COMMAND_BITS-1:0] command_q;  // the ROM word of next_command (a synchronous read)
   wire cmd_valid = next_command < TRIANGLES;
@@ -77,6 +49,15 @@ module rastersim_selftest (
     else next_command <= command_after;
     command_q <= commands[command_after < TRIANGLES ? command_after : 0];
   end
+  // The command's fields (rastersim_vectors_params.vh), 64 bits each: field k at [64 k +: 64].
+  wire [64*COMMAND_FIELDS-1:0] command_fields;
+  genvar f;
+  generate
+    for (f = 0; f < COMMAND_FIELDS; f = f + 1) begin : fields
+      wire [COMMAND_BITS-1:0] shifted = command_q >> COMMAND_FIELD_LSB[16*f +: 16];
+      assign command_fields[64*f +: 64] = shifted[63:0];
+    end
+  endgenerate
 
   // ---- The core and its frame memory in block RAM ------------------------------------------------
   wire trace_setup_decided, trace_setup_busy, trace_setup_stall, trace_setup_done;
@@ -106,11 +87,11 @@ module rastersim_selftest (
     .cfg_memory_latency(CFG_MEMORY_LATENCY), .cfg_setup_fifo_depth(CFG_SETUP_FIFO_DEPTH),
     .frame_ready(frame_ready),
     .cmd_valid(cmd_valid), .cmd_ready(cmd_ready),
-    .cmd_x0(command_field(command_q, 0)), .cmd_y0(command_field(command_q, 1)),
-    .cmd_x1(command_field(command_q, 2)), .cmd_y1(command_field(command_q, 3)),
-    .cmd_x2(command_field(command_q, 4)), .cmd_y2(command_field(command_q, 5)),
-    .cmd_z0(depth_field(command_q, 6)), .cmd_z1(depth_field(command_q, 7)), .cmd_z2(depth_field(command_q, 8)),
-    .cmd_rgb0(color_field(command_q, 9)), .cmd_rgb1(color_field(command_q, 10)), .cmd_rgb2(color_field(command_q, 11)),
+    .cmd_x0(command_fields[64*0 +: COORD_BITS]), .cmd_y0(command_fields[64*1 +: COORD_BITS]),
+    .cmd_x1(command_fields[64*2 +: COORD_BITS]), .cmd_y1(command_fields[64*3 +: COORD_BITS]),
+    .cmd_x2(command_fields[64*4 +: COORD_BITS]), .cmd_y2(command_fields[64*5 +: COORD_BITS]),
+    .cmd_z0(command_fields[64*6 +: Z_BITS]), .cmd_z1(command_fields[64*7 +: Z_BITS]), .cmd_z2(command_fields[64*8 +: Z_BITS]),
+    .cmd_rgb0(command_fields[64*9 +: 24]), .cmd_rgb1(command_fields[64*10 +: 24]), .cmd_rgb2(command_fields[64*11 +: 24]),
     .trace_setup_decided(trace_setup_decided), .trace_setup_status(trace_setup_status),
     .trace_setup_busy(trace_setup_busy), .trace_setup_stall(trace_setup_stall), .trace_setup_done(trace_setup_done),
     .trace_walker_load(trace_walker_load), .trace_walker_busy(trace_walker_busy),

@@ -173,41 +173,21 @@ module rastersim_vectors_tb;
     end
   endfunction
 
-  // Field k of a file's layout (the params file packs 16 bits per field, field 0 at the low end).
-  function integer field_lsb;
-    input integer file, k;
+  // Field k's place in a file's layout: its slot's lowest bit (P_LSB), the slot's bits (P_SLOT),
+  // its own width (P_BITS). The params file packs 16 bits per field, field 0 at the low end.
+  localparam integer P_LSB = 0, P_SLOT = 1, P_BITS = 2;
+  function integer field_place;
+    input integer file, what, k;
+    reg [16*64-1:0] places;  // at most 64 fields
     begin
       case (file)
-        0: field_lsb = COMMAND_FIELD_LSB[16*k +: 16];
-        1: field_lsb = TRIANGLE_FIELD_LSB[16*k +: 16];
-        2: field_lsb = SETUP_FIELD_LSB[16*k +: 16];
-        3: field_lsb = FRAGMENT_FIELD_LSB[16*k +: 16];
-        default: field_lsb = FRAME_FIELD_LSB[16*k +: 16];
+        0: places = what == P_LSB ? COMMAND_FIELD_LSB : what == P_SLOT ? COMMAND_FIELD_SLOT : COMMAND_FIELD_BITS;
+        1: places = what == P_LSB ? TRIANGLE_FIELD_LSB : what == P_SLOT ? TRIANGLE_FIELD_SLOT : TRIANGLE_FIELD_BITS;
+        2: places = what == P_LSB ? SETUP_FIELD_LSB : what == P_SLOT ? SETUP_FIELD_SLOT : SETUP_FIELD_BITS;
+        3: places = what == P_LSB ? FRAGMENT_FIELD_LSB : what == P_SLOT ? FRAGMENT_FIELD_SLOT : FRAGMENT_FIELD_BITS;
+        default: places = what == P_LSB ? FRAME_FIELD_LSB : what == P_SLOT ? FRAME_FIELD_SLOT : FRAME_FIELD_BITS;
       endcase
-    end
-  endfunction
-  function integer field_slot;
-    input integer file, k;
-    begin
-      case (file)
-        0: field_slot = COMMAND_FIELD_SLOT[16*k +: 16];
-        1: field_slot = TRIANGLE_FIELD_SLOT[16*k +: 16];
-        2: field_slot = SETUP_FIELD_SLOT[16*k +: 16];
-        3: field_slot = FRAGMENT_FIELD_SLOT[16*k +: 16];
-        default: field_slot = FRAME_FIELD_SLOT[16*k +: 16];
-      endcase
-    end
-  endfunction
-  function integer field_bits;
-    input integer file, k;
-    begin
-      case (file)
-        0: field_bits = COMMAND_FIELD_BITS[16*k +: 16];
-        1: field_bits = TRIANGLE_FIELD_BITS[16*k +: 16];
-        2: field_bits = SETUP_FIELD_BITS[16*k +: 16];
-        3: field_bits = FRAGMENT_FIELD_BITS[16*k +: 16];
-        default: field_bits = FRAME_FIELD_BITS[16*k +: 16];
-      endcase
+      field_place = places[16*k +: 16];
     end
   endfunction
   function integer field_signed;
@@ -234,14 +214,14 @@ module rastersim_vectors_tb;
     input [MAX_WORD_BITS-1:0] word;
     input integer k;
     begin
-      field_of = slot_of(word, field_lsb(file, k), field_slot(file, k));
+      field_of = slot_of(word, field_place(file, P_LSB, k), field_place(file, P_SLOT, k));
     end
   endfunction
   function [63:0] slot_value;  // a value as field k of a file holds it
     input integer file, k;
     input [63:0] value;
     begin
-      slot_value = as_slot(value, field_bits(file, k), field_slot(file, k), field_signed(file, k));
+      slot_value = as_slot(value, field_place(file, P_BITS, k), field_place(file, P_SLOT, k), field_signed(file, k));
     end
   endfunction
 
@@ -313,7 +293,7 @@ module rastersim_vectors_tb;
   task put_record_field;
     input [63:0] value;
     begin
-      record_word = with_slot(record_word, field_lsb(F_SETUP, record_field), field_slot(F_SETUP, record_field),
+      record_word = with_slot(record_word, field_place(F_SETUP, P_LSB, record_field), field_place(F_SETUP, P_SLOT, record_field),
                               slot_value(F_SETUP, record_field, value));
       record_field = record_field + 1;
     end

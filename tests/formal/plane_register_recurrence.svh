@@ -42,8 +42,8 @@
     if (f_loaded) begin
       assert(step_x_q == f_dx);
       assert(step_y_q == f_dy);
-      assert(row == f_row);
-      assert(value == f_value);
+      assert(row_q == f_row);
+      assert(value_q == f_value);
       assert(out == f_out);
     end
   end

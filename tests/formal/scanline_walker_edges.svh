@@ -40,10 +40,10 @@
 
   integer f_e;
   always @* begin
-    if (f_loaded && walking && !cfg_traversal) begin
-      for (f_e = 0; f_e < 3; f_e = f_e + 1) assert(edge_value[f_e] == f_at_pixel[f_e]);
+    if (f_loaded && walking_q && !cfg_traversal) begin
+      for (f_e = 0; f_e < 3; f_e = f_e + 1) assert(edge_value_q[f_e] == f_at_pixel[f_e]);
       assert(frag_valid == (f_at_pixel[0] >= 0 && f_at_pixel[1] >= 0 && f_at_pixel[2] >= 0));
     end
-    if (f_loaded && walking && cfg_traversal)
-      for (f_e = 0; f_e < 3; f_e = f_e + 1) assert(edge_row[f_e] == f_at_row[f_e] + f_step_y[f_e]);
+    if (f_loaded && walking_q && cfg_traversal)
+      for (f_e = 0; f_e < 3; f_e = f_e + 1) assert(edge_row_q[f_e] == f_at_row[f_e] + f_step_y[f_e]);
   end

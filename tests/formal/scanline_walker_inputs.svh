@@ -33,5 +33,5 @@
       assume(in_x0 <= in_x1 && in_x1 <= WIDTH - 1 && in_y0 <= in_y1 && in_y1 <= HEIGHT - 1);
     end
     // Constant while a triangle is walked (a load in its last cycle keeps it for the next one).
-    if (walking) assume(cfg_traversal == f_traversal);
+    if (walking_q) assume(cfg_traversal == f_traversal);
   end
