@@ -52,6 +52,7 @@ module scanline_walker #(
   localparam integer EDGE_STEP_X_BITS = rs_edge_step_x_bits(HEIGHT, S);
   localparam integer EDGE_STEP_Y_BITS = rs_edge_step_y_bits(WIDTH, S);
   localparam integer SPAN_REM_BITS = rs_span_rem_bits(HEIGHT, S);
+  localparam integer REM_BITS = SPAN_REM_BITS + 1;
   localparam integer X_BITS = rs_ubits32(WIDTH - 1);
   localparam integer Y_BITS = rs_ubits32(HEIGHT - 1);
   localparam [EDGE_BITS-1:0] CARRY = {{(EDGE_BITS-1){1'b0}}, 1'b1};
@@ -92,10 +93,13 @@ module scanline_walker #(
   reg signed [EDGE_BITS-1:0]  step_x_q [0:2];     // sign-extended to EDGE_BITS at load
   reg signed [EDGE_BITS-1:0]  step_y_q [0:2];
   reg signed [EDGE_BITS-1:0]  quot_q [0:2];        // span DDA of the next row: floor(edge_row / d), d = |step_x|
-  reg [SPAN_REM_BITS-1:0]         rem_q [0:2];         // edge_row - quot * d, in [0, d)
+  // The DDA's remainders are kept less d (rem - d in [-d, -1]), so that the carry is the sign of one
+  // sum: rem + step_rem >= d exactly when (rem - d) + step_rem >= 0. REM_BITS = SPAN_REM_BITS + 1,
+  // signed, holds every sum formed (d < 2^SPAN_REM_BITS).
+  reg [REM_BITS-1:0]              rem_less_q [0:2];    // edge_row - quot * d - d, in [-d, -1]
   reg signed [EDGE_BITS-1:0]  step_quot_q [0:2];
-  reg [SPAN_REM_BITS-1:0]         step_rem_q [0:2];
-  reg [SPAN_REM_BITS-1:0]         divisor_q [0:2];
+  reg [REM_BITS-1:0]              step_rem_q [0:2];       // in [0, d)
+  reg [REM_BITS-1:0]              step_rem_less_q [0:2];  // step_rem - d, in [-d, -1]
 
   // ---- the current candidate ----
   wire covered = !edge_value_q[0][EDGE_BITS-1] && !edge_value_q[1][EDGE_BITS-1] && !edge_value_q[2][EDGE_BITS-1];
@@ -111,30 +115,41 @@ module scanline_walker #(
   // ---- the DDA and span of the row about to start: the record's first row while the walker is
   // idle or on its last row (a load can only happen then), else the registers' next row. The choice
   // does not wait for the z-buffer's ready: `load` and `next_row` only enable the registers. ----
-  wire use_record = !walking_q || last_row_q;
+  // mid_walk_q = walking_q && !last_row_q, kept as a register of its own: it selects every DDA
+  // field, and a gate there would sit at the head of the walker's longest path. Reset (and all
+  // zeros) is idle.
+  reg mid_walk_q;
+  wire use_record = !mid_walk_q;
   wire signed [EDGE_BITS-1:0] src_edge_row [0:2];
   wire signed [EDGE_BITS-1:0] src_step_x [0:2];
   wire signed [EDGE_BITS-1:0] src_step_y [0:2];
   wire signed [EDGE_BITS-1:0] src_quot [0:2];
-  wire [SPAN_REM_BITS-1:0]        src_rem [0:2];
+  wire [REM_BITS-1:0]             src_rem_less [0:2];
   wire signed [EDGE_BITS-1:0] src_step_quot [0:2];
-  wire [SPAN_REM_BITS-1:0]        src_step_rem [0:2];
-  wire [SPAN_REM_BITS-1:0]        src_divisor [0:2];
+  wire [REM_BITS-1:0]             src_step_rem [0:2];
+  wire [REM_BITS-1:0]             src_step_rem_less [0:2];
   genvar g;
   generate
     for (g = 0; g < 3; g = g + 1) begin : source
       wire signed [EDGE_BITS-1:0] in_step_x_wide = $signed({{(EDGE_BITS-EDGE_STEP_X_BITS){in_edge_step_x[g*EDGE_STEP_X_BITS + EDGE_STEP_X_BITS - 1]}}, in_edge_step_x[g*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS]});
       wire signed [EDGE_BITS-1:0] in_step_y_wide = $signed({{(EDGE_BITS-EDGE_STEP_Y_BITS){in_edge_step_y[g*EDGE_STEP_Y_BITS + EDGE_STEP_Y_BITS - 1]}}, in_edge_step_y[g*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]});
       wire signed [EDGE_BITS-1:0] in_step_quot_wide = $signed({{(EDGE_BITS-EDGE_STEP_Y_BITS){in_span_step_quot[g*EDGE_STEP_Y_BITS + EDGE_STEP_Y_BITS - 1]}}, in_span_step_quot[g*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]});
-      wire [SPAN_REM_BITS-1:0] in_divisor = in_edge_step_x[g*EDGE_STEP_X_BITS + EDGE_STEP_X_BITS - 1] ? -in_edge_step_x[g*EDGE_STEP_X_BITS +: SPAN_REM_BITS] : in_edge_step_x[g*EDGE_STEP_X_BITS +: SPAN_REM_BITS];
       assign src_edge_row[g] = use_record ? in_edge_start[g*EDGE_BITS +: EDGE_BITS] : edge_row_q[g];
       assign src_step_x[g] = use_record ? in_step_x_wide : step_x_q[g];
       assign src_step_y[g] = use_record ? in_step_y_wide : step_y_q[g];
       assign src_quot[g] = use_record ? in_span_quot[g*EDGE_BITS +: EDGE_BITS] : quot_q[g];
-      assign src_rem[g] = use_record ? in_span_rem[g*SPAN_REM_BITS +: SPAN_REM_BITS] : rem_q[g];
+      // The record's remainders less d, formed from the record alone (beside the multiplexer).
+      wire [REM_BITS-1:0] in_rem = {1'b0, in_span_rem[g*SPAN_REM_BITS +: SPAN_REM_BITS]};
+      wire [REM_BITS-1:0] in_step_rem = {1'b0, in_span_step_rem[g*SPAN_REM_BITS +: SPAN_REM_BITS]};
+      // rem - |step_x|: one adder each way, not a negation and then a subtraction.
+      wire in_step_x_negative = in_edge_step_x[g*EDGE_STEP_X_BITS + EDGE_STEP_X_BITS - 1];
+      wire [REM_BITS-1:0] in_step_x_low = in_edge_step_x[g*EDGE_STEP_X_BITS +: REM_BITS];
+      wire [REM_BITS-1:0] in_rem_less = in_step_x_negative ? in_rem + in_step_x_low : in_rem - in_step_x_low;
+      wire [REM_BITS-1:0] in_step_rem_less = in_step_x_negative ? in_step_rem + in_step_x_low : in_step_rem - in_step_x_low;
+      assign src_rem_less[g] = use_record ? in_rem_less : rem_less_q[g];
       assign src_step_quot[g] = use_record ? in_step_quot_wide : step_quot_q[g];
-      assign src_step_rem[g] = use_record ? in_span_step_rem[g*SPAN_REM_BITS +: SPAN_REM_BITS] : step_rem_q[g];
-      assign src_divisor[g] = use_record ? in_divisor : divisor_q[g];
+      assign src_step_rem[g] = use_record ? in_step_rem : step_rem_q[g];
+      assign src_step_rem_less[g] = use_record ? in_step_rem_less : step_rem_less_q[g];
     end
   endgenerate
   // Left edges have step_x > 0, right ones < 0: the step's sign and a zero test, registered at load
@@ -152,47 +167,127 @@ module scanline_walker #(
   wire [X_BITS-1:0] src_x0 = use_record ? in_x0 : x0_q;
   wire [X_BITS-1:0] src_x1 = use_record ? in_x1 : x1_q;
 
-  // Span bounds: offsets t from x0 with every edge >= 0, on X_BITS + 1 bits: each edge's bound is
-  // saturated first (a bound at or beyond 2^X_BITS only ever means "outside the box", as the box's last
-  // offset is below 2^X_BITS), so the comparisons are X_BITS + 1 bits wide, not EDGE_BITS + 2.
-  //  left edge (step_x > 0):  t >= -floor(E / d) = -quot, saturated to [0, 2^X_BITS]
-  //  right edge (step_x < 0): t <= quot, saturated to [0, 2^X_BITS - 1]; quot < 0: no pixel
+  // Span bounds: offsets t from x0 with every edge >= 0. Each edge's bound is of a class, and only
+  // a small bound carries a value (its quotient's low bits):
+  //  left edge (step_x > 0):  t >= -floor(E / d) = -quot: no bound (quot >= 0, or not a left edge),
+  //                           a small one (quot in [-2^X_BITS, -1]), or beyond the box (empty row)
+  //  right edge (step_x < 0): t <= quot: a small one (quot in [0, 2^X_BITS - 1]), no bound
+  //                           (larger, or not a right edge); quot < 0: empty row
   //  horizontal edge: the whole row or, with E < 0, no pixel
-  wire [X_BITS-1:0] last_offset = src_x1 - src_x0;
-  wire [X_BITS:0] edge_lo [0:2];
-  wire [X_BITS-1:0] edge_hi [0:2];
-  wire [2:0] edge_empty;
+  // The box's last offset is one more upper bound. The compares below work on the quotients' low
+  // bits straight from the source and the classes join them after, so that no compare waits for a
+  // class (the reductions over the quotients' high bits), and all compares are side by side (none
+  // waits for another): the span start and end are one-hot selects, and the row is empty when some
+  // lower bound exceeds some upper one.
+  // The box's last offset: the record's is formed from the record alone, beside the multiplexer.
+  reg [X_BITS-1:0] last_offset_q;
+  wire [X_BITS-1:0] in_last_offset = in_x1 - in_x0;
+  wire [X_BITS-1:0] last_offset = use_record ? in_last_offset : last_offset_q;
+  wire [X_BITS:0] low [0:2];  // each quotient's low X_BITS + 1 bits
+  wire [2:0] lo_none, lo_small, hi_none, edge_empty;
   generate
     for (g = 0; g < 3; g = g + 1) begin : bounds
       wire negative = src_quot[g][EDGE_BITS-1];
-      // quot in [-2^X_BITS, -1]: its bits above X_BITS-1 are all ones.
-      wire small_negative = &src_quot[g][EDGE_BITS-1:X_BITS];
-      wire [X_BITS:0] minus_quot = -src_quot[g][X_BITS:0];
-      // quot in [0, 2^X_BITS - 1]: its bits above X_BITS-1 are all zeros.
-      wire small_positive = ~|src_quot[g][EDGE_BITS-1:X_BITS];
-      wire left = src_left[g];
-      wire right = src_right[g];
-      assign edge_lo[g] = !left || !negative ? {(X_BITS+1){1'b0}}
-                        : small_negative ? minus_quot : {1'b1, {X_BITS{1'b0}}};
-      assign edge_hi[g] = !right || !small_positive ? {X_BITS{1'b1}} : src_quot[g][X_BITS-1:0];
-      assign edge_empty[g] = right ? negative : !left && src_edge_row[g][EDGE_BITS-1];
+      wire small_negative = &src_quot[g][EDGE_BITS-1:X_BITS];  // in [-2^X_BITS, -1]
+      wire small_positive = ~|src_quot[g][EDGE_BITS-1:X_BITS];  // in [0, 2^X_BITS - 1]
+      assign low[g] = src_quot[g][X_BITS:0];
+      assign lo_none[g] = !src_left[g] || !negative;
+      assign lo_small[g] = src_left[g] && small_negative;
+      assign hi_none[g] = !src_right[g] || !small_positive;
+      assign edge_empty[g] = src_right[g] ? negative : !src_left[g] && src_edge_row[g][EDGE_BITS-1];
     end
   endgenerate
-  // Minimum and maximum as trees: two compare levels each.
-  wire [X_BITS:0] lo01 = edge_lo[0] > edge_lo[1] ? edge_lo[0] : edge_lo[1];
-  wire [X_BITS:0] span_lo = lo01 > edge_lo[2] ? lo01 : edge_lo[2];
-  wire [X_BITS-1:0] hi01 = edge_hi[0] < edge_hi[1] ? edge_hi[0] : edge_hi[1];
-  wire [X_BITS-1:0] hi2 = edge_hi[2] < last_offset ? edge_hi[2] : last_offset;
-  wire [X_BITS-1:0] span_hi = hi01 < hi2 ? hi01 : hi2;
-  wire span_nonempty = !(|edge_empty) && span_lo <= {1'b0, span_hi};
+  // Lower bounds ordered "none" below every small one, small ones by value (-quot: a lower quotient
+  // is a larger bound); a bound beyond the box fits under no upper bound, so the row is empty and
+  // the choice does not matter. Upper bounds by value, "none" above every value. Ties go to the
+  // lower index.
+  wire lo_ge_01 = lo_none[1] || (lo_small[0] && lo_small[1] && low[0] <= low[1]);
+  wire lo_ge_02 = lo_none[2] || (lo_small[0] && lo_small[2] && low[0] <= low[2]);
+  wire lo_ge_12 = lo_none[2] || (lo_small[1] && lo_small[2] && low[1] <= low[2]);
+  wire [X_BITS-1:0] edge_hi [0:2];
+  generate
+    for (g = 0; g < 3; g = g + 1) begin : uppers
+      assign edge_hi[g] = low[g][X_BITS-1:0];
+    end
+  endgenerate
+  wire hi_le_01 = hi_none[1] || (!hi_none[0] && edge_hi[0] <= edge_hi[1]);
+  wire hi_le_02 = hi_none[2] || (!hi_none[0] && edge_hi[0] <= edge_hi[2]);
+  wire hi_le_12 = hi_none[2] || (!hi_none[1] && edge_hi[1] <= edge_hi[2]);
+  wire hi_le_03 = !hi_none[0] && edge_hi[0] <= last_offset;
+  wire hi_le_13 = !hi_none[1] && edge_hi[1] <= last_offset;
+  wire hi_le_23 = !hi_none[2] && edge_hi[2] <= last_offset;
+  // fits[i][j]: lower bound i <= upper bound j (j = 3: the last offset). A small lower bound -quot_i
+  // is at most an upper value u when quot_i + u >= 0; every lower bound fits under "none" (the
+  // last offset bounds it too).
+  wire [3:0] fits [0:2];
+  genvar h;
+  generate
+    for (g = 0; g < 3; g = g + 1) begin : lo_fits
+      for (h = 0; h < 4; h = h + 1) begin : fit
+        if (h == g) begin : same_edge
+          // An edge is not both left and right: its own upper bound is "none".
+          assign fits[g][h] = 1'b1;
+        end else begin : other
+          wire [X_BITS-1:0] upper_value = h == 3 ? last_offset : edge_hi[h % 3];
+          wire [X_BITS+1:0] sum = {low[g][X_BITS], low[g]} + {2'b00, upper_value};
+          wire upper_none = h == 3 ? 1'b0 : hi_none[h % 3];
+          assign fits[g][h] = lo_none[g] || (lo_small[g] && (upper_none || !sum[X_BITS+1]));
+        end
+      end
+    end
+  endgenerate
+  wire lo_pick_0 = lo_ge_01 && lo_ge_02;
+  wire lo_pick_1 = !lo_pick_0 && lo_ge_12;
+  wire lo_pick_2 = !lo_pick_0 && !lo_ge_12;
+  wire hi_pick_0 = hi_le_01 && hi_le_02 && hi_le_03;
+  wire hi_pick_1 = !hi_pick_0 && hi_le_12 && hi_le_13;
+  wire hi_pick_2 = !hi_pick_0 && !hi_pick_1 && hi_le_23;
+  wire hi_pick_3 = !hi_pick_0 && !hi_pick_1 && !hi_le_23;
+  wire span_nonempty = !(|edge_empty) && &fits[0] && &fits[1] && &fits[2];
+  // The span start and end, the candidates added before the select: the start is x0 when no edge
+  // bounds it (then every lower bound is "none"), else x0 - quot of the chosen edge; the end is
+  // x0 + quot of the chosen edge or x1. Both are used only when the row is not empty.
+  wire lo_from_x0 = &lo_none;
+  wire [X_BITS-1:0] start_at [0:2];
+  wire [X_BITS-1:0] end_at [0:2];
+  wire [X_BITS-1:0] minus_low [0:2];
+  generate
+    for (g = 0; g < 3; g = g + 1) begin : ends
+      assign minus_low[g] = -low[g][X_BITS-1:0];
+      assign start_at[g] = src_x0 + minus_low[g];
+      assign end_at[g] = src_x0 + edge_hi[g];
+    end
+  endgenerate
+  wire [X_BITS-1:0] span_start = lo_from_x0 ? src_x0
+      : ({X_BITS{lo_pick_0}} & start_at[0]) | ({X_BITS{lo_pick_1}} & start_at[1]) | ({X_BITS{lo_pick_2}} & start_at[2]);
+  wire [X_BITS-1:0] span_end = ({X_BITS{hi_pick_0}} & end_at[0]) | ({X_BITS{hi_pick_1}} & end_at[1])
+                             | ({X_BITS{hi_pick_2}} & end_at[2]) | ({X_BITS{hi_pick_3}} & src_x1);
+  // The span start's offset from x0, for the plane registers.
+  wire [X_BITS-1:0] span_lo = lo_from_x0 ? {X_BITS{1'b0}}
+      : ({X_BITS{lo_pick_0}} & minus_low[0]) | ({X_BITS{lo_pick_1}} & minus_low[1]) | ({X_BITS{lo_pick_2}} & minus_low[2]);
   wire enter_span_row = span_traversal && (load || next_row);
+
+  // The DDA step to the row after the one about to start: quot += step_quot (+ 1 on the carry).
+  wire [REM_BITS-1:0] rem_sum [0:2];
+  wire [2:0] dda_carry;
+  wire signed [EDGE_BITS-1:0] quot_sum [0:2];
+  wire signed [EDGE_BITS-1:0] quot_carried [0:2];
+  generate
+    for (g = 0; g < 3; g = g + 1) begin : dda
+      assign rem_sum[g] = src_rem_less[g] + src_step_rem[g];
+      assign dda_carry[g] = !rem_sum[g][REM_BITS-1];
+      // All EDGE_BITS bits: modular, sign-agnostic.
+      assign quot_sum[g] = src_quot[g] + src_step_quot[g];
+      assign quot_carried[g] = src_quot[g] + src_step_quot[g] + CARRY;
+    end
+  endgenerate
 
   assign adder_load = load;
   assign adder_step_x = advance && !row_done;
   assign adder_next_row = next_row && !span_traversal;
   assign adder_row_enter = next_row && span_traversal;
   // The first row's offset at load (0 for bbox: the plane registers start at x0).
-  assign adder_row_offset = span_traversal ? span_lo[X_BITS-1:0] : {X_BITS{1'b0}};
+  assign adder_row_offset = span_traversal ? span_lo : {X_BITS{1'b0}};
   assign adder_from_record = use_record;
 
   assign busy = load || advance;
@@ -203,6 +298,12 @@ module scanline_walker #(
     else if (load) walking_q <= 1'b1;
     else if (last) walking_q <= 1'b0;
   end
+  always @(posedge clk) begin
+    if (rst) mid_walk_q <= 1'b0;
+    else if (load) mid_walk_q <= in_y0 != in_y1;
+    else if (last) mid_walk_q <= 1'b0;
+    else if (next_row) mid_walk_q <= frag_y + 1'b1 != y1_q;
+  end
 
   // Counters and edge registers (no reset: loaded in the load cycle before use).
   integer i;
@@ -210,6 +311,7 @@ module scanline_walker #(
     if (load) begin
       x0_q <= in_x0;
       x1_q <= in_x1;
+      last_offset_q <= in_last_offset;
       y1_q <= in_y1;
       frag_x <= in_x0;
       frag_y <= in_y0;
@@ -223,7 +325,7 @@ module scanline_walker #(
         step_y_q[i] <= src_step_y[i];
         step_quot_q[i] <= src_step_quot[i];
         step_rem_q[i] <= src_step_rem[i];
-        divisor_q[i] <= src_divisor[i];
+        step_rem_less_q[i] <= src_step_rem_less[i];
       end
     end else if (advance) begin
       if (!row_done) begin
@@ -243,21 +345,22 @@ module scanline_walker #(
     end
     if (enter_span_row) begin
       // The row about to start: its span; the DDA steps every edge to the row after it.
-      frag_x <= src_x0 + span_lo[X_BITS-1:0];
-      x_end_q <= src_x0 + span_hi;
+      frag_x <= span_start;
+      x_end_q <= span_end;
       row_empty_q <= !span_nonempty;
       for (i = 0; i < 3; i = i + 1) begin
         edge_row_q[i] <= src_edge_row[i] + src_step_y[i];
         if (src_left[i] || src_right[i]) begin
-          if ({1'b0, src_rem[i]} + {1'b0, src_step_rem[i]} >= {1'b0, src_divisor[i]}) begin
-            rem_q[i] <= src_rem[i] + src_step_rem[i] - src_divisor[i];
-            quot_q[i] <= src_quot[i] + src_step_quot[i] + CARRY;  // all EDGE_BITS bits: modular, sign-agnostic
+          // Both quotient sums side by side; the remainder's carry picks one.
+          if (dda_carry[i]) begin
+            rem_less_q[i] <= src_rem_less[i] + src_step_rem_less[i];
+            quot_q[i] <= quot_carried[i];
           end else begin
-            rem_q[i] <= src_rem[i] + src_step_rem[i];
-            quot_q[i] <= src_quot[i] + src_step_quot[i];
+            rem_less_q[i] <= rem_sum[i];
+            quot_q[i] <= quot_sum[i];
           end
         end else begin
-          rem_q[i] <= src_rem[i];
+          rem_less_q[i] <= src_rem_less[i];
           quot_q[i] <= src_quot[i];
         end
       end

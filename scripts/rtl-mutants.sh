@@ -11,7 +11,8 @@ build="$(cd "${1:?usage: rtl-mutants.sh BUILD_DIR [mutant ...]}" && pwd)"
 shift
 mutants=("$@")
 [ ${#mutants[@]} -eq 0 ] && mutants=(edge_compare walker_backpressure walker_no_overlap walker_first_row_span
-                                     walker_empty_row z_adder_first_row z_adder_carry hazard_stall
+                                     walker_empty_row walker_dda_carry walker_lower_bound_order walker_bounds_cross
+                                     z_adder_first_row z_adder_carry hazard_stall
                                      hazard_window_short hazard_address_bit ring_read_slot
                                      serial_floor serial_remainder_correction serial_multiplier_bits
                                      serial_bias_carry setup_slot_counter setup_floor_correction setup_missing_step
@@ -40,6 +41,16 @@ to[walker_first_row_span]='assign src_quot[g] = quot_q[g];'  # the first row's s
 file[walker_empty_row]=scanline_walker.sv
 from[walker_empty_row]='row_empty_q <= !span_nonempty;'
 to[walker_empty_row]='row_empty_q <= 1'"'"'b0;'  # an empty row presents a fragment
+# The span's one-level compares and the DDA's carry.
+file[walker_dda_carry]=scanline_walker.sv
+from[walker_dda_carry]='assign dda_carry[g] = !rem_sum[g][REM_BITS-1];'
+to[walker_dda_carry]='assign dda_carry[g] = !rem_sum[g][REM_BITS-1] && |rem_sum[g];'  # no carry when rem + step_rem == d
+file[walker_lower_bound_order]=scanline_walker.sv
+from[walker_lower_bound_order]='(lo_small[0] && lo_small[1] && low[0] <= low[1])'
+to[walker_lower_bound_order]='(lo_small[0] && lo_small[1] && low[0] >= low[1])'  # the smaller of two left-edge bounds starts the span
+file[walker_bounds_cross]=scanline_walker.sv
+from[walker_bounds_cross]='(upper_none || !sum[X_BITS+1])'
+to[walker_bounds_cross]='(upper_none || 1'"'"'b1)'  # a left bound past a right one does not empty the row
 file[z_adder_first_row]=plane_register.sv
 from[z_adder_first_row]='value_q <= start + offset_product[REG_BITS-1:0];'
 to[z_adder_first_row]='value_q <= start;'  # the first row's planes not moved to its span start
