@@ -539,8 +539,9 @@ TEST(IcarusCorePackage, BackPressureFromTheModelsStallPatternStaysCycleExact) {
   EXPECT_EQ(manifest["rtl"]["top"], "rastersim_core");
   const std::string params = file_named(package, "rastersim_vectors_params.vh").content;
   EXPECT_NE(params.find("`define RS_EXTERNAL_MEMORY"), std::string::npos) << params;
-  const std::vector<int64_t> frame = make_layouts(p).frame.parse(split_lines(file_named(package, "frame.hex").content).at(0));
-  const std::vector<Field>& fields = make_layouts(p).frame.fields();
+  const Layouts layouts = make_layouts(p);
+  const std::vector<int64_t> frame = layouts.frame.parse(split_lines(file_named(package, "frame.hex").content).at(0));
+  const std::vector<Field>& fields = layouts.frame.fields();
   const size_t walker_stall = size_t(std::find_if(fields.begin(), fields.end(), [](const Field& f) { return f.name == "walker_stall"; }) - fields.begin());
   EXPECT_GT(frame.at(walker_stall), 0) << "the stall pattern refused no read the walker offered";
 
@@ -620,7 +621,9 @@ TEST(PackageCheck, AFlippedDigitInAnyFileIsCaughtBeforeTheRun) {
     write_text(pkg / f.path, text);
     const CommandResult r = run_command("python3 '" + (pkg / "check_manifest.py").string() + "'");
     // (The checker itself, changed, still names itself; its exit code is then its own business.)
-    if (f.path != "check_manifest.py") EXPECT_EQ(r.status, 2) << f.path << "\n" << r.output;
+    if (f.path != "check_manifest.py") {
+      EXPECT_EQ(r.status, 2) << f.path << "\n" << r.output;
+    }
     EXPECT_NE(r.output.find("check_manifest: " + f.path + ": "), std::string::npos) << f.path << "\n" << r.output;
     write_text(pkg / f.path, f.content);
     ++flipped;
