@@ -714,18 +714,25 @@ module triangle_setup #(
       end
     end
     /* verilator lint_on UNSIGNED */
+    // A slot's registers move only when it holds a triangle (an empty slot's are don't-care): the
+    // same logic with flip-flop enables, and a simulator copies only the slots in use.
     always @(posedge clk) begin
       if (advance) begin
-        edge_ops_q[0 +: EDGES] <= front_edges;
-        edge_vals_q[0 +: VALS] <= front_vals;
-        edge_pay_q[0 +: PAY] <= front_pay;
+        if (front_q) begin
+          edge_ops_q[0 +: EDGES] <= front_edges;
+          edge_vals_q[0 +: VALS] <= front_vals;
+          edge_pay_q[0 +: PAY] <= front_pay;
+        end
         for (j = 1; j < EDGE_STAGES; j = j + 1) begin
-          edge_ops_q[j*EDGES +: EDGES] <= edge_ops_next[(j-1)*EDGES +: EDGES];
-          edge_vals_q[j*VALS +: VALS] <= edge_vals_q[(j-1)*VALS +: VALS];
-          edge_pay_q[j*PAY +: PAY] <= edge_pay_q[(j-1)*PAY +: PAY];
+          if (edge_valid_q[j-1]) begin
+            edge_ops_q[j*EDGES +: EDGES] <= edge_ops_next[(j-1)*EDGES +: EDGES];
+            edge_vals_q[j*VALS +: VALS] <= edge_vals_q[(j-1)*VALS +: VALS];
+            edge_pay_q[j*PAY +: PAY] <= edge_pay_q[(j-1)*PAY +: PAY];
+          end
         end
       end else begin
-        edge_ops_q <= edge_ops_next;
+        for (j = 0; j < EDGE_STAGES; j = j + 1)
+          if (edge_valid_q[j]) edge_ops_q[j*EDGES +: EDGES] <= edge_ops_next[j*EDGES +: EDGES];
       end
     end
 
@@ -800,19 +807,27 @@ module triangle_setup #(
     end
     always @(posedge clk) begin
       if (advance) begin
-        numer_vals_q[0 +: VALS] <= edge_vals_q[(EDGE_STAGES-1)*VALS +: VALS];
-        numer_acc_q[0 +: ACCS] <= {ACCS{1'b0}};
-        numer_wts_q[0 +: WTS] <= numer_in_wts;
-        numer_pay_q[0 +: PAY] <= numer_in_pay;
+        if (edge_valid_q[EDGE_STAGES-1]) begin
+          numer_vals_q[0 +: VALS] <= edge_vals_q[(EDGE_STAGES-1)*VALS +: VALS];
+          numer_acc_q[0 +: ACCS] <= {ACCS{1'b0}};
+          numer_wts_q[0 +: WTS] <= numer_in_wts;
+          numer_pay_q[0 +: PAY] <= numer_in_pay;
+        end
         for (j = 1; j < NUMER_STAGES; j = j + 1) begin
-          numer_vals_q[j*VALS +: VALS] <= numer_vals_next[(j-1)*VALS +: VALS];
-          numer_acc_q[j*ACCS +: ACCS] <= numer_acc_next[(j-1)*ACCS +: ACCS];
-          numer_wts_q[j*WTS +: WTS] <= numer_wts_q[(j-1)*WTS +: WTS];
-          numer_pay_q[j*PAY +: PAY] <= numer_pay_q[(j-1)*PAY +: PAY];
+          if (numer_valid_q[j-1]) begin
+            numer_vals_q[j*VALS +: VALS] <= numer_vals_next[(j-1)*VALS +: VALS];
+            numer_acc_q[j*ACCS +: ACCS] <= numer_acc_next[(j-1)*ACCS +: ACCS];
+            numer_wts_q[j*WTS +: WTS] <= numer_wts_q[(j-1)*WTS +: WTS];
+            numer_pay_q[j*PAY +: PAY] <= numer_pay_q[(j-1)*PAY +: PAY];
+          end
         end
       end else begin
-        numer_vals_q <= numer_vals_next;
-        numer_acc_q <= numer_acc_next;
+        for (j = 0; j < NUMER_STAGES; j = j + 1) begin
+          if (numer_valid_q[j]) begin
+            numer_vals_q[j*VALS +: VALS] <= numer_vals_next[j*VALS +: VALS];
+            numer_acc_q[j*ACCS +: ACCS] <= numer_acc_next[j*ACCS +: ACCS];
+          end
+        end
       end
     end
 
@@ -914,20 +929,30 @@ module triangle_setup #(
     /* verilator lint_on UNUSEDSIGNAL */
     always @(posedge clk) begin
       if (advance) begin
-        divide_planes_q[0 +: PLANES] <= divide_in_planes;
-        divide_spans_q[0 +: SPANS] <= divide_in_spans;
-        divide_pay_q[0 +: PAY] <= numer_last_pay;
-        for (j = 1; j < DIVIDE_STAGES; j = j + 1) begin
-          divide_planes_q[j*PLANES +: PLANES] <= divide_planes_next[(j-1)*PLANES +: PLANES];
-          divide_spans_q[j*SPANS +: SPANS] <= divide_spans_next[(j-1)*SPANS +: SPANS];
-          divide_pay_q[j*PAY +: PAY] <= divide_pay_q[(j-1)*PAY +: PAY];
+        if (numer_valid_q[NUMER_STAGES-1]) begin
+          divide_planes_q[0 +: PLANES] <= divide_in_planes;
+          divide_spans_q[0 +: SPANS] <= divide_in_spans;
+          divide_pay_q[0 +: PAY] <= numer_last_pay;
         end
-        out_planes_q <= divide_planes_next[(DIVIDE_STAGES-1)*PLANES +: PLANES];
-        out_spans_q <= divide_spans_next[(DIVIDE_STAGES-1)*SPANS +: SPANS];
-        out_pay_q <= divide_pay_q[(DIVIDE_STAGES-1)*PAY +: PAY];
+        for (j = 1; j < DIVIDE_STAGES; j = j + 1) begin
+          if (divide_valid_q[j-1]) begin
+            divide_planes_q[j*PLANES +: PLANES] <= divide_planes_next[(j-1)*PLANES +: PLANES];
+            divide_spans_q[j*SPANS +: SPANS] <= divide_spans_next[(j-1)*SPANS +: SPANS];
+            divide_pay_q[j*PAY +: PAY] <= divide_pay_q[(j-1)*PAY +: PAY];
+          end
+        end
+        if (divide_valid_q[DIVIDE_STAGES-1]) begin
+          out_planes_q <= divide_planes_next[(DIVIDE_STAGES-1)*PLANES +: PLANES];
+          out_spans_q <= divide_spans_next[(DIVIDE_STAGES-1)*SPANS +: SPANS];
+          out_pay_q <= divide_pay_q[(DIVIDE_STAGES-1)*PAY +: PAY];
+        end
       end else begin
-        divide_planes_q <= divide_planes_next;
-        divide_spans_q <= divide_spans_next;
+        for (j = 0; j < DIVIDE_STAGES; j = j + 1) begin
+          if (divide_valid_q[j]) begin
+            divide_planes_q[j*PLANES +: PLANES] <= divide_planes_next[j*PLANES +: PLANES];
+            divide_spans_q[j*SPANS +: SPANS] <= divide_spans_next[j*SPANS +: SPANS];
+          end
+        end
       end
     end
 
