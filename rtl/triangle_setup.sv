@@ -857,8 +857,12 @@ module triangle_setup #(
     end
 
     // ---- Divide slots: restoring steps, one quotient bit each, MSB first ----
-    reg [DIVIDE_STAGES*PLANES-1:0] divide_planes_q, divide_planes_next;
-    reg [DIVIDE_STAGES*SPANS-1:0] divide_spans_q, divide_spans_next;
+    // One element per division, slot j's division n at [j*12 + n] (planes) and [j*6 + n] (spans):
+    // whole elements move between slots, no part-selects into a packed vector.
+    reg [PLANE_W-1:0] divide_planes_q [0:DIVIDE_STAGES*12-1];
+    reg [PLANE_W-1:0] divide_planes_next [0:DIVIDE_STAGES*12-1];
+    reg [SPAN_W-1:0] divide_spans_q [0:DIVIDE_STAGES*6-1];
+    reg [SPAN_W-1:0] divide_spans_next [0:DIVIDE_STAGES*6-1];
     reg [DIVIDE_STAGES*PAY-1:0] divide_pay_q;
     reg [AREA_BITS-1:0] plane_partial, plane_divisor;
     reg [DIVIDER_BITS-1:0] plane_bits;
@@ -881,13 +885,13 @@ module triangle_setup #(
       span_partial = {EDGE_STEP_X_BITS{1'b0}};
       span_bits = {EDGE_BITS{1'b0}};
       for (j = 0; j < DIVIDE_STAGES; j = j + 1) begin
-        divide_planes_next[j*PLANES +: PLANES] = {PLANES{1'bx}};  // an empty slot: don't-care (as the edge slots)
-        divide_spans_next[j*SPANS +: SPANS] = {SPANS{1'bx}};
+        for (n = 0; n < 12; n = n + 1) divide_planes_next[j*12 + n] = {PLANE_W{1'bx}};  // an empty slot: don't-care (as the edge slots)
+        for (n = 0; n < 6; n = n + 1) divide_spans_next[j*6 + n] = {SPAN_W{1'bx}};
         if (divide_valid_q[j]) begin
         plane_divisor = divide_pay_q[j*PAY + P_AREA +: AREA_BITS];
         for (n = 0; n < 12; n = n + 1) begin
-          plane_partial = divide_planes_q[j*PLANES + n*PLANE_W + DIVIDER_BITS +: AREA_BITS];
-          plane_bits = divide_planes_q[j*PLANES + n*PLANE_W +: DIVIDER_BITS];
+          plane_partial = divide_planes_q[j*12 + n][DIVIDER_BITS +: AREA_BITS];
+          plane_bits = divide_planes_q[j*12 + n][DIVIDER_BITS-1:0];
           for (s = 0; s < DIVIDE_STEPS; s = s + 1) begin
             step_index = (j * I + {{(32-PHASE_BITS){1'b0}}, phase_q}) * DIVIDE_STEPS + s;
             if (step_index >= PLANE_SKIP) begin
@@ -897,14 +901,13 @@ module triangle_setup #(
               plane_bits = {plane_bits[DIVIDER_BITS-2:0], !plane_difference[AREA_BITS]};
             end
           end
-          divide_planes_next[j*PLANES + n*PLANE_W +: PLANE_W] =
-              {divide_planes_q[j*PLANES + n*PLANE_W + PLANE_W - 1], plane_partial, plane_bits};
+          divide_planes_next[j*12 + n] = {divide_planes_q[j*12 + n][PLANE_W-1], plane_partial, plane_bits};
         end
         for (n = 0; n < 6; n = n + 1) begin
           span_step_x = divide_pay_q[j*PAY + P_SX + (n/2)*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS];
           span_divisor = span_step_x[EDGE_STEP_X_BITS-1] ? -span_step_x : span_step_x;
-          span_partial = divide_spans_q[j*SPANS + n*SPAN_W + EDGE_BITS +: EDGE_STEP_X_BITS];
-          span_bits = divide_spans_q[j*SPANS + n*SPAN_W +: EDGE_BITS];
+          span_partial = divide_spans_q[j*6 + n][EDGE_BITS +: EDGE_STEP_X_BITS];
+          span_bits = divide_spans_q[j*6 + n][EDGE_BITS-1:0];
           for (s = 0; s < DIVIDE_STEPS; s = s + 1) begin
             step_index = (j * I + {{(32-PHASE_BITS){1'b0}}, phase_q}) * DIVIDE_STEPS + s;
             if (step_index >= SPAN_SKIP) begin
@@ -914,8 +917,7 @@ module triangle_setup #(
               span_bits = {span_bits[EDGE_BITS-2:0], !span_difference[EDGE_STEP_X_BITS]};
             end
           end
-          divide_spans_next[j*SPANS + n*SPAN_W +: SPAN_W] =
-              {divide_spans_q[j*SPANS + n*SPAN_W + SPAN_W - 1], span_partial, span_bits};
+          divide_spans_next[j*6 + n] = {divide_spans_q[j*6 + n][SPAN_W-1], span_partial, span_bits};
         end
         end
       end
@@ -930,27 +932,27 @@ module triangle_setup #(
     always @(posedge clk) begin
       if (advance) begin
         if (numer_valid_q[NUMER_STAGES-1]) begin
-          divide_planes_q[0 +: PLANES] <= divide_in_planes;
-          divide_spans_q[0 +: SPANS] <= divide_in_spans;
+          for (n = 0; n < 12; n = n + 1) divide_planes_q[n] <= divide_in_planes[n*PLANE_W +: PLANE_W];
+          for (n = 0; n < 6; n = n + 1) divide_spans_q[n] <= divide_in_spans[n*SPAN_W +: SPAN_W];
           divide_pay_q[0 +: PAY] <= numer_last_pay;
         end
         for (j = 1; j < DIVIDE_STAGES; j = j + 1) begin
           if (divide_valid_q[j-1]) begin
-            divide_planes_q[j*PLANES +: PLANES] <= divide_planes_next[(j-1)*PLANES +: PLANES];
-            divide_spans_q[j*SPANS +: SPANS] <= divide_spans_next[(j-1)*SPANS +: SPANS];
+            for (n = 0; n < 12; n = n + 1) divide_planes_q[j*12 + n] <= divide_planes_next[(j-1)*12 + n];
+            for (n = 0; n < 6; n = n + 1) divide_spans_q[j*6 + n] <= divide_spans_next[(j-1)*6 + n];
             divide_pay_q[j*PAY +: PAY] <= divide_pay_q[(j-1)*PAY +: PAY];
           end
         end
         if (divide_valid_q[DIVIDE_STAGES-1]) begin
-          out_planes_q <= divide_planes_next[(DIVIDE_STAGES-1)*PLANES +: PLANES];
-          out_spans_q <= divide_spans_next[(DIVIDE_STAGES-1)*SPANS +: SPANS];
+          for (n = 0; n < 12; n = n + 1) out_planes_q[n*PLANE_W +: PLANE_W] <= divide_planes_next[(DIVIDE_STAGES-1)*12 + n];
+          for (n = 0; n < 6; n = n + 1) out_spans_q[n*SPAN_W +: SPAN_W] <= divide_spans_next[(DIVIDE_STAGES-1)*6 + n];
           out_pay_q <= divide_pay_q[(DIVIDE_STAGES-1)*PAY +: PAY];
         end
       end else begin
         for (j = 0; j < DIVIDE_STAGES; j = j + 1) begin
           if (divide_valid_q[j]) begin
-            divide_planes_q[j*PLANES +: PLANES] <= divide_planes_next[j*PLANES +: PLANES];
-            divide_spans_q[j*SPANS +: SPANS] <= divide_spans_next[j*SPANS +: SPANS];
+            for (n = 0; n < 12; n = n + 1) divide_planes_q[j*12 + n] <= divide_planes_next[j*12 + n];
+            for (n = 0; n < 6; n = n + 1) divide_spans_q[j*6 + n] <= divide_spans_next[j*6 + n];
           end
         end
       end
