@@ -140,6 +140,25 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
     r.color[1] = plane(green, unbiased, step_x, step_y, by_area, w.color_reg_bits, "green plane");
     r.color[2] = plane(blue, unbiased, step_x, step_y, by_area, w.color_reg_bits, "blue plane");
   }
+
+  // Planes along the left edges (docs/cycle-model.md): slot j takes the j-th edge with step_x > 0.
+  int left_edge[kLeftEdgeSlots] = {-1, -1};
+  for (int k = 0, slot = 0; k < 3 && slot < kLeftEdgeSlots; ++k)
+    if (r.edge[k].step_x > 0) left_edge[slot++] = k;
+  auto along = [](const PlaneSetup& p, int64_t quot, int64_t step_quot, int reg_bits) {
+    EdgePlane e;
+    e.start = wrap_signed(i128(p.start) - i128(quot) * i128(p.step_x), reg_bits);
+    e.step = wrap_signed(i128(p.step_y) - i128(step_quot) * i128(p.step_x), reg_bits);
+    return e;
+  };
+  for (int j = 0; j < kLeftEdgeSlots; ++j) {
+    const int k = left_edge[j];
+    const int64_t quot = k >= 0 ? int64_t(r.edge[k].span_quot) : 0;
+    const int64_t step_quot = k >= 0 ? int64_t(r.edge[k].span_step_quot) : 0;
+    r.left[j].depth = along(r.depth, quot, step_quot, w.z_reg_bits);
+    if (profile_.shading == Shading::Gouraud)
+      for (int c = 0; c < 3; ++c) r.left[j].color[c] = along(r.color[c], quot, step_quot, w.color_reg_bits);
+  }
 }
 
 }  // namespace rastersim

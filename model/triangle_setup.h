@@ -62,6 +62,21 @@ struct PlaneSetup {
   PlaneValue step_y;
 };
 
+// A plane along a left edge (edge_step_x > 0), for the walker's span start without a multiplier
+// (docs/cycle-model.md): both modulo the plane register's width.
+struct EdgePlane {
+  PlaneValue start;  // start - span_quot * step_x: the plane at the edge's span start x0 - span_quot, row y0
+  PlaneValue step;   // step_y - span_step_quot * step_x: its change per row without the DDA's carry
+};
+
+// The planes along the triangle's left edges: slot 0 is the first left edge in edge order, slot 1
+// the second (a slot without an edge takes quotients 0: start and step_y).
+struct LeftEdgePlanes {
+  EdgePlane depth;
+  EdgePlane color[3];  // r, g, b (zero, as their planes, without Gouraud shading)
+};
+constexpr int kLeftEdgeSlots = 2;
+
 struct SetupResult {
   SetupStatus status = SetupStatus::Degenerate;
   bool front_facing = false;
@@ -71,6 +86,7 @@ struct SetupResult {
   PlaneSetup depth{};            // s(N+1).F
   PlaneSetup color[3]{};         // r, g, b planes, s9.F (Gouraud)
   Rgb flat_color;                // provoking (first) vertex colour (flat)
+  LeftEdgePlanes left[kLeftEdgeSlots]{};
 };
 
 class TriangleSetup {

@@ -85,6 +85,8 @@ struct SetupTiming {
   int numer_steps;     // shift-add steps per cycle in a numerator slot
   int divide_stages;   // slots of the 18 restoring divisions (divider_bits steps)
   int divide_steps;    // restoring steps per cycle in a divide slot
+  int product_stages;  // slots of the 16 planes along the left edges (setup_product_bits steps)
+  int product_steps;   // multiply steps per cycle in a product slot
   int drawn_latency;   // accept -> record in the output register (setup_done - setup_accept)
   int rejected_latency;  // accept -> decision
   int free_after;      // accept -> first cycle the unit may accept again (0: after setup_done)
@@ -95,6 +97,11 @@ constexpr int ceil_div(int a, int b) { return (a + b - 1) / b; }
 // The serial unit's datapath: H = edge_bits + 3 bits of accumulator above the multiplier bits, enough
 // for the sum of three products of edge values (docs/cycle-model.md).
 constexpr int serial_setup_datapath_bits(const Widths& w) { return w.edge_bits + 3; }
+
+// PB: the multiplier bits of a plane along a left edge, `start - quot * step_x` and
+// `step_y - step_quot * step_x` modulo the plane register: the quotient as a two's-complement value
+// of PB bits (its higher bits do not change the product modulo 2^z_reg_bits, the widest register).
+constexpr int setup_product_bits(const Widths& w) { return w.z_reg_bits < w.edge_bits ? w.z_reg_bits : w.edge_bits; }
 
 // The serial unit's program, operation by operation as docs/cycle-model.md tables it: every operation
 // takes one load cycle and its steps; operation 0 starts the cycle after the accept.
@@ -110,6 +117,7 @@ constexpr int serial_setup_drawn_latency(const Widths& w, int subpixel_bits, int
     cycles += 3 * (1 + 3 * m);                    // numerators of start, step x, step y
     cycles += (1 + H + m + F) + 2 * (1 + H + m + F + S);  // their divisions
   }
+  cycles += 16 * (1 + setup_product_bits(w) + 1);  // PRODUCT: 4 planes x 2 left-edge slots x start, step
   cycles += 1;                                    // FINAL
   return cycles;
 }
@@ -130,7 +138,9 @@ constexpr SetupTiming setup_timing(const Widths& w, int subpixel_bits, int z_bit
   t.numer_steps = ceil_div(z_bits, interval * t.numer_stages);
   t.divide_stages = ceil_div(w.divider_bits, interval * kSetupStepsPerCycle);
   t.divide_steps = ceil_div(w.divider_bits, interval * t.divide_stages);
-  t.drawn_latency = interval * (1 + t.edge_stages + t.numer_stages + t.divide_stages);
+  t.product_stages = ceil_div(setup_product_bits(w), interval * kSetupStepsPerCycle);
+  t.product_steps = ceil_div(setup_product_bits(w), interval * t.product_stages);
+  t.drawn_latency = interval * (1 + t.edge_stages + t.numer_stages + t.divide_stages + t.product_stages);
   t.free_after = interval;
   return t;
 }
@@ -140,13 +150,13 @@ inline SetupTiming setup_timing(const Profile& p) {
 }
 
 // The docs' worked example and the default profile (docs/cycle-model.md).
-static_assert(serial_setup_drawn_latency(derive_widths(16, 12, 4, 16, 0), 4, 16) == 1165);
-static_assert(serial_setup_drawn_latency(derive_widths(640, 480, 4, 24, 0), 4, 24) == 1553);
-static_assert(setup_timing(derive_widths(16, 12, 4, 16, 0), 4, 16, 4).drawn_latency == 24);
-static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 2).drawn_latency == 32);
-static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 4).drawn_latency == 40);
-static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 16).drawn_latency == 80);
-static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 64).drawn_latency == 256);
+static_assert(serial_setup_drawn_latency(derive_widths(16, 12, 4, 16, 0), 4, 16) == 1533);
+static_assert(serial_setup_drawn_latency(derive_widths(640, 480, 4, 24, 0), 4, 24) == 2081);
+static_assert(setup_timing(derive_widths(16, 12, 4, 16, 0), 4, 16, 4).drawn_latency == 32);
+static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 2).drawn_latency == 40);
+static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 4).drawn_latency == 48);
+static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 16).drawn_latency == 96);
+static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 64).drawn_latency == 320);
 
 // The largest profile must fit the model's storage: plane registers and edge values in int64_t,
 // dividends in i128.

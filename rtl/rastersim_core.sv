@@ -85,6 +85,7 @@ module rastersim_core #(
       rs_divider_bits(WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
   localparam integer Z_REG_BITS /*verilator public*/ = Z_BITS + GUARD_BITS + 1;
   localparam integer COLOR_REG_BITS /*verilator public*/ = 8 + GUARD_BITS + 1;
+  localparam integer LEFT_BITS = 2 * (Z_REG_BITS + 3 * COLOR_REG_BITS);  // rec_left_start, rec_left_step: two slots
   localparam integer X_BITS /*verilator public*/ = rs_ubits32(WIDTH - 1);
   localparam integer Y_BITS /*verilator public*/ = rs_ubits32(HEIGHT - 1);
   localparam integer ADDR_BITS /*verilator public*/ = rs_ubits32(WIDTH * HEIGHT - 1);
@@ -134,7 +135,7 @@ module rastersim_core #(
   end
 
   // The setup record, packed (rs_rec_lsb in rastersim_widths.vh).
-  localparam integer RECORD_BITS = rs_rec_lsb(18, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer RECORD_BITS = rs_rec_lsb(20, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
   localparam integer WALKER_RECORD_BITS = rs_rec_walker_bits(WIDTH, HEIGHT, SUBPIXEL_BITS);
   `include "rastersim_record.vh"
   wire setup_valid;
@@ -204,6 +205,8 @@ module rastersim_core #(
   wire [3*COLOR_REG_BITS-1:0] rec_color_step_x /*verilator public_flat_rd*/;
   wire [3*COLOR_REG_BITS-1:0] rec_color_step_y /*verilator public_flat_rd*/;
   wire [23:0]      rec_flat_rgb /*verilator public_flat_rd*/;
+  wire [LEFT_BITS-1:0] rec_left_start /*verilator public_flat_rd*/;
+  wire [LEFT_BITS-1:0] rec_left_step /*verilator public_flat_rd*/;
   wire [RECORD_BITS-1:0] rec = fifo_empty ? setup_record : fifo_head;
   assign rec_x0 = rec[LSB_X0 +: X_BITS];
   assign rec_x1 = rec[LSB_X1 +: X_BITS];
@@ -223,6 +226,8 @@ module rastersim_core #(
   assign rec_color_step_x = rec[LSB_COLOR_STEP_X +: 3*COLOR_REG_BITS];
   assign rec_color_step_y = rec[LSB_COLOR_STEP_Y +: 3*COLOR_REG_BITS];
   assign rec_flat_rgb = rec[LSB_FLAT_RGB +: 24];
+  assign rec_left_start = rec[LSB_LEFT_START +: LEFT_BITS];
+  assign rec_left_step = rec[LSB_LEFT_STEP +: LEFT_BITS];
 
   // Walker + Z adder -> z-buffer fragment.
   wire adder_load, adder_step_x, adder_next_row, adder_row_enter, adder_from_record;

@@ -39,4 +39,8 @@ localparam integer LSB_COLOR_STEP_Y =
     rs_rec_lsb(RS_REC_COLOR_STEP_Y, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
 localparam integer LSB_FLAT_RGB =
     rs_rec_lsb(RS_REC_FLAT_RGB, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+localparam integer LSB_LEFT_START =
+    rs_rec_lsb(RS_REC_LEFT_START, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+localparam integer LSB_LEFT_STEP =
+    rs_rec_lsb(RS_REC_LEFT_STEP, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
 /* verilator lint_on UNUSEDPARAM */

@@ -143,7 +143,8 @@ function automatic integer rs_divider_bits(input integer w, input integer h, inp
 endfunction
 
 // The pipelined setup unit's schedule (SETUP_INTERVAL I >= 2; model/widths.h setup_timing): slots
-// of edge, numerator and divide steps, at most 4 steps of one multiply or divide chained in a cycle.
+// of edge, numerator, divide and product steps, at most 4 steps of one multiply or divide chained
+// in a cycle.
 function automatic integer rs_setup_edge_stages(input integer coord_bits, input integer interval);
   rs_setup_edge_stages = (coord_bits + 1 + interval * 4 - 1) / (interval * 4);
 endfunction
@@ -154,6 +155,20 @@ endfunction
 
 function automatic integer rs_setup_divide_stages(input integer divider_bits, input integer interval);
   rs_setup_divide_stages = (divider_bits + interval * 4 - 1) / (interval * 4);
+endfunction
+
+// PB: the multiplier bits of a plane along a left edge (model/widths.h setup_product_bits).
+function automatic integer rs_setup_product_bits(input integer w, input integer h, input integer s,
+                                                 input integer z_bits, input integer z_guard_bits);
+  integer z_reg_bits;
+  begin
+    z_reg_bits = z_bits + rs_guard_bits(w, h, z_guard_bits) + 1;
+    rs_setup_product_bits = z_reg_bits < rs_edge_bits(w, h, s) ? z_reg_bits : rs_edge_bits(w, h, s);
+  end
+endfunction
+
+function automatic integer rs_setup_product_stages(input integer product_bits, input integer interval);
+  rs_setup_product_stages = (product_bits + interval * 4 - 1) / (interval * 4);
 endfunction
 
 // The serial setup unit (SETUP_INTERVAL 0; model/widths.h serial_setup_drawn_latency): its
@@ -173,7 +188,8 @@ function automatic integer rs_setup_serial_latency(input integer w, input intege
     f = rs_guard_bits(w, h, z_guard_bits);
     rs_setup_serial_latency = 1 + (1 + 2 * d) + 1 + 3 * (1 + 2 * (c + 1)) + 3 * (1 + hb + 1) + 3 * (1 + hb + s + 1)
         + 3 * (1 + 3 * z_bits) + (1 + hb + z_bits + f) + 2 * (1 + hb + z_bits + f + s)
-        + 3 * (3 * (1 + 3 * 8) + (1 + hb + 8 + f) + 2 * (1 + hb + 8 + f + s)) + 1;
+        + 3 * (3 * (1 + 3 * 8) + (1 + hb + 8 + f) + 2 * (1 + hb + 8 + f + s))
+        + 16 * (1 + rs_setup_product_bits(w, h, s, z_bits, z_guard_bits) + 1) + 1;
   end
 endfunction
 
@@ -183,7 +199,8 @@ function automatic integer rs_setup_drawn_latency(input integer w, input integer
                                                   input integer interval);
   rs_setup_drawn_latency = interval == 0 ? rs_setup_serial_latency(w, h, s, z_bits, z_guard_bits)
       : interval * (1 + rs_setup_edge_stages(rs_coord_bits(w, h, s), interval) + rs_setup_numer_stages(z_bits, interval)
-                    + rs_setup_divide_stages(rs_divider_bits(w, h, s, z_bits, z_guard_bits), interval));
+                    + rs_setup_divide_stages(rs_divider_bits(w, h, s, z_bits, z_guard_bits), interval)
+                    + rs_setup_product_stages(rs_setup_product_bits(w, h, s, z_bits, z_guard_bits), interval));
 endfunction
 
 function automatic integer rs_setup_rejected_latency(input integer w, input integer h, input integer s,
@@ -217,8 +234,11 @@ localparam [2:0] RS_STATUS_DRAWN = 3'd0, RS_STATUS_DEGENERATE = 3'd1, RS_STATUS_
 //   9 span_step_quot (3 x EDGE_STEP_Y_BITS)  10 span_step_rem (3 x SPAN_REM_BITS)
 //  11 depth_start (Z_REG_BITS)  12 depth_step_x  13 depth_step_y
 //  14 color_start (3 x COLOR_REG_BITS)  15 color_step_x  16 color_step_y  17 flat_rgb (24)
+//  18 left_start (2 x (Z_REG_BITS + 3 x COLOR_REG_BITS))  19 left_step
 // with Z_REG_BITS = N + F + 1, COLOR_REG_BITS = 9 + F and the edge widths above; three-edge fields
-// hold edge k at [k*B +: B], colour fields r, g, b at [c*COLOR_REG_BITS +: COLOR_REG_BITS].
+// hold edge k at [k*B +: B], colour fields r, g, b at [c*COLOR_REG_BITS +: COLOR_REG_BITS], the
+// left-edge fields slot j at [j*B +: B], its depth plane first, then r, g, b. rs_rec_lsb(20, ...)
+// is the record's width.
 // triangle_setup packs it, the record FIFO carries it, the walker takes fields 0..10 (the walker
 // part, whose widths do not depend on the depth), the Z adder the planes.
 // Every unit that includes this header gets the field names; most use a few.
@@ -227,7 +247,8 @@ localparam integer RS_REC_X0 = 0, RS_REC_X1 = 1, RS_REC_Y0 = 2, RS_REC_Y1 = 3, R
                    RS_REC_EDGE_STEP_X = 5, RS_REC_EDGE_STEP_Y = 6, RS_REC_SPAN_QUOT = 7, RS_REC_SPAN_REM = 8,
                    RS_REC_SPAN_STEP_QUOT = 9, RS_REC_SPAN_STEP_REM = 10, RS_REC_DEPTH_START = 11,
                    RS_REC_DEPTH_STEP_X = 12, RS_REC_DEPTH_STEP_Y = 13, RS_REC_COLOR_START = 14,
-                   RS_REC_COLOR_STEP_X = 15, RS_REC_COLOR_STEP_Y = 16, RS_REC_FLAT_RGB = 17;
+                   RS_REC_COLOR_STEP_X = 15, RS_REC_COLOR_STEP_Y = 16, RS_REC_FLAT_RGB = 17,
+                   RS_REC_LEFT_START = 18, RS_REC_LEFT_STEP = 19;
 /* verilator lint_on UNUSEDPARAM */
 
 function automatic integer rs_rec_field_bits(input integer field, input integer w, input integer h,
@@ -241,11 +262,12 @@ function automatic integer rs_rec_field_bits(input integer field, input integer 
     8, 10: rs_rec_field_bits = 3 * rs_span_rem_bits(h, s);
     11, 12, 13: rs_rec_field_bits = z_bits + rs_guard_bits(w, h, z_guard_bits) + 1;
     14, 15, 16: rs_rec_field_bits = 3 * (9 + rs_guard_bits(w, h, z_guard_bits));
+    18, 19: rs_rec_field_bits = 2 * (z_bits + rs_guard_bits(w, h, z_guard_bits) + 1 + 3 * (9 + rs_guard_bits(w, h, z_guard_bits)));
     default: rs_rec_field_bits = 24;  // 17
   endcase
 endfunction
 
-// The field's least significant bit; rs_rec_lsb(18, ...) is the record's width.
+// The field's least significant bit; rs_rec_lsb(20, ...) is the record's width.
 function automatic integer rs_rec_lsb(input integer field, input integer w, input integer h, input integer s,
                                       input integer z_bits, input integer z_guard_bits);
   integer f;

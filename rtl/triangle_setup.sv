@@ -42,7 +42,7 @@ module triangle_setup #(
   // Setup record of a drawn triangle (the model's SetupResult), valid for the one cycle setup_done.
   output wire out_valid,
   // Its fields by rs_rec_lsb / rs_rec_field_bits (rastersim_widths.vh).
-  output wire [rs_rec_lsb(18, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS)-1:0] out_record
+  output wire [rs_rec_lsb(20, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS)-1:0] out_record
 );
 `include "rastersim_widths.vh"
   `RS_REQUIRE(illegal_width, WIDTH >= 1 && WIDTH <= 4096, "triangle_setup: WIDTH must be 1..4096")
@@ -98,6 +98,10 @@ module triangle_setup #(
   wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] out_color_step_x;
   wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] out_color_step_y;
   wire [23:0] out_flat_rgb; // provoking (first) vertex colour
+  localparam integer LEFT_SLOT_BITS = Z_BITS + rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS) + 1
+                                      + 3 * (9 + rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS));
+  wire [2*LEFT_SLOT_BITS-1:0] out_left_start;  // planes along the left edges: slot j at [j*LEFT_SLOT_BITS]
+  wire [2*LEFT_SLOT_BITS-1:0] out_left_step;
   // Packed at the fields' places (rastersim_widths.vh).
   `include "rastersim_record.vh"
   assign out_record[LSB_X0 +: $bits(out_x0)] = out_x0;
@@ -118,6 +122,8 @@ module triangle_setup #(
   assign out_record[LSB_COLOR_STEP_X +: $bits(out_color_step_x)] = out_color_step_x;
   assign out_record[LSB_COLOR_STEP_Y +: $bits(out_color_step_y)] = out_color_step_y;
   assign out_record[LSB_FLAT_RGB +: $bits(out_flat_rgb)] = out_flat_rgb;
+  assign out_record[LSB_LEFT_START +: $bits(out_left_start)] = out_left_start;
+  assign out_record[LSB_LEFT_STEP +: $bits(out_left_step)] = out_left_step;
 
   wire load_vertices;  // the accept cycle
   wire swap_vertices;  // order the vertices so that area2 > 0 (v1 and v2 trade places)
@@ -196,9 +202,11 @@ module triangle_setup #(
     localparam integer ACC_BITS = H + MB;
     localparam integer SB = 7;  // step counters: at most H + N + F + S + 1 < 128 steps
     // Operations: AREA, DECIDE, EDGE k, SPAN START k / SPAN STEP k, plane n = 3p + c (p: depth, r,
-    // g, b; c: start, step x, step y) numerator and division, FINAL.
+    // g, b; c: start, step x, step y) numerator and division, PRODUCT n = 4p + 2j + t (plane p along
+    // left-edge slot j, t: start, step), FINAL.
     localparam [5:0] OP_AREA = 6'd0, OP_DECIDE = 6'd1, OP_EDGE = 6'd2, OP_SPAN = 6'd5, OP_PLANE = 6'd11,
-                     OP_FINAL = 6'd35;
+                     OP_PRODUCT = 6'd35, OP_FINAL = 6'd51;
+    localparam integer PB = rs_setup_product_bits(WIDTH, HEIGHT, S, Z_BITS, Z_GUARD_BITS);
 
     reg active_q;                   // a triangle is in the unit, from the cycle after its accept
     reg out_q;                      // the record is in the output register (setup_done)
@@ -220,6 +228,7 @@ module triangle_setup #(
     reg [SPAN_REM_BITS-1:0]  span_step_rem_q [0:2];
     reg [Z_REG_BITS-1:0] depth_q [0:2];
     reg [COLOR_REG_BITS-1:0] color_q [0:8];
+    reg [Z_REG_BITS-1:0] along_q [0:15];  // PRODUCT n's result (colour planes in the low bits)
 
     // Ordered edge deltas (the vertices are swapped in DECIDE when area2 < 0): dx = b.x - a.x and
     // ndy = a.y - b.y, so edge_step_x = ndy 2^S and edge_step_y = dx 2^S. Registered: computed
@@ -258,28 +267,33 @@ module triangle_setup #(
     end
 
     // The operation's shape, decoded into op_shape_q whenever op_q is set (from the operation it
-    // is set to), so that no step waits for the decode of op_q: {is_area, is_edge, is_span,
-    // is_plane, edge_k[1:0], span_k[1:0], span_step, plane_div, plane_p[1:0], plane_c[1:0]}.
-    localparam integer SHAPE_BITS = 14;
+    // is set to), so that no step waits for the decode of op_q: {is_product, product_n[3:0],
+    // is_area, is_edge, is_span, is_plane, edge_k[1:0], span_k[1:0], span_step, plane_div,
+    // plane_p[1:0], plane_c[1:0]}.
+    localparam integer SHAPE_BITS = 19;
     /* verilator lint_off UNUSEDSIGNAL */
     function automatic [SHAPE_BITS-1:0] op_shape(input [5:0] op);
-      reg [5:0] edge_op, span_op, plane_op;
+      reg [5:0] edge_op, span_op, plane_op, product_op;
       reg [3:0] plane_n, plane_c_wide;
       reg [1:0] plane_p;
       begin
         edge_op = op - OP_EDGE;
         span_op = op - OP_SPAN;
         plane_op = op - OP_PLANE;
+        product_op = op - OP_PRODUCT;
         plane_n = plane_op[4:1];  // plane n = 3p + c: p depth, r, g, b; c start, step x, step y
         plane_p = plane_n < 3 ? 2'd0 : plane_n < 6 ? 2'd1 : plane_n < 9 ? 2'd2 : 2'd3;
         plane_c_wide = plane_n - 4'(3 * plane_p);
-        op_shape = {op == OP_AREA, op >= OP_EDGE && op < OP_SPAN, op >= OP_SPAN && op < OP_PLANE,
-                    op >= OP_PLANE && op < OP_FINAL, edge_op[1:0], span_op[2:1], span_op[0], plane_op[0], plane_p,
+        op_shape = {op >= OP_PRODUCT && op < OP_FINAL, product_op[3:0],
+                    op == OP_AREA, op >= OP_EDGE && op < OP_SPAN, op >= OP_SPAN && op < OP_PLANE,
+                    op >= OP_PLANE && op < OP_PRODUCT, edge_op[1:0], span_op[2:1], span_op[0], plane_op[0], plane_p,
                     plane_c_wide[1:0]};
       end
     endfunction
     /* verilator lint_on UNUSEDSIGNAL */
     reg [SHAPE_BITS-1:0] op_shape_q;
+    wire is_product = op_shape_q[18];
+    wire [3:0] product_n = op_shape_q[17:14];  // 4p + 2j + t
     wire is_area = op_shape_q[13];
     wire is_edge = op_shape_q[12];
     wire is_span = op_shape_q[11];
@@ -298,6 +312,7 @@ module triangle_setup #(
                         : is_span ? (span_step ? SB'(H + S + 1) : SB'(H + 1))
                         : is_plane ? (!plane_div ? SB'(3) * plane_bits
                                                  : SB'(H + F) + plane_bits + (plane_c != 0 ? SB'(S) : SB'(0)))
+                        : is_product ? SB'(PB + 1)
                         : {SB{1'b0}};
     wire [1:0] last_term = is_plane ? 2'd2 : 2'd1;
     wire signed_multiplier = is_area || is_edge;
@@ -328,6 +343,34 @@ module triangle_setup #(
                         + (divisor[AREA_BITS] ? divisor : ~divisor) + (AREA_BITS+1)'(!divisor[AREA_BITS]);
     wire fits = !trial[AREA_BITS];
     wire quotient_bit = (fits && divisor_nonzero) ^ sign_q;
+
+    // ---- Product step: a plane along a left edge, base - quot * step_x modulo 2^Z_REG_BITS ----
+    // PB steps acc = 2 acc +- (bit ? step_x : 0), the quotient's bits most significant first (the
+    // first, its sign bit, subtracts), then acc = base - acc (the colour planes in the low bits).
+    // Left edges have edge_step_x = ndy 2^S > 0; slot 0 is the first in edge order, slot 1 the second.
+    wire [2:0] left_edge;
+    for (k = 0; k < 3; k = k + 1) begin : left_edges
+      assign left_edge[k] = ndy[k] > 0;
+    end
+    wire product_slot = product_n[1];
+    wire [1:0] product_p = product_n[3:2];
+    wire product_step_field = product_n[0];  // the step (else the start)
+    wire [1:0] slot_edge = !product_slot ? (left_edge[0] ? 2'd0 : left_edge[1] ? 2'd1 : 2'd2)
+                                         : (left_edge[0] && left_edge[1] ? 2'd1 : 2'd2);
+    wire slot_used = !product_slot ? |left_edge
+                                   : (left_edge[0] && left_edge[1]) || (left_edge[0] && left_edge[2]) || (left_edge[1] && left_edge[2]);
+    wire [PB-1:0] product_multiplier = !slot_used ? {PB{1'b0}}
+        : product_step_field ? PB'($signed(span_step_quot_q[slot_edge])) : PB'($signed(span_quot_q[slot_edge]));
+    wire [Z_REG_BITS-1:0] product_step_x = product_p == 2'd0 ? depth_q[1]
+                                         : Z_REG_BITS'($signed(color_q[3 * (product_p - 2'd1) + 1]));
+    wire [Z_REG_BITS-1:0] product_base = product_p == 2'd0 ? depth_q[product_step_field ? 2 : 0]
+        : Z_REG_BITS'($signed(color_q[3 * (product_p - 2'd1) + (product_step_field ? 2 : 0)]));
+    reg [Z_REG_BITS-1:0] product_acc_q;
+    reg [PB-1:0] product_bits_q;  // the multiplier, consumed from the top
+    wire product_first = left_q == SB'(PB + 1);
+    wire product_last = left_q == SB'(1);
+    wire [Z_REG_BITS-1:0] product_addend = product_bits_q[PB-1] ? product_step_x : {Z_REG_BITS{1'b0}};
+    wire [Z_REG_BITS-1:0] product_doubled = {product_acc_q[Z_REG_BITS-2:0], 1'b0};
 
     // ---- The box, in two registered steps (the vertices change only at accept and swap) ----
     reg signed [BB-1:0] x_min_q, x_max_q, y_min_q, y_max_q;
@@ -455,6 +498,8 @@ module triangle_setup #(
           term_q <= term_q + 1'b1;
           acc_q[ACC_BITS-1 -: H] <= sum;
         end
+      end else if (active_q && is_product) begin
+        left_q <= left_q - 1'b1;
       end else if (active_q && is_div) begin
         left_q <= left_q - 1'b1;
         if (correction) begin
@@ -464,6 +509,18 @@ module triangle_setup #(
           rem_q <= fits ? trial[AREA_BITS-1:0] : shifted;
           acc_q <= {acc_q[ACC_BITS-2:0], quotient_bit};
         end
+      end
+    end
+
+    // Product registers (no reset: each PRODUCT operation loads them).
+    always @(posedge clk) begin
+      if (active_q && load_q && is_product) begin
+        product_acc_q <= {Z_REG_BITS{1'b0}};
+        product_bits_q <= product_multiplier;
+      end else if (active_q && is_product) begin
+        if (product_last) product_acc_q <= product_base - product_acc_q;
+        else product_acc_q <= product_first ? product_doubled - product_addend : product_doubled + product_addend;
+        product_bits_q <= {product_bits_q[PB-2:0], 1'b0};
       end
     end
 
@@ -486,6 +543,8 @@ module triangle_setup #(
         end
         for (r = 0; r < 9; r = r + 1)
           if (op_q == OP_PLANE + 6'(2 * r) + 6'd8) color_q[r] <= acc_q[COLOR_REG_BITS-1:0];
+        for (r = 0; r < 16; r = r + 1)
+          if (op_q == OP_PRODUCT + 6'(r) + 6'd1) along_q[r] <= product_acc_q;
       end
     end
     for (k = 0; k < 3; k = k + 1) begin : record
@@ -497,6 +556,17 @@ module triangle_setup #(
       assign out_color_start[k*COLOR_REG_BITS +: COLOR_REG_BITS] = color_q[3*k];
       assign out_color_step_x[k*COLOR_REG_BITS +: COLOR_REG_BITS] = color_q[3*k + 1];
       assign out_color_step_y[k*COLOR_REG_BITS +: COLOR_REG_BITS] = color_q[3*k + 2];
+    end
+    for (k = 0; k < 2; k = k + 1) begin : left_record
+      // along_q[4p + 2j + t]: slot j of the left-edge fields holds depth, then r, g, b.
+      assign out_left_start[k*LEFT_SLOT_BITS +: Z_REG_BITS] = along_q[2*k];
+      assign out_left_step[k*LEFT_SLOT_BITS +: Z_REG_BITS] = along_q[2*k + 1];
+      for (v = 0; v < 3; v = v + 1) begin : colors
+        assign out_left_start[k*LEFT_SLOT_BITS + Z_REG_BITS + v*COLOR_REG_BITS +: COLOR_REG_BITS] =
+            along_q[4*(v + 1) + 2*k][COLOR_REG_BITS-1:0];
+        assign out_left_step[k*LEFT_SLOT_BITS + Z_REG_BITS + v*COLOR_REG_BITS +: COLOR_REG_BITS] =
+            along_q[4*(v + 1) + 2*k + 1][COLOR_REG_BITS-1:0];
+      end
     end
     assign out_depth_start = depth_q[0];
     assign out_depth_step_x = depth_q[1];
@@ -589,6 +659,10 @@ module triangle_setup #(
     localparam integer DIVIDE_STEPS = (DIVIDER_BITS + I * DIVIDE_STAGES - 1) / (I * DIVIDE_STAGES);
     localparam integer PLANE_SKIP = I * DIVIDE_STAGES * DIVIDE_STEPS - DIVIDER_BITS;
     localparam integer SPAN_SKIP = I * DIVIDE_STAGES * DIVIDE_STEPS - EDGE_BITS;
+    localparam integer PB = rs_setup_product_bits(WIDTH, HEIGHT, S, Z_BITS, Z_GUARD_BITS);
+    localparam integer PRODUCT_STAGES = rs_setup_product_stages(PB, I);
+    localparam integer PRODUCT_STEPS = (PB + I * PRODUCT_STAGES - 1) / (I * PRODUCT_STAGES);
+    localparam integer PRODUCT_SKIP = I * PRODUCT_STAGES * PRODUCT_STEPS - PB;
     localparam integer PHASE_BITS = rs_ubits32(I - 1);
     localparam integer LAST_PHASE = I - 1;
     localparam integer EDGES = 3 * EOP;
@@ -625,6 +699,7 @@ module triangle_setup #(
     reg [EDGE_STAGES-1:0] edge_valid_q;
     reg [NUMER_STAGES-1:0] numer_valid_q;
     reg [DIVIDE_STAGES-1:0] divide_valid_q;
+    reg [PRODUCT_STAGES-1:0] product_valid_q;
     reg out_valid_q;
     always @(posedge clk) begin
       if (rst) begin
@@ -633,6 +708,7 @@ module triangle_setup #(
         edge_valid_q <= {EDGE_STAGES{1'b0}};
         numer_valid_q <= {NUMER_STAGES{1'b0}};
         divide_valid_q <= {DIVIDE_STAGES{1'b0}};
+        product_valid_q <= {PRODUCT_STAGES{1'b0}};
         out_valid_q <= 1'b0;
       end else begin
         if (run) phase_q <= advance ? {PHASE_BITS{1'b0}} : phase_q + 1'b1;
@@ -645,7 +721,9 @@ module triangle_setup #(
           numer_valid_q[0] <= edge_valid_q[EDGE_STAGES-1];
           for (j = DIVIDE_STAGES - 1; j > 0; j = j - 1) divide_valid_q[j] <= divide_valid_q[j-1];
           divide_valid_q[0] <= numer_valid_q[NUMER_STAGES-1];
-          out_valid_q <= divide_valid_q[DIVIDE_STAGES-1];
+          for (j = PRODUCT_STAGES - 1; j > 0; j = j - 1) product_valid_q[j] <= product_valid_q[j-1];
+          product_valid_q[0] <= divide_valid_q[DIVIDE_STAGES-1];
+          out_valid_q <= product_valid_q[PRODUCT_STAGES-1];
         end
       end
     end
@@ -655,7 +733,7 @@ module triangle_setup #(
     assign decided = front_q && phase_q == {{(PHASE_BITS-1){1'b0}}, 1'b1};
     assign out_valid = out_valid_q && slot_first;
     assign busy = load_vertices || (front_q && (decided || status == RS_STATUS_DRAWN)) || edge_valid_q != 0
-                  || numer_valid_q != 0 || divide_valid_q != 0 || out_valid;
+                  || numer_valid_q != 0 || divide_valid_q != 0 || product_valid_q != 0 || out_valid;
 
     // FRONT's results: the vertex values of the planes, the payload (edge starts still zero).
     wire [VALS-1:0] front_vals;
@@ -923,6 +1001,7 @@ module triangle_setup #(
       end
     end
     /* verilator lint_on UNSIGNED */
+    // The first product slot's division results (the record fields are formed from them below).
     reg [PLANES-1:0] out_planes_q;
     reg [SPANS-1:0] out_spans_q;
     // |area2| (the plane divisor) is not part of the record.
@@ -958,7 +1037,10 @@ module triangle_setup #(
       end
     end
 
-    // ---- Output register: floor for negative dividends (as divider.sv), the record fields ----
+    // ---- The record fields of the first product slot: floor for negative dividends (as
+    // divider.sv), packed as the record (without the left-edge fields) ----
+    localparam integer BASE_BITS = rs_rec_lsb(RS_REC_LEFT_START, WIDTH, HEIGHT, S, Z_BITS, Z_GUARD_BITS);
+    wire [BASE_BITS-1:0] first_rec;
     genvar on, ok;
     for (on = 0; on < 12; on = on + 1) begin : out_plane
       localparam integer QB = on < 3 ? Z_REG_BITS : COLOR_REG_BITS;
@@ -967,13 +1049,13 @@ module triangle_setup #(
       wire [QB-1:0] magnitude = out_planes_q[on*PLANE_W +: QB];
       wire [QB-1:0] quotient = !negative ? magnitude : remainder_nonzero ? ~magnitude : -magnitude;
     end
-    assign out_depth_start = out_plane[0].quotient;
-    assign out_depth_step_x = out_plane[1].quotient;
-    assign out_depth_step_y = out_plane[2].quotient;
+    assign first_rec[LSB_DEPTH_START +: Z_REG_BITS] = out_plane[0].quotient;
+    assign first_rec[LSB_DEPTH_STEP_X +: Z_REG_BITS] = out_plane[1].quotient;
+    assign first_rec[LSB_DEPTH_STEP_Y +: Z_REG_BITS] = out_plane[2].quotient;
     for (ok = 0; ok < 3; ok = ok + 1) begin : out_edge
-      assign out_color_start[ok*COLOR_REG_BITS +: COLOR_REG_BITS] = out_plane[3 + 3*ok].quotient;
-      assign out_color_step_x[ok*COLOR_REG_BITS +: COLOR_REG_BITS] = out_plane[4 + 3*ok].quotient;
-      assign out_color_step_y[ok*COLOR_REG_BITS +: COLOR_REG_BITS] = out_plane[5 + 3*ok].quotient;
+      assign first_rec[LSB_COLOR_START + ok*COLOR_REG_BITS +: COLOR_REG_BITS] = out_plane[3 + 3*ok].quotient;
+      assign first_rec[LSB_COLOR_STEP_X + ok*COLOR_REG_BITS +: COLOR_REG_BITS] = out_plane[4 + 3*ok].quotient;
+      assign first_rec[LSB_COLOR_STEP_Y + ok*COLOR_REG_BITS +: COLOR_REG_BITS] = out_plane[5 + 3*ok].quotient;
       wire [EDGE_STEP_X_BITS-1:0] step_x = out_pay_q[P_SX + ok*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS];
       wire [EDGE_STEP_X_BITS-1:0] divisor = step_x[EDGE_STEP_X_BITS-1] ? -step_x : step_x;
       wire horizontal = step_x == {EDGE_STEP_X_BITS{1'b0}};
@@ -992,19 +1074,148 @@ module triangle_setup #(
       wire [EDGE_STEP_X_BITS-1:0] start_rem = (start_negative && start_partial != 0) ? divisor - start_partial : start_partial;
       wire [EDGE_STEP_X_BITS-1:0] step_rem = (step_negative && step_partial != 0) ? divisor - step_partial : step_partial;
       /* verilator lint_on UNUSEDSIGNAL */
-      assign out_edge_start[ok*EDGE_BITS +: EDGE_BITS] = out_pay_q[P_ES + ok*EDGE_BITS +: EDGE_BITS];
-      assign out_edge_step_x[ok*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS] = step_x;
-      assign out_edge_step_y[ok*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS] = out_pay_q[P_SY + ok*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS];
-      assign out_span_quot[ok*EDGE_BITS +: EDGE_BITS] = horizontal ? {EDGE_BITS{1'b0}} : start_quot;
-      assign out_span_rem[ok*SPAN_REM_BITS +: SPAN_REM_BITS] = horizontal ? {SPAN_REM_BITS{1'b0}} : start_rem[SPAN_REM_BITS-1:0];
-      assign out_span_step_quot[ok*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS] = horizontal ? {EDGE_STEP_Y_BITS{1'b0}} : step_quot;
-      assign out_span_step_rem[ok*SPAN_REM_BITS +: SPAN_REM_BITS] = horizontal ? {SPAN_REM_BITS{1'b0}} : step_rem[SPAN_REM_BITS-1:0];
+      assign first_rec[LSB_EDGE_START + ok*EDGE_BITS +: EDGE_BITS] = out_pay_q[P_ES + ok*EDGE_BITS +: EDGE_BITS];
+      assign first_rec[LSB_EDGE_STEP_X + ok*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS] = step_x;
+      assign first_rec[LSB_EDGE_STEP_Y + ok*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS] = out_pay_q[P_SY + ok*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS];
+      assign first_rec[LSB_SPAN_QUOT + ok*EDGE_BITS +: EDGE_BITS] = horizontal ? {EDGE_BITS{1'b0}} : start_quot;
+      assign first_rec[LSB_SPAN_REM + ok*SPAN_REM_BITS +: SPAN_REM_BITS] = horizontal ? {SPAN_REM_BITS{1'b0}} : start_rem[SPAN_REM_BITS-1:0];
+      assign first_rec[LSB_SPAN_STEP_QUOT + ok*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS] = horizontal ? {EDGE_STEP_Y_BITS{1'b0}} : step_quot;
+      assign first_rec[LSB_SPAN_STEP_REM + ok*SPAN_REM_BITS +: SPAN_REM_BITS] = horizontal ? {SPAN_REM_BITS{1'b0}} : step_rem[SPAN_REM_BITS-1:0];
     end
-    assign out_x0 = out_pay_q[P_X0 +: X_BITS];
-    assign out_x1 = out_pay_q[P_X1 +: X_BITS];
-    assign out_y0 = out_pay_q[P_Y0 +: Y_BITS];
-    assign out_y1 = out_pay_q[P_Y1 +: Y_BITS];
-    assign out_flat_rgb = out_pay_q[P_RGB +: 24];
+    assign first_rec[LSB_X0 +: X_BITS] = out_pay_q[P_X0 +: X_BITS];
+    assign first_rec[LSB_X1 +: X_BITS] = out_pay_q[P_X1 +: X_BITS];
+    assign first_rec[LSB_Y0 +: Y_BITS] = out_pay_q[P_Y0 +: Y_BITS];
+    assign first_rec[LSB_Y1 +: Y_BITS] = out_pay_q[P_Y1 +: Y_BITS];
+    assign first_rec[LSB_FLAT_RGB +: 24] = out_pay_q[P_RGB +: 24];
+
+    // ---- Product slots: the 16 planes along the left edges, base - quot * step_x modulo
+    // 2^Z_REG_BITS (colour planes in the low bits), PB multiply steps MSB first (the sign bit's
+    // subtracts), side by side; product n = 4p + 2j + t (plane p, left-edge slot j, t: start, step).
+    // Slot 0 holds the first slot's record fields in first_rec; later slots carry them packed. ----
+    reg [BASE_BITS-1:0] product_rec_q [0:PRODUCT_STAGES-1];  // [0] unused: first_rec stands in
+    reg [Z_REG_BITS-1:0] product_acc_q [0:PRODUCT_STAGES*16-1];
+    reg [Z_REG_BITS-1:0] product_acc_next [0:PRODUCT_STAGES*16-1];
+    reg [BASE_BITS-1:0] view;
+    reg [2:0] left_edge;
+    reg [PB-1:0] multipliers [0:3];  // slot 0 start, slot 0 step, slot 1 start, slot 1 step
+    reg [PB-1:0] multiplier;
+    reg [Z_REG_BITS-1:0] product_step_x, acc;
+    reg [31:0] product_index;
+    integer q;
+    // The record fields a product reads: plane p's step_x and its base (start or step_y), and the
+    // slot's quotient (span_quot or span_step_quot of the slot's edge).
+    function automatic [Z_REG_BITS-1:0] plane_field(input [BASE_BITS-1:0] r, input integer p, input integer which);
+      // which: 0 start, 1 step x, 2 step y
+      begin
+        if (p == 0) plane_field = r[(which == 0 ? LSB_DEPTH_START : which == 1 ? LSB_DEPTH_STEP_X : LSB_DEPTH_STEP_Y) +: Z_REG_BITS];
+        else plane_field = Z_REG_BITS'($signed(r[(which == 0 ? LSB_COLOR_START : which == 1 ? LSB_COLOR_STEP_X : LSB_COLOR_STEP_Y)
+                                                  + (p - 1) * COLOR_REG_BITS +: COLOR_REG_BITS]));
+      end
+    endfunction
+    function automatic [PB-1:0] span_quot_of(input [BASE_BITS-1:0] r, input integer edge_k);
+      span_quot_of = PB'($signed(r[LSB_SPAN_QUOT + edge_k*EDGE_BITS +: EDGE_BITS]));
+    endfunction
+    function automatic [PB-1:0] span_step_quot_of(input [BASE_BITS-1:0] r, input integer edge_k);
+      span_step_quot_of = PB'($signed(r[LSB_SPAN_STEP_QUOT + edge_k*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]));
+    endfunction
+    /* verilator lint_off UNSIGNED */
+    always @* begin
+      view = {BASE_BITS{1'b0}};
+      left_edge = 3'b000;
+      for (q = 0; q < 4; q = q + 1) multipliers[q] = {PB{1'b0}};
+      multiplier = {PB{1'b0}};
+      product_step_x = {Z_REG_BITS{1'b0}};
+      acc = {Z_REG_BITS{1'b0}};
+      product_index = 32'd0;
+      for (j = 0; j < PRODUCT_STAGES; j = j + 1) begin
+        for (n = 0; n < 16; n = n + 1) product_acc_next[j*16 + n] = {Z_REG_BITS{1'bx}};  // an empty slot: don't-care
+        if (product_valid_q[j]) begin
+          view = j == 0 ? first_rec : product_rec_q[j];
+          for (q = 0; q < 3; q = q + 1)
+            left_edge[q] = !view[LSB_EDGE_STEP_X + q*EDGE_STEP_X_BITS + EDGE_STEP_X_BITS - 1]
+                           && view[LSB_EDGE_STEP_X + q*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS] != {EDGE_STEP_X_BITS{1'b0}};
+          // Each slot's quotients: slot 0 the first left edge, slot 1 the second (else 0).
+          multipliers[0] = left_edge[0] ? span_quot_of(view, 0) : left_edge[1] ? span_quot_of(view, 1)
+                         : left_edge[2] ? span_quot_of(view, 2) : {PB{1'b0}};
+          multipliers[1] = left_edge[0] ? span_step_quot_of(view, 0) : left_edge[1] ? span_step_quot_of(view, 1)
+                         : left_edge[2] ? span_step_quot_of(view, 2) : {PB{1'b0}};
+          multipliers[2] = left_edge[0] && left_edge[1] ? span_quot_of(view, 1)
+                         : (left_edge[0] || left_edge[1]) && left_edge[2] ? span_quot_of(view, 2) : {PB{1'b0}};
+          multipliers[3] = left_edge[0] && left_edge[1] ? span_step_quot_of(view, 1)
+                         : (left_edge[0] || left_edge[1]) && left_edge[2] ? span_step_quot_of(view, 2) : {PB{1'b0}};
+          for (n = 0; n < 16; n = n + 1) begin
+            multiplier = multipliers[n % 4];
+            product_step_x = plane_field(view, n / 4, 1);
+            acc = product_acc_q[j*16 + n];
+            for (s = 0; s < PRODUCT_STEPS; s = s + 1) begin
+              product_index = (j * I + {{(32-PHASE_BITS){1'b0}}, phase_q}) * PRODUCT_STEPS + s;
+              if (product_index >= PRODUCT_SKIP) begin
+                if (multiplier[PB - 1 - (product_index - PRODUCT_SKIP)])
+                  acc = product_index == PRODUCT_SKIP ? {acc[Z_REG_BITS-2:0], 1'b0} - product_step_x
+                                                      : {acc[Z_REG_BITS-2:0], 1'b0} + product_step_x;
+                else
+                  acc = {acc[Z_REG_BITS-2:0], 1'b0};
+              end
+            end
+            product_acc_next[j*16 + n] = acc;
+          end
+        end
+      end
+    end
+    /* verilator lint_on UNSIGNED */
+    // The output register: the record and base - acc of each product.
+    reg [BASE_BITS-1:0] out_rec_q;
+    reg [Z_REG_BITS-1:0] out_along_q [0:15];
+    wire [BASE_BITS-1:0] last_view = PRODUCT_STAGES == 1 ? first_rec : product_rec_q[PRODUCT_STAGES-1];
+    always @(posedge clk) begin
+      if (advance) begin
+        if (divide_valid_q[DIVIDE_STAGES-1])
+          for (n = 0; n < 16; n = n + 1) product_acc_q[n] <= {Z_REG_BITS{1'b0}};
+        for (j = 1; j < PRODUCT_STAGES; j = j + 1) begin
+          if (product_valid_q[j-1]) begin
+            product_rec_q[j] <= j == 1 ? first_rec : product_rec_q[j-1];
+            for (n = 0; n < 16; n = n + 1) product_acc_q[j*16 + n] <= product_acc_next[(j-1)*16 + n];
+          end
+        end
+        if (product_valid_q[PRODUCT_STAGES-1]) begin
+          out_rec_q <= last_view;
+          for (n = 0; n < 16; n = n + 1)
+            out_along_q[n] <= plane_field(last_view, n / 4, n % 2 == 1 ? 2 : 0) - product_acc_next[(PRODUCT_STAGES-1)*16 + n];
+        end
+      end else begin
+        for (j = 0; j < PRODUCT_STAGES; j = j + 1)
+          if (product_valid_q[j]) for (n = 0; n < 16; n = n + 1) product_acc_q[j*16 + n] <= product_acc_next[j*16 + n];
+      end
+    end
+    assign out_x0 = out_rec_q[LSB_X0 +: X_BITS];
+    assign out_x1 = out_rec_q[LSB_X1 +: X_BITS];
+    assign out_y0 = out_rec_q[LSB_Y0 +: Y_BITS];
+    assign out_y1 = out_rec_q[LSB_Y1 +: Y_BITS];
+    assign out_edge_start = out_rec_q[LSB_EDGE_START +: 3*EDGE_BITS];
+    assign out_edge_step_x = out_rec_q[LSB_EDGE_STEP_X +: 3*EDGE_STEP_X_BITS];
+    assign out_edge_step_y = out_rec_q[LSB_EDGE_STEP_Y +: 3*EDGE_STEP_Y_BITS];
+    assign out_span_quot = out_rec_q[LSB_SPAN_QUOT +: 3*EDGE_BITS];
+    assign out_span_rem = out_rec_q[LSB_SPAN_REM +: 3*SPAN_REM_BITS];
+    assign out_span_step_quot = out_rec_q[LSB_SPAN_STEP_QUOT +: 3*EDGE_STEP_Y_BITS];
+    assign out_span_step_rem = out_rec_q[LSB_SPAN_STEP_REM +: 3*SPAN_REM_BITS];
+    assign out_depth_start = out_rec_q[LSB_DEPTH_START +: Z_REG_BITS];
+    assign out_depth_step_x = out_rec_q[LSB_DEPTH_STEP_X +: Z_REG_BITS];
+    assign out_depth_step_y = out_rec_q[LSB_DEPTH_STEP_Y +: Z_REG_BITS];
+    assign out_color_start = out_rec_q[LSB_COLOR_START +: 3*COLOR_REG_BITS];
+    assign out_color_step_x = out_rec_q[LSB_COLOR_STEP_X +: 3*COLOR_REG_BITS];
+    assign out_color_step_y = out_rec_q[LSB_COLOR_STEP_Y +: 3*COLOR_REG_BITS];
+    assign out_flat_rgb = out_rec_q[LSB_FLAT_RGB +: 24];
+    for (ok = 0; ok < 2; ok = ok + 1) begin : left_record
+      // out_along_q[4p + 2j + t]: slot j of the left-edge fields holds depth, then r, g, b.
+      assign out_left_start[ok*LEFT_SLOT_BITS +: Z_REG_BITS] = out_along_q[2*ok];
+      assign out_left_step[ok*LEFT_SLOT_BITS +: Z_REG_BITS] = out_along_q[2*ok + 1];
+      for (on = 0; on < 3; on = on + 1) begin : colors
+        assign out_left_start[ok*LEFT_SLOT_BITS + Z_REG_BITS + on*COLOR_REG_BITS +: COLOR_REG_BITS] =
+            out_along_q[4*(on + 1) + 2*ok][COLOR_REG_BITS-1:0];
+        assign out_left_step[ok*LEFT_SLOT_BITS + Z_REG_BITS + on*COLOR_REG_BITS +: COLOR_REG_BITS] =
+            out_along_q[4*(on + 1) + 2*ok + 1][COLOR_REG_BITS-1:0];
+      end
+    end
   end
   endgenerate
 

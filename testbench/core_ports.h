@@ -134,6 +134,8 @@ int64_t read_record_wire(const Core& t, const std::string& name, Read&& read) {
   if (name == "rec_color_step_x") return read(t.rec_color_step_x);
   if (name == "rec_color_step_y") return read(t.rec_color_step_y);
   if (name == "rec_flat_rgb") return read(t.rec_flat_rgb);
+  if (name == "rec_left_start") return read(t.rec_left_start);
+  if (name == "rec_left_step") return read(t.rec_left_step);
   throw std::logic_error("rastersim_core has no record wire " + name);
 }
 

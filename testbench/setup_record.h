@@ -89,6 +89,28 @@ inline std::vector<SetupRecordField> setup_record_fields(const Widths& w, bool g
   add("flat_rgb", 24, false, "provoking (first) vertex colour 0xRRGGBB", "rec_flat_rgb", -1,
       [](const SetupResult& s) { return int64_t(rgb_word(s.flat_color)); },
       [](SetupResult& s, int64_t v) { s.flat_color = Rgb{uint8_t(v >> 16), uint8_t(v >> 8), uint8_t(v)}; });
+  // The planes along the left edges: rec_left_start and rec_left_step hold slot j at
+  // [j * (z_reg_bits + 3 color_reg_bits)], its depth first, then r, g, b.
+  const int slot_bits = w.z_reg_bits + 3 * w.color_reg_bits;
+  for (int j = 0; j < kLeftEdgeSlots; ++j) {
+    const std::string slot = "left" + std::to_string(j) + "_";
+    auto along = [&](const std::string& name, auto select, int bits, int lo) {
+      const std::string edge_text = "left-edge slot " + std::to_string(j) + ": the " + name + " plane";
+      add(slot + name + "_start", bits, true, edge_text + " at the edge's span start on the first row", "rec_left_start",
+          j * slot_bits + lo, [j, select](const SetupResult& s) { return int64_t(select(s.left[j]).start); },
+          [j, select](SetupResult& s, int64_t v) { select(s.left[j]).start = v; });
+      add(slot + name + "_step", bits, true, edge_text + "'s change per row without the DDA carry", "rec_left_step",
+          j * slot_bits + lo, [j, select](const SetupResult& s) { return int64_t(select(s.left[j]).step); },
+          [j, select](SetupResult& s, int64_t v) { select(s.left[j]).step = v; });
+    };
+    along("depth", [](auto& l) -> auto& { return l.depth; }, w.z_reg_bits, 0);
+    if (gouraud) {
+      const char* const channels[] = {"red", "green", "blue"};
+      for (int c = 0; c < 3; ++c)
+        along(channels[c], [c](auto& l) -> auto& { return l.color[c]; }, w.color_reg_bits,
+              w.z_reg_bits + c * w.color_reg_bits);
+    }
+  }
   return f;
 }
 

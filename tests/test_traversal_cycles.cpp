@@ -233,7 +233,7 @@ SceneRun run_random_scene(const Profile& p, uint64_t seed, int count) {
 
 // The pipelined setup unit (setup_interval I >= 2, docs/cycle-model.md): accepts only in the first
 // cycle of a slot of I cycles, at most one per slot, with a free credit (found by brute force as
-// above); a drawn record in the output register I (1 + edge + numerator + divide slots) cycles after
+// above); a drawn record in the output register I (1 + edge + numerator + divide + product slots) cycles after
 // its accept, the slot counts re-derived here from the page's formulas; busy counted cycle by cycle.
 TEST_P(CycleModel, HandOffChainPipelinedSetup) {
   for (int interval : {2, 3, 4, 16, 64}) {
@@ -254,7 +254,9 @@ TEST_P(CycleModel, HandOffChainPipelinedSetup) {
       const int edge_slots = up(w.coord_bits + 1, 4 * interval);
       const int numer_slots = up(p.z_bits, 4 * interval);
       const int divide_slots = up(w.divider_bits, 4 * interval);
-      const int64_t latency = int64_t(interval) * (1 + edge_slots + numer_slots + divide_slots);
+      // The planes along the left edges: PB = min(z_reg_bits, edge_bits) multiply steps.
+      const int product_slots = up(std::min(w.z_reg_bits, w.edge_bits), 4 * interval);
+      const int64_t latency = int64_t(interval) * (1 + edge_slots + numer_slots + divide_slots + product_slots);
       std::vector<std::pair<int64_t, int64_t>> credits;
       std::set<int64_t> busy_cycles;
       int64_t setup_free = 0, walker_end_prev = -1, last_busy = -1, setup_stall = 0;

@@ -14,7 +14,7 @@ module walker_unit #(
   input  wire cfg_shading,    // 0 flat, 1 gouraud
   input  wire in_valid,
   output wire in_ready,
-  input  wire [rs_rec_lsb(18, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS)-1:0] in_record,
+  input  wire [rs_rec_lsb(20, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS)-1:0] in_record,
   output wire load,           // the walker takes the record (walker_load)
   output wire frag_valid,
   input  wire frag_ready,
@@ -34,7 +34,7 @@ module walker_unit #(
   localparam integer X_BITS = rs_ubits32(WIDTH - 1);
   // The packed record's width, for the test's check of its own packing (setup_record.h).
   localparam integer RECORD_BITS /*verilator public*/ =
-      rs_rec_lsb(18, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+      rs_rec_lsb(20, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
 
   wire adder_step_x, adder_next_row, adder_row_enter, adder_from_record;
   wire [X_BITS-1:0] adder_row_offset;

@@ -15,8 +15,9 @@
 namespace rastersim::vectors {
 
 // Bumped when a file, a layout or the testbench's contract changes incompatibly (docs/vectors.md).
-constexpr int kFormatVersion = 4;  // 2: check_manifest.py added; 3: status no_centre, its counter;
-                                   // 4: one testbench with a parameter file, +functional
+constexpr int kFormatVersion = 5;  // 2: check_manifest.py added; 3: status no_centre, its counter;
+                                   // 4: one testbench with a parameter file, +functional;
+                                   // 5: the planes along the left edges in setup.hex, setup cycles
 
 // Where the triangles came from, recorded in the manifest and in the regeneration command.
 struct Source {

@@ -301,7 +301,7 @@ module rastersim_vectors_tb;
 `ifndef RS_NO_SETUP_RECORD
   task observe_record;
     input integer triangle_index;
-    integer e;
+    integer e, c;
     begin
       record_word = {SETUP_BITS{1'b0}};
       record_field = 0;
@@ -330,6 +330,16 @@ module rastersim_vectors_tb;
         end
       end
       put_record_field(`RS_RECORD_PATH.rec_flat_rgb);
+      for (e = 0; e < 2; e = e + 1) begin  // left-edge slot e: depth, then r, g, b
+        put_record_field(`RS_RECORD_PATH.rec_left_start[e*(Z_REG_BITS + 3*COLOR_REG_BITS) +: Z_REG_BITS]);
+        put_record_field(`RS_RECORD_PATH.rec_left_step[e*(Z_REG_BITS + 3*COLOR_REG_BITS) +: Z_REG_BITS]);
+        if (CFG_SHADING != 0) begin
+          for (c = 0; c < 3; c = c + 1) begin
+            put_record_field(`RS_RECORD_PATH.rec_left_start[e*(Z_REG_BITS + 3*COLOR_REG_BITS) + Z_REG_BITS + c*COLOR_REG_BITS +: COLOR_REG_BITS]);
+            put_record_field(`RS_RECORD_PATH.rec_left_step[e*(Z_REG_BITS + 3*COLOR_REG_BITS) + Z_REG_BITS + c*COLOR_REG_BITS +: COLOR_REG_BITS]);
+          end
+        end
+      end
     end
   endtask
 `endif

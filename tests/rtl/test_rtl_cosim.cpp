@@ -194,8 +194,9 @@ TEST(RtlCycles, WorkedExampleOfTheCycleModel) {
   ASSERT_TRUE(r.passed) << r.message();
   // Independent of the model's sum over the program: the closed form of docs/cycle-model.md.
   const Widths w = derive_widths(p);
-  const int setup_cycles = 1 + 337 + 2 * w.delta_bits + 6 * w.coord_bits + 18 * (w.edge_bits + 3) + 12 * p.z_bits +
-                           12 * w.guard_bits + 11 * p.subpixel_bits;
+  const int product_bits = std::min(w.z_reg_bits, w.edge_bits);  // PB
+  const int setup_cycles = 1 + 369 + 2 * w.delta_bits + 6 * w.coord_bits + 18 * (w.edge_bits + 3) + 12 * p.z_bits +
+                           12 * w.guard_bits + 11 * p.subpixel_bits + 16 * product_bits;
   ASSERT_EQ(r.rtl.fragments.size(), 2u);
   EXPECT_EQ(r.rtl.triangles[0].walker_load, setup_cycles - 1);
   EXPECT_EQ(r.rtl.fragments[0].cycle, setup_cycles);  // load, pixel (no row cycle)
@@ -216,9 +217,10 @@ TEST(RtlCycles, PipelinedSetupWorkedExample) {
   const CosimReport r = cosim(p, {tiny, tiny});
   ASSERT_TRUE(r.passed) << r.message();
   // Slots: 1 FRONT, ceil((coord_bits + 1) / 16) edge, ceil(24 / 16) = 2 numerator,
-  // ceil(divider_bits / 16) divide.
+  // ceil(divider_bits / 16) divide, ceil(min(z_reg_bits, edge_bits) / 16) product.
   const Widths w = derive_widths(p);
-  const int64_t latency = 4 * (1 + (w.coord_bits + 1 + 15) / 16 + 2 + (w.divider_bits + 15) / 16);
+  const int64_t latency = 4 * (1 + (w.coord_bits + 1 + 15) / 16 + 2 + (w.divider_bits + 15) / 16 +
+                               (std::min(w.z_reg_bits, w.edge_bits) + 15) / 16);
   ASSERT_EQ(r.rtl.fragments.size(), 2u);
   EXPECT_EQ(r.rtl.triangles[0].setup_done, latency);
   EXPECT_EQ(r.rtl.fragments[0].cycle, latency + 1);  // load, pixel (no row cycle)
