@@ -62,8 +62,6 @@ module triangle_setup #(
   localparam integer EDGE_STEP_Y_BITS = rs_edge_step_y_bits(WIDTH, S);
   localparam integer SPAN_REM_BITS = rs_span_rem_bits(HEIGHT, S);
   localparam integer DIVIDER_BITS = rs_divider_bits(WIDTH, HEIGHT, S, Z_BITS, Z_GUARD_BITS);
-  localparam integer Z_REG_BITS = Z_BITS + F + 1;
-  localparam integer COLOR_REG_BITS = 9 + F;
   localparam integer X_BITS = rs_ubits32(WIDTH - 1);
   localparam integer Y_BITS = rs_ubits32(HEIGHT - 1);
   localparam integer BB = COORD_BITS + 2;           // bounding-box arithmetic, signed pixels
@@ -79,51 +77,31 @@ module triangle_setup #(
   localparam signed [BB-1:0] Y_LAST_B = Y_LAST[BB-1:0];
 
 
-  // The record fields, packed into out_record below.
-  wire [rs_ubits32(WIDTH - 1)-1:0] out_x0;
-  wire [rs_ubits32(WIDTH - 1)-1:0] out_x1;
-  wire [rs_ubits32(HEIGHT - 1)-1:0] out_y0;
-  wire [rs_ubits32(HEIGHT - 1)-1:0] out_y1;
-  wire [3*rs_edge_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] out_edge_start; // s.2S, biased
-  wire [3*rs_edge_step_x_bits(HEIGHT, SUBPIXEL_BITS)-1:0] out_edge_step_x; // s.2S
-  wire [3*rs_edge_step_y_bits(WIDTH, SUBPIXEL_BITS)-1:0] out_edge_step_y; // s.2S
-  wire [3*rs_edge_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] out_span_quot;
-  wire [3*rs_span_rem_bits(HEIGHT, SUBPIXEL_BITS)-1:0] out_span_rem;
-  wire [3*rs_edge_step_y_bits(WIDTH, SUBPIXEL_BITS)-1:0] out_span_step_quot;
-  wire [3*rs_span_rem_bits(HEIGHT, SUBPIXEL_BITS)-1:0] out_span_step_rem;
-  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0] out_depth_start;
-  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0] out_depth_step_x;
-  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0] out_depth_step_y;
-  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] out_color_start;
-  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] out_color_step_x;
-  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] out_color_step_y;
-  wire [23:0] out_flat_rgb; // provoking (first) vertex colour
-  localparam integer LEFT_SLOT_BITS = Z_BITS + rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS) + 1
-                                      + 3 * (9 + rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS));
-  wire [2*LEFT_SLOT_BITS-1:0] out_left_start;  // planes along the left edges: slot j at [j*LEFT_SLOT_BITS]
-  wire [2*LEFT_SLOT_BITS-1:0] out_left_step;
-  // Packed at the fields' places (rastersim_widths.vh).
+  // The record (rastersim_widths.vh): both schedules give fields 0..17 packed in out_base and the
+  // 16 PRODUCT results in out_along (n = 4p + 2j + t: plane p, left-edge slot j, t start / step),
+  // packed below.
   `include "rastersim_record.vh"
-  assign out_record[LSB_X0 +: $bits(out_x0)] = out_x0;
-  assign out_record[LSB_X1 +: $bits(out_x1)] = out_x1;
-  assign out_record[LSB_Y0 +: $bits(out_y0)] = out_y0;
-  assign out_record[LSB_Y1 +: $bits(out_y1)] = out_y1;
-  assign out_record[LSB_EDGE_START +: $bits(out_edge_start)] = out_edge_start;
-  assign out_record[LSB_EDGE_STEP_X +: $bits(out_edge_step_x)] = out_edge_step_x;
-  assign out_record[LSB_EDGE_STEP_Y +: $bits(out_edge_step_y)] = out_edge_step_y;
-  assign out_record[LSB_SPAN_QUOT +: $bits(out_span_quot)] = out_span_quot;
-  assign out_record[LSB_SPAN_REM +: $bits(out_span_rem)] = out_span_rem;
-  assign out_record[LSB_SPAN_STEP_QUOT +: $bits(out_span_step_quot)] = out_span_step_quot;
-  assign out_record[LSB_SPAN_STEP_REM +: $bits(out_span_step_rem)] = out_span_step_rem;
-  assign out_record[LSB_DEPTH_START +: $bits(out_depth_start)] = out_depth_start;
-  assign out_record[LSB_DEPTH_STEP_X +: $bits(out_depth_step_x)] = out_depth_step_x;
-  assign out_record[LSB_DEPTH_STEP_Y +: $bits(out_depth_step_y)] = out_depth_step_y;
-  assign out_record[LSB_COLOR_START +: $bits(out_color_start)] = out_color_start;
-  assign out_record[LSB_COLOR_STEP_X +: $bits(out_color_step_x)] = out_color_step_x;
-  assign out_record[LSB_COLOR_STEP_Y +: $bits(out_color_step_y)] = out_color_step_y;
-  assign out_record[LSB_FLAT_RGB +: $bits(out_flat_rgb)] = out_flat_rgb;
-  assign out_record[LSB_LEFT_START +: $bits(out_left_start)] = out_left_start;
-  assign out_record[LSB_LEFT_STEP +: $bits(out_left_step)] = out_left_step;
+  localparam integer BASE_BITS = LSB_LEFT_START;
+  localparam integer Z_REG_BITS = Z_BITS + rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS) + 1;
+  localparam integer COLOR_REG_BITS = 9 + rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS);
+  localparam integer LEFT_SLOT_BITS = Z_REG_BITS + 3 * COLOR_REG_BITS;
+  wire [BASE_BITS-1:0] out_base;
+  wire [Z_REG_BITS-1:0] out_along [0:15];  // colour planes in the low bits
+  assign out_record[BASE_BITS-1:0] = out_base;
+  genvar lj, lc;
+  generate
+    for (lj = 0; lj < 2; lj = lj + 1) begin : left_record
+      // Slot j of the left-edge fields holds depth, then r, g, b.
+      assign out_record[LSB_LEFT_START + lj*LEFT_SLOT_BITS +: Z_REG_BITS] = out_along[2*lj];
+      assign out_record[LSB_LEFT_STEP + lj*LEFT_SLOT_BITS +: Z_REG_BITS] = out_along[2*lj + 1];
+      for (lc = 0; lc < 3; lc = lc + 1) begin : colors
+        assign out_record[LSB_LEFT_START + lj*LEFT_SLOT_BITS + Z_REG_BITS + lc*COLOR_REG_BITS +: COLOR_REG_BITS] =
+            out_along[4*(lc + 1) + 2*lj][COLOR_REG_BITS-1:0];
+        assign out_record[LSB_LEFT_STEP + lj*LEFT_SLOT_BITS + Z_REG_BITS + lc*COLOR_REG_BITS +: COLOR_REG_BITS] =
+            out_along[4*(lc + 1) + 2*lj + 1][COLOR_REG_BITS-1:0];
+      end
+    end
+  endgenerate
 
   wire load_vertices;  // the accept cycle
   wire swap_vertices;  // order the vertices so that area2 > 0 (v1 and v2 trade places)
@@ -190,6 +168,22 @@ module triangle_setup #(
 
   generate
   if (SETUP_INTERVAL == 0) begin : serial
+    // The record fields, packed into out_base.
+    wire [X_BITS-1:0] out_x0, out_x1;
+    wire [Y_BITS-1:0] out_y0, out_y1;
+    wire [3*EDGE_BITS-1:0] out_edge_start;  // s.2S, biased
+    wire [3*EDGE_STEP_X_BITS-1:0] out_edge_step_x;  // s.2S
+    wire [3*EDGE_STEP_Y_BITS-1:0] out_edge_step_y;  // s.2S
+    wire [3*EDGE_BITS-1:0] out_span_quot;
+    wire [3*SPAN_REM_BITS-1:0] out_span_rem;
+    wire [3*EDGE_STEP_Y_BITS-1:0] out_span_step_quot;
+    wire [3*SPAN_REM_BITS-1:0] out_span_step_rem;
+    wire [Z_REG_BITS-1:0] out_depth_start, out_depth_step_x, out_depth_step_y;
+    wire [3*COLOR_REG_BITS-1:0] out_color_start, out_color_step_x, out_color_step_y;
+    wire [23:0] out_flat_rgb;  // provoking (first) vertex colour
+    assign out_base = {out_flat_rgb, out_color_step_y, out_color_step_x, out_color_start, out_depth_step_y,
+                       out_depth_step_x, out_depth_start, out_span_step_rem, out_span_step_quot, out_span_rem,
+                       out_span_quot, out_edge_step_y, out_edge_step_x, out_edge_start, out_y1, out_y0, out_x1, out_x0};
     // ---- Serial schedule (docs/cycle-model.md): one shared datapath runs a program of operations ----
     // An operation is a load cycle (operands in, the previous operation's result into the record)
     // and its steps. Multiplies shift and add least significant bit first into ACC = {HI, LO}: HI is
@@ -557,16 +551,8 @@ module triangle_setup #(
       assign out_color_step_x[k*COLOR_REG_BITS +: COLOR_REG_BITS] = color_q[3*k + 1];
       assign out_color_step_y[k*COLOR_REG_BITS +: COLOR_REG_BITS] = color_q[3*k + 2];
     end
-    for (k = 0; k < 2; k = k + 1) begin : left_record
-      // along_q[4p + 2j + t]: slot j of the left-edge fields holds depth, then r, g, b.
-      assign out_left_start[k*LEFT_SLOT_BITS +: Z_REG_BITS] = along_q[2*k];
-      assign out_left_step[k*LEFT_SLOT_BITS +: Z_REG_BITS] = along_q[2*k + 1];
-      for (v = 0; v < 3; v = v + 1) begin : colors
-        assign out_left_start[k*LEFT_SLOT_BITS + Z_REG_BITS + v*COLOR_REG_BITS +: COLOR_REG_BITS] =
-            along_q[4*(v + 1) + 2*k][COLOR_REG_BITS-1:0];
-        assign out_left_step[k*LEFT_SLOT_BITS + Z_REG_BITS + v*COLOR_REG_BITS +: COLOR_REG_BITS] =
-            along_q[4*(v + 1) + 2*k + 1][COLOR_REG_BITS-1:0];
-      end
+    for (k = 0; k < 16; k = k + 1) begin : along
+      assign out_along[k] = along_q[k];
     end
     assign out_depth_start = depth_q[0];
     assign out_depth_step_x = depth_q[1];
@@ -1039,7 +1025,6 @@ module triangle_setup #(
 
     // ---- The record fields of the first product slot: floor for negative dividends (as
     // divider.sv), packed as the record (without the left-edge fields) ----
-    localparam integer BASE_BITS = rs_rec_lsb(RS_REC_LEFT_START, WIDTH, HEIGHT, S, Z_BITS, Z_GUARD_BITS);
     wire [BASE_BITS-1:0] first_rec;
     genvar on, ok;
     for (on = 0; on < 12; on = on + 1) begin : out_plane
@@ -1187,34 +1172,9 @@ module triangle_setup #(
           if (product_valid_q[j]) for (n = 0; n < 16; n = n + 1) product_acc_q[j*16 + n] <= product_acc_next[j*16 + n];
       end
     end
-    assign out_x0 = out_rec_q[LSB_X0 +: X_BITS];
-    assign out_x1 = out_rec_q[LSB_X1 +: X_BITS];
-    assign out_y0 = out_rec_q[LSB_Y0 +: Y_BITS];
-    assign out_y1 = out_rec_q[LSB_Y1 +: Y_BITS];
-    assign out_edge_start = out_rec_q[LSB_EDGE_START +: 3*EDGE_BITS];
-    assign out_edge_step_x = out_rec_q[LSB_EDGE_STEP_X +: 3*EDGE_STEP_X_BITS];
-    assign out_edge_step_y = out_rec_q[LSB_EDGE_STEP_Y +: 3*EDGE_STEP_Y_BITS];
-    assign out_span_quot = out_rec_q[LSB_SPAN_QUOT +: 3*EDGE_BITS];
-    assign out_span_rem = out_rec_q[LSB_SPAN_REM +: 3*SPAN_REM_BITS];
-    assign out_span_step_quot = out_rec_q[LSB_SPAN_STEP_QUOT +: 3*EDGE_STEP_Y_BITS];
-    assign out_span_step_rem = out_rec_q[LSB_SPAN_STEP_REM +: 3*SPAN_REM_BITS];
-    assign out_depth_start = out_rec_q[LSB_DEPTH_START +: Z_REG_BITS];
-    assign out_depth_step_x = out_rec_q[LSB_DEPTH_STEP_X +: Z_REG_BITS];
-    assign out_depth_step_y = out_rec_q[LSB_DEPTH_STEP_Y +: Z_REG_BITS];
-    assign out_color_start = out_rec_q[LSB_COLOR_START +: 3*COLOR_REG_BITS];
-    assign out_color_step_x = out_rec_q[LSB_COLOR_STEP_X +: 3*COLOR_REG_BITS];
-    assign out_color_step_y = out_rec_q[LSB_COLOR_STEP_Y +: 3*COLOR_REG_BITS];
-    assign out_flat_rgb = out_rec_q[LSB_FLAT_RGB +: 24];
-    for (ok = 0; ok < 2; ok = ok + 1) begin : left_record
-      // out_along_q[4p + 2j + t]: slot j of the left-edge fields holds depth, then r, g, b.
-      assign out_left_start[ok*LEFT_SLOT_BITS +: Z_REG_BITS] = out_along_q[2*ok];
-      assign out_left_step[ok*LEFT_SLOT_BITS +: Z_REG_BITS] = out_along_q[2*ok + 1];
-      for (on = 0; on < 3; on = on + 1) begin : colors
-        assign out_left_start[ok*LEFT_SLOT_BITS + Z_REG_BITS + on*COLOR_REG_BITS +: COLOR_REG_BITS] =
-            out_along_q[4*(on + 1) + 2*ok][COLOR_REG_BITS-1:0];
-        assign out_left_step[ok*LEFT_SLOT_BITS + Z_REG_BITS + on*COLOR_REG_BITS +: COLOR_REG_BITS] =
-            out_along_q[4*(on + 1) + 2*ok + 1][COLOR_REG_BITS-1:0];
-      end
+    assign out_base = out_rec_q;
+    for (ok = 0; ok < 16; ok = ok + 1) begin : along
+      assign out_along[ok] = out_along_q[ok];
     end
   end
   endgenerate
