@@ -9,8 +9,9 @@
 //   rs_setup_serial_latency) for that one cycle, in which the core passes it to the walker or into
 //   the record FIFO (rastersim_core.sv); the unit is free after it.
 // - I = 2..64, pipelined: slots of I cycles counted from the first cycle of `run`; accept only in
-//   a slot's first cycle; FRONT slot (decision in a+1), NUMER_STAGES numerator slots, DIVIDE_STAGES
-//   divide slots, then the output register, valid in a + I (1 + NUMER_STAGES + DIVIDE_STAGES).
+//   a slot's first cycle; FRONT slot (decision in a+1), EDGE_STAGES edge slots, NUMER_STAGES
+//   numerator slots, DIVIDE_STAGES divide slots, PRODUCT_STAGES product slots, then the output
+//   register, valid in a + I (1 + EDGE_STAGES + NUMER_STAGES + DIVIDE_STAGES + PRODUCT_STAGES).
 module triangle_setup #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
