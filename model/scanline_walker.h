@@ -116,25 +116,29 @@ class ScanlineWalker {
   int64_t walk_span(const SetupResult& s, ZAdder& adders, int64_t cycle, Sink& sink, WalkerCounters& counters) const {
     struct EdgeState {
       int64_t row_value, quot, rem, divisor, step_x, step_y, step_quot, step_rem;
+      int slot;  // left edges: the left-edge slot (the number of left edges before it), else -1
     } edge[3];
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0, left = 0; k < 3; ++k) {
       const EdgeSetup& e = s.edge[k];
       const int64_t step_x = e.step_x;
       edge[k] = {e.start, e.span_quot, e.span_rem, step_x < 0 ? -step_x : step_x,
-                 e.step_x, e.step_y, e.span_step_quot, e.span_step_rem};
+                 e.step_x, e.step_y, e.span_step_quot, e.span_step_rem, step_x > 0 ? left++ : -1};
     }
     const int64_t last = s.x1 - s.x0;
     for (int y = s.y0; y <= s.y1; ++y) {
       // The row's span, computed before it starts: offsets t from x0 with E(t) = row_value + t step_x
       // >= 0 on every edge.
+      // The span starts at x0 or at the left edge that bounds it (either of two that tie: their
+      // planes there are equal).
       int64_t lo = 0, hi = last;
+      int lo_slot = -1;
       for (const EdgeState& e : edge) {
-        if (e.step_x > 0) lo = std::max(lo, -e.quot);       // t >= ceil(-E / d) = -floor(E / d)
+        if (e.step_x > 0 && -e.quot > lo) lo = -e.quot, lo_slot = e.slot;  // t >= ceil(-E / d) = -floor(E / d)
         else if (e.step_x < 0) hi = std::min(hi, e.quot);   // t <= floor(E / d)
-        else if (e.row_value < 0) hi = -1;                  // horizontal edge, row outside
+        else if (e.step_x == 0 && e.row_value < 0) hi = -1;  // horizontal edge, row outside
       }
       if (lo <= hi) {
-        adders.enter_row_at(lo);
+        adders.enter_span_row(lo_slot);
         cycle = emit_run(int(s.x0 + lo), y, hi - lo + 1, adders, cycle, sink, counters);
         counters.candidates += hi - lo + 1;
         counters.busy += hi - lo + 1;
@@ -142,13 +146,18 @@ class ScanlineWalker {
         ++cycle;  // the empty-row cycle
         ++counters.busy;
       }
+      bool carry[kLeftEdgeSlots] = {false, false};
       for (EdgeState& e : edge) {
         e.row_value += e.step_y;
         if (e.step_x == 0) continue;
         e.quot += e.step_quot;
         e.rem += e.step_rem;
-        if (e.rem >= e.divisor) e.rem -= e.divisor, ++e.quot;
+        if (e.rem >= e.divisor) {
+          e.rem -= e.divisor, ++e.quot;
+          if (e.slot >= 0) carry[e.slot] = true;
+        }
       }
+      adders.step_left_edges(carry);
       adders.next_row();
     }
     counters.rows += s.y1 - s.y0 + 1;

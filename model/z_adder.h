@@ -1,7 +1,9 @@
 // Z register adder: the depth register adds depth.step_x on each x step and depth.step_y on a new
-// row (a row register keeps the row start); no multiplication per pixel. The colour adders are the
-// same circuit on the r, g, b planes. All registers wrap (two's complement of `reg_bits`): only
-// values at covered pixels are used, and those are proven in range (docs/arithmetic.md).
+// row (a row register keeps the row start); the span walker enters a row at x0 or at a left edge's
+// span start, whose plane value each left-edge slot steps from row to row. No multiplication. The
+// colour adders are the same circuit on the r, g, b planes. All registers wrap (two's complement
+// of `reg_bits`): only values at covered pixels are used, and those are proven in range
+// (docs/arithmetic.md).
 #pragma once
 
 #include <cstdint>
@@ -75,6 +77,11 @@ class ZAdder {
       step_x_[k] = used ? uint64_t(planes[k]->step_x) : 0;
       step_y_[k] = used ? uint64_t(planes[k]->step_y) : 0;
       row_[k] = value_[k] = used ? uint64_t(planes[k]->start) : 0;
+      for (int j = 0; j < kLeftEdgeSlots; ++j) {
+        const EdgePlane& along = k == 0 ? s.left[j].depth : s.left[j].color[k - 1];
+        along_[j][k] = used ? uint64_t(along.start) : 0;
+        along_step_[j][k] = used ? uint64_t(along.step) : 0;
+      }
     }
     flat_ = s.flat_color;
   }
@@ -88,10 +95,16 @@ class ZAdder {
   void next_row() {
     for (int k = 0; k < kPlanes; ++k) value_[k] = row_[k] += step_y_[k];
   }
-  // Span walker: enter the row at pixel offset t >= 0 from the bounding box's x0. A small
-  // multiplier (t has x_bits) once per row, never per pixel.
-  void enter_row_at(int64_t t) {
-    for (int k = 0; k < kPlanes; ++k) value_[k] = row_[k] + uint64_t(t) * step_x_[k];
+  // Span walker: enter the current row at the bounding box's x0 (slot < 0) or at the span start
+  // of the left edge in `slot` (docs/cycle-model.md).
+  void enter_span_row(int slot) {
+    for (int k = 0; k < kPlanes; ++k) value_[k] = slot < 0 ? row_[k] : along_[slot][k];
+  }
+  // Each left-edge slot to the next row: its edge's quotient moves by span_step_quot, and by one
+  // more on the DDA's carry, which moves the span start one pixel left of where `step` took it.
+  void step_left_edges(const bool carry[kLeftEdgeSlots]) {
+    for (int j = 0; j < kLeftEdgeSlots; ++j)
+      for (int k = 0; k < kPlanes; ++k) along_[j][k] += along_step_[j][k] - (carry[j] ? step_x_[k] : 0);
   }
 
   PlaneRegister depth_register() const { return {value_[0], depth_format_}; }
@@ -126,6 +139,8 @@ class ZAdder {
   PlaneFormat depth_format_, color_format_;
   Rgb flat_;
   uint64_t step_x_[kPlanes] = {}, step_y_[kPlanes] = {}, row_[kPlanes] = {}, value_[kPlanes] = {};
+  // Per left-edge slot: the plane at its edge's span start on the current row, and its step per row.
+  uint64_t along_[kLeftEdgeSlots][kPlanes] = {}, along_step_[kLeftEdgeSlots][kPlanes] = {};
 };
 
 }  // namespace rastersim

@@ -1,54 +1,78 @@
-// One plane register of the Z adder (model/z_adder.h PlaneRegister): a wrapping two's-complement
-// value of REG_BITS with GUARD_BITS fraction bits, a row register keeping the row start, and the
-// per-pixel steps. Additions only, except the span walker's once-per-row offset multiply (at load
-// for the first row, at row_enter for the others).
+// One plane register of the Z adder (model/z_adder.h): a wrapping two's-complement value of
+// REG_BITS with GUARD_BITS fraction bits, a row register keeping the row start, the per-pixel
+// steps, and the plane along the triangle's two left-edge slots (docs/cycle-model.md). Additions
+// only: the span walker enters a row at the row start (x0) or at a left edge's span start, whose
+// plane value each slot steps from row to row.
 module plane_register #(
   parameter integer REG_BITS = 37,    // s(OUT_BITS+1).GUARD_BITS
   parameter integer GUARD_BITS = 12,  // F
-  parameter integer OUT_BITS = 24,    // output u(OUT_BITS), clamped to [0, 2^OUT_BITS - 1]
-  parameter integer OFFSET_BITS = 10  // span row offset t, u
+  parameter integer OUT_BITS = 24     // output u(OUT_BITS), clamped to [0, 2^OUT_BITS - 1]
 ) (
   input  wire clk,
-  input  wire load,       // row = start; value = start + offset * step_x_in; take the steps
-  input  wire step_x,     // value += step_x
-  input  wire next_row,   // row += step_y; value = row (bbox row wrap)
-  input  wire row_enter,  // row += step_y; value = row + offset * step_x (span: the next row)
-  input  wire [OFFSET_BITS-1:0] offset,
-  input  wire from_record,  // the product takes step_x_in (high whenever load may be), else step_x
+  input  wire load,         // take the record; value = start, or the entered slot's left_start
+  input  wire step_x,       // value += step_x
+  input  wire next_row,     // row += step_y; value = row (bbox row wrap)
+  input  wire row_enter,    // row += step_y; value = row, or the entered slot's value (span: the next row)
+  input  wire enter_left,   // load, row_enter: the row starts at a left edge's span start (else at x0)
+  input  wire enter_slot,   // which left-edge slot
+  input  wire [1:0] left_carry,  // load, row_enter: each slot's DDA carry into the row after this one
   input  wire [REG_BITS-1:0] start,
   input  wire [REG_BITS-1:0] step_x_in,
   input  wire [REG_BITS-1:0] step_y_in,
+  input  wire [2*REG_BITS-1:0] left_start,  // slot j at [j*REG_BITS]: the plane at its span start, first row
+  input  wire [2*REG_BITS-1:0] left_step,   // its change per row without the DDA's carry
   output wire [OUT_BITS-1:0] out        // clamp((value + 2^(F-1)) >>> F, 0, 2^OUT_BITS - 1)
 );
   // Parameter legality, as RS_REQUIRE of rastersim_widths.vh checks it (that header is not included
   // here: Verilator 5.006's lint then reports its functions as hiding themselves in rastersim_core).
 `ifdef __ICARUS__
-  initial if (!(GUARD_BITS >= 1 && OUT_BITS >= 1 && REG_BITS >= OUT_BITS + GUARD_BITS + 1 && REG_BITS <= 64 && OFFSET_BITS >= 1)) $fatal(1, "plane_register: need GUARD_BITS, OUT_BITS, OFFSET_BITS >= 1 and OUT_BITS + GUARD_BITS + 1 <= REG_BITS <= 64");
+  initial if (!(GUARD_BITS >= 1 && OUT_BITS >= 1 && REG_BITS >= OUT_BITS + GUARD_BITS + 1 && REG_BITS <= 64)) $fatal(1, "plane_register: need GUARD_BITS, OUT_BITS >= 1 and OUT_BITS + GUARD_BITS + 1 <= REG_BITS <= 64");
 `else
-  if (!(GUARD_BITS >= 1 && OUT_BITS >= 1 && REG_BITS >= OUT_BITS + GUARD_BITS + 1 && REG_BITS <= 64 && OFFSET_BITS >= 1)) begin : illegal_widths
-    $error("plane_register: need GUARD_BITS, OUT_BITS, OFFSET_BITS >= 1 and OUT_BITS + GUARD_BITS + 1 <= REG_BITS <= 64");
+  if (!(GUARD_BITS >= 1 && OUT_BITS >= 1 && REG_BITS >= OUT_BITS + GUARD_BITS + 1 && REG_BITS <= 64)) begin : illegal_widths
+    $error("plane_register: need GUARD_BITS, OUT_BITS >= 1 and OUT_BITS + GUARD_BITS + 1 <= REG_BITS <= 64");
   end
 `endif
   reg [REG_BITS-1:0] value_q, row_q, step_x_q, step_y_q;
+  // Per left-edge slot j, with the DDA's carry one row behind so that no sum waits for it:
+  // along_q = the plane at the slot edge's span start on the row after the current one, less
+  // carry_q * step_x; along_step_q and along_step_carry_q (= along_step_q - step_x) step it.
+  reg [REG_BITS-1:0] along_q [0:1];
+  reg [REG_BITS-1:0] along_step_q [0:1];
+  reg [REG_BITS-1:0] along_step_carry_q [0:1];
+  reg [1:0] carry_q;
 
-  // Products and sums are taken modulo 2^REG_BITS: the register wraps by design.
+  // All sums are taken modulo 2^REG_BITS: the register wraps by design.
   wire [REG_BITS-1:0] next_row_value = row_q + step_y_q;
-  // Only the low REG_BITS of the product matter (modular register).
-  /* verilator lint_off UNUSEDSIGNAL */
-  // The operand follows from_record, not load, so that the product does not wait for the handshake.
-  wire [REG_BITS-1:0] offset_step = from_record ? step_x_in : step_x_q;
-  wire [REG_BITS+OFFSET_BITS-1:0] offset_product = {{OFFSET_BITS{1'b0}}, offset_step} * {{REG_BITS{1'b0}}, offset};
-  /* verilator lint_on UNUSEDSIGNAL */
+  wire [REG_BITS-1:0] record_left [0:1];
+  wire [REG_BITS-1:0] record_step [0:1];
+  wire [REG_BITS-1:0] entered [0:1];  // each slot's plane at its span start on the row being entered
+  genvar j;
+  generate
+    for (j = 0; j < 2; j = j + 1) begin : slots
+      assign record_left[j] = left_start[j*REG_BITS +: REG_BITS];
+      assign record_step[j] = left_step[j*REG_BITS +: REG_BITS];
+      assign entered[j] = carry_q[j] ? along_q[j] - step_x_q : along_q[j];
+    end
+  endgenerate
 
+  integer k;
   always @(posedge clk) begin
     if (load) begin
-      value_q <= start + offset_product[REG_BITS-1:0];
+      value_q <= enter_left ? record_left[enter_slot] : start;
       row_q <= start;
       step_x_q <= step_x_in;
       step_y_q <= step_y_in;
+      for (k = 0; k < 2; k = k + 1) begin
+        along_q[k] <= record_left[k] + record_step[k];
+        along_step_q[k] <= record_step[k];
+        along_step_carry_q[k] <= record_step[k] - step_x_in;
+      end
+      carry_q <= left_carry;
     end else if (row_enter) begin
-      value_q <= next_row_value + offset_product[REG_BITS-1:0];
+      value_q <= enter_left ? entered[enter_slot] : next_row_value;
       row_q <= next_row_value;
+      for (k = 0; k < 2; k = k + 1) along_q[k] <= along_q[k] + (carry_q[k] ? along_step_carry_q[k] : along_step_q[k]);
+      carry_q <= left_carry;
     end else if (next_row) begin
       value_q <= next_row_value;
       row_q <= next_row_value;

@@ -230,8 +230,8 @@ module rastersim_core #(
   assign rec_left_step = rec[LSB_LEFT_STEP +: LEFT_BITS];
 
   // Walker + Z adder -> z-buffer fragment.
-  wire adder_load, adder_step_x, adder_next_row, adder_row_enter, adder_from_record;
-  wire [X_BITS-1:0] adder_row_offset;
+  wire adder_load, adder_step_x, adder_next_row, adder_row_enter, adder_enter_left, adder_enter_slot;
+  wire [1:0] adder_left_carry;
   wire frag_valid, frag_ready;
   wire [X_BITS-1:0] frag_x;
   wire [Y_BITS-1:0] frag_y;
@@ -243,17 +243,18 @@ module rastersim_core #(
     .in_valid(record_valid), .in_ready(walker_ready),
     .in_record(rec[WALKER_RECORD_BITS-1:0]),
     .adder_load(adder_load), .adder_step_x(adder_step_x), .adder_next_row(adder_next_row),
-    .adder_row_enter(adder_row_enter), .adder_row_offset(adder_row_offset), .adder_from_record(adder_from_record),
+    .adder_row_enter(adder_row_enter), .adder_enter_left(adder_enter_left), .adder_enter_slot(adder_enter_slot),
+    .adder_left_carry(adder_left_carry),
     .frag_valid(frag_valid), .frag_ready(frag_ready), .frag_x(frag_x), .frag_y(frag_y),
     .busy(trace_walker_busy), .candidate(trace_walker_candidate), .last(trace_walker_last));
 
   z_adder #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS)) adders (
     .clk(clk), .cfg_shading(shading_q), .load(adder_load), .step_x(adder_step_x),
-    .next_row(adder_next_row), .row_enter(adder_row_enter), .row_offset(adder_row_offset),
-    .from_record(adder_from_record),
+    .next_row(adder_next_row), .row_enter(adder_row_enter), .enter_left(adder_enter_left),
+    .enter_slot(adder_enter_slot), .left_carry(adder_left_carry),
     .depth_start(rec_depth_start), .depth_step_x(rec_depth_step_x), .depth_step_y(rec_depth_step_y),
     .color_start(rec_color_start), .color_step_x(rec_color_step_x), .color_step_y(rec_color_step_y),
-    .flat_rgb(rec_flat_rgb), .depth(frag_z), .rgb(frag_rgb));
+    .flat_rgb(rec_flat_rgb), .left_start(rec_left_start), .left_step(rec_left_step), .depth(frag_z), .rgb(frag_rgb));
 
   zbuffer #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY)) zbuf (
     .clk(clk), .rst(rst), .cfg_depth_func(depth_func_q), .cfg_depth_write(depth_write_q),

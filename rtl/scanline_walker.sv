@@ -6,7 +6,8 @@
 //    DDA registers (quotient and remainder of each edge by |step_x|, additions only) in the cycle
 //    before the row: the first row's from the record in the load cycle, each next row's in the
 //    previous row's last cycle, when the DDA registers step on and the plane registers move to
-//    the span start. So the DDA registers always hold the row after the current one.
+//    the span start (x0, or the bounding left edge's, by its left-edge slot). So the DDA registers
+//    always hold the row after the current one.
 // A covered candidate is presented on frag_*; the walker holds it until frag_ready.
 // Cycles (docs/cycle-model.md): the record is taken in walker_load (in_valid & in_ready), which is
 // the cycle of the previous triangle's last candidate when the record is there by then; the first
@@ -28,9 +29,10 @@ module scanline_walker #(
   output wire adder_load,       // take the setup planes (LOAD cycle)
   output wire adder_step_x,     // next pixel of the row
   output wire adder_next_row,   // bbox: wrap to the next row
-  output wire adder_row_enter,  // span, next row: row += step_y; value = row + offset * step_x
-  output wire [rs_ubits32(WIDTH - 1)-1:0] adder_row_offset,
-  output wire adder_from_record, // the offset product is the record's (a load can happen), not the registers'
+  output wire adder_row_enter,  // span, next row: row += step_y; value = row or the entered slot's
+  output wire adder_enter_left, // load, row_enter: the span starts at a left edge (else at x0)
+  output wire adder_enter_slot, // that edge's left-edge slot: the number of left edges before it
+  output wire [1:0] adder_left_carry,  // each slot's DDA carry into the row after the one entered
   // Fragment to the z-buffer.
   output wire frag_valid,
   input  wire frag_ready,
@@ -262,9 +264,6 @@ module scanline_walker #(
       : ({X_BITS{lo_pick_0}} & start_at[0]) | ({X_BITS{lo_pick_1}} & start_at[1]) | ({X_BITS{lo_pick_2}} & start_at[2]);
   wire [X_BITS-1:0] span_end = ({X_BITS{hi_pick_0}} & end_at[0]) | ({X_BITS{hi_pick_1}} & end_at[1])
                              | ({X_BITS{hi_pick_2}} & end_at[2]) | ({X_BITS{hi_pick_3}} & src_x1);
-  // The span start's offset from x0, for the plane registers.
-  wire [X_BITS-1:0] span_lo = lo_from_x0 ? {X_BITS{1'b0}}
-      : ({X_BITS{lo_pick_0}} & minus_low[0]) | ({X_BITS{lo_pick_1}} & minus_low[1]) | ({X_BITS{lo_pick_2}} & minus_low[2]);
   wire enter_span_row = span_traversal && (load || next_row);
 
   // The DDA step to the row after the one about to start: quot += step_quot (+ 1 on the carry).
@@ -286,9 +285,12 @@ module scanline_walker #(
   assign adder_step_x = advance && !row_done;
   assign adder_next_row = next_row && !span_traversal;
   assign adder_row_enter = next_row && span_traversal;
-  // The first row's offset at load (0 for bbox: the plane registers start at x0).
-  assign adder_row_offset = span_traversal ? span_lo : {X_BITS{1'b0}};
-  assign adder_from_record = use_record;
+  // The plane registers enter a span row at x0 or at the chosen left edge's span start (bbox: x0).
+  // A left edge's slot is the number of left edges before it; a triangle has at most two.
+  assign adder_enter_left = span_traversal && !lo_from_x0;
+  assign adder_enter_slot = (lo_pick_1 && src_left[0]) || (lo_pick_2 && (src_left[0] || src_left[1]));
+  assign adder_left_carry[0] = src_left[0] ? dda_carry[0] : src_left[1] ? dda_carry[1] : dda_carry[2];
+  assign adder_left_carry[1] = src_left[0] && src_left[1] ? dda_carry[1] : dda_carry[2];
 
   assign busy = load || advance;
   assign candidate = advance && (frag_valid || !span_traversal);

@@ -1,5 +1,5 @@
 // Z register adder (model/z_adder.h): the depth plane register and, for Gouraud shading, the
-// r, g, b plane registers, stepped in lockstep with the walker. No multiplication per pixel.
+// r, g, b plane registers, stepped in lockstep with the walker. No multiplication.
 // Depth registers are s(N+1).F, colour registers s9.F (F = guard bits), all wrapping.
 module z_adder #(
   parameter integer WIDTH = 640,
@@ -13,8 +13,9 @@ module z_adder #(
   input  wire step_x,
   input  wire next_row,
   input  wire row_enter,
-  input  wire [rs_ubits32(WIDTH - 1)-1:0] row_offset,
-  input  wire from_record,  // row_offset belongs to the record (load), not to the next row
+  input  wire enter_left,         // load, row_enter: the span starts at a left edge (scanline_walker)
+  input  wire enter_slot,         // its left-edge slot
+  input  wire [1:0] left_carry,   // each slot's DDA carry into the row after the one entered
   input  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_start,
   input  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_step_x,
   input  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_step_y,
@@ -22,6 +23,10 @@ module z_adder #(
   input  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] color_step_x,
   input  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] color_step_y,
   input  wire [23:0] flat_rgb,
+  // The planes along the left edges: slot j at [j*(Z_REG_BITS + 3 COLOR_REG_BITS)], depth first,
+  // then r, g, b (rastersim_widths.vh, record fields 18 and 19).
+  input  wire [2*(Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)+1+3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)))-1:0] left_start,
+  input  wire [2*(Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)+1+3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)))-1:0] left_step,
   output wire [Z_BITS-1:0] depth,  // uN
   output wire [23:0] rgb           // {r, g, b}, u8 each
 );
@@ -32,14 +37,17 @@ module z_adder #(
   localparam integer F = rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS);
   localparam integer Z_REG_BITS = Z_BITS + F + 1;
   localparam integer COLOR_REG_BITS = 9 + F;
-  localparam integer X_BITS = rs_ubits32(WIDTH - 1);
+  localparam integer SLOT_BITS = Z_REG_BITS + 3 * COLOR_REG_BITS;
 
   reg [23:0] flat_q;
   always @(posedge clk) if (load) flat_q <= flat_rgb;
 
-  plane_register #(.REG_BITS(Z_REG_BITS), .GUARD_BITS(F), .OUT_BITS(Z_BITS), .OFFSET_BITS(X_BITS)) depth_plane (
+  plane_register #(.REG_BITS(Z_REG_BITS), .GUARD_BITS(F), .OUT_BITS(Z_BITS)) depth_plane (
     .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter),
-    .offset(row_offset), .from_record(from_record), .start(depth_start), .step_x_in(depth_step_x), .step_y_in(depth_step_y),
+    .enter_left(enter_left), .enter_slot(enter_slot), .left_carry(left_carry),
+    .start(depth_start), .step_x_in(depth_step_x), .step_y_in(depth_step_y),
+    .left_start({left_start[SLOT_BITS +: Z_REG_BITS], left_start[0 +: Z_REG_BITS]}),
+    .left_step({left_step[SLOT_BITS +: Z_REG_BITS], left_step[0 +: Z_REG_BITS]}),
     .out(depth));
 
   wire [23:0] gouraud_rgb;
@@ -47,10 +55,15 @@ module z_adder #(
   generate
     for (c = 0; c < 3; c = c + 1) begin : color_planes
       // Channel c is r, g, b for c = 0, 1, 2; rgb holds r in [23:16].
-      plane_register #(.REG_BITS(COLOR_REG_BITS), .GUARD_BITS(F), .OUT_BITS(8), .OFFSET_BITS(X_BITS)) plane (
+      localparam integer AT = Z_REG_BITS + c * COLOR_REG_BITS;  // the channel in a left-edge slot
+      plane_register #(.REG_BITS(COLOR_REG_BITS), .GUARD_BITS(F), .OUT_BITS(8)) plane (
         .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter),
-        .offset(row_offset), .from_record(from_record), .start(color_start[c*COLOR_REG_BITS +: COLOR_REG_BITS]), .step_x_in(color_step_x[c*COLOR_REG_BITS +: COLOR_REG_BITS]),
-        .step_y_in(color_step_y[c*COLOR_REG_BITS +: COLOR_REG_BITS]), .out(gouraud_rgb[8*(2-c) +: 8]));
+        .enter_left(enter_left), .enter_slot(enter_slot), .left_carry(left_carry),
+        .start(color_start[c*COLOR_REG_BITS +: COLOR_REG_BITS]), .step_x_in(color_step_x[c*COLOR_REG_BITS +: COLOR_REG_BITS]),
+        .step_y_in(color_step_y[c*COLOR_REG_BITS +: COLOR_REG_BITS]),
+        .left_start({left_start[SLOT_BITS + AT +: COLOR_REG_BITS], left_start[AT +: COLOR_REG_BITS]}),
+        .left_step({left_step[SLOT_BITS + AT +: COLOR_REG_BITS], left_step[AT +: COLOR_REG_BITS]}),
+        .out(gouraud_rgb[8*(2-c) +: 8]));
     end
   endgenerate
 

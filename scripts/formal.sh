@@ -34,7 +34,7 @@ declare -A unit includes params mode mutation
 while IFS='|' read -r name u inc par m mut; do
   unit[$name]=$u includes[$name]=$inc params[$name]=$par mode[$name]=$m mutation[$name]=$mut
 done <<'TABLE'
-z_adder_recurrence|plane_register|plane_register_recurrence.svh|REG_BITS 6 GUARD_BITS 2 OUT_BITS 3 OFFSET_BITS 2|-tempinduct|s/value_q <= value_q + step_x_q;/value_q <= value_q + step_y_q;/
+z_adder_recurrence|plane_register|plane_register_recurrence.svh|REG_BITS 6 GUARD_BITS 2 OUT_BITS 3|-tempinduct|s/value_q <= value_q + step_x_q;/value_q <= value_q + step_y_q;/
 walker_edges|scanline_walker|scanline_walker_inputs.svh scanline_walker_edges.svh|WIDTH 2 HEIGHT 2 SUBPIXEL_BITS 1|-seq 6|s/edge_value_q\[i\] <= edge_row_q\[i\] + step_y_q\[i\];/edge_value_q[i] <= edge_row_q[i];/
 walker_bounds|scanline_walker|scanline_walker_inputs.svh scanline_walker_bounds.svh|WIDTH 4 HEIGHT 3 SUBPIXEL_BITS 1|-seq 14|s/({X_BITS{hi_pick_3}} \& src_x1)/({X_BITS{hi_pick_3}} \& (src_x1 + 1'b1))/
 zbuffer_hazard|zbuffer|zbuffer_hazard.svh|WIDTH 2 HEIGHT 2 Z_BITS 2 MAX_MEMORY_LATENCY 4|-seq 10|s/1'b1} << done_slot;/1'b1} << next_done_slot;/

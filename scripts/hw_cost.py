@@ -83,18 +83,21 @@ SHIMS = {
 module hwcost_plane_register #(
   parameter integer WIDTH = 640, parameter integer HEIGHT = 480, parameter integer SUBPIXEL_BITS = 4,
   parameter integer Z_BITS = 24, parameter integer Z_GUARD_BITS = 0, parameter integer MAX_MEMORY_LATENCY = 64
-) (clk, load, step_x, next_row, row_enter, offset, from_record, start, step_x_in, step_y_in, out);
+) (clk, load, step_x, next_row, row_enter, enter_left, enter_slot, left_carry, start, step_x_in, step_y_in,
+     left_start, left_step, out);
 `include "rastersim_widths.vh"
   localparam integer F = rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS);
   localparam integer Z_REG_BITS = Z_BITS + F + 1;
-  localparam integer OB = rs_ubits32(WIDTH - 1);
-  input wire clk, load, step_x, next_row, row_enter, from_record;
-  input wire [OB-1:0] offset;
+  input wire clk, load, step_x, next_row, row_enter, enter_left, enter_slot;
+  input wire [1:0] left_carry;
   input wire [Z_REG_BITS-1:0] start, step_x_in, step_y_in;
+  input wire [2*Z_REG_BITS-1:0] left_start, left_step;
   output wire [Z_BITS-1:0] out;
-  plane_register #(.REG_BITS(Z_REG_BITS), .GUARD_BITS(F), .OUT_BITS(Z_BITS), .OFFSET_BITS(OB)) unit (
-    .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter), .offset(offset), .from_record(from_record),
-    .start(start), .step_x_in(step_x_in), .step_y_in(step_y_in), .out(out));
+  plane_register #(.REG_BITS(Z_REG_BITS), .GUARD_BITS(F), .OUT_BITS(Z_BITS)) unit (
+    .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter),
+    .enter_left(enter_left), .enter_slot(enter_slot), .left_carry(left_carry),
+    .start(start), .step_x_in(step_x_in), .step_y_in(step_y_in), .left_start(left_start), .left_step(left_step),
+    .out(out));
 endmodule
 """,
 }

@@ -12,7 +12,8 @@ shift
 mutants=("$@")
 [ ${#mutants[@]} -eq 0 ] && mutants=(edge_compare walker_backpressure walker_no_overlap walker_first_row_span
                                      walker_empty_row walker_dda_carry walker_lower_bound_order walker_bounds_cross
-                                     z_adder_first_row z_adder_carry hazard_stall
+                                     z_adder_first_row z_adder_carry z_adder_slot_carry
+                                     z_adder_slot_step walker_enter_slot walker_left_carry_1 hazard_stall
                                      hazard_window_short hazard_address_bit ring_read_slot
                                      serial_floor serial_remainder_correction serial_multiplier_bits
                                      serial_bias_carry setup_slot_counter setup_floor_correction setup_missing_step
@@ -52,11 +53,23 @@ file[walker_bounds_cross]=scanline_walker.sv
 from[walker_bounds_cross]='(upper_none || !sum[X_BITS+1])'
 to[walker_bounds_cross]='(upper_none || 1'"'"'b1)'  # a left bound past a right one does not empty the row
 file[z_adder_first_row]=plane_register.sv
-from[z_adder_first_row]='value_q <= start + offset_product[REG_BITS-1:0];'
+from[z_adder_first_row]='value_q <= enter_left ? record_left[enter_slot] : start;'
 to[z_adder_first_row]='value_q <= start;'  # the first row's planes not moved to its span start
 file[z_adder_carry]=plane_register.sv
 from[z_adder_carry]='value_q <= value_q + step_x_q;'
 to[z_adder_carry]='value_q <= value_q + step_x_q + 1'"'"'b1;'  # carry-in of the x-step adder flipped
+# The planes along the left edges and the walker's slot and carry mapping.
+file[z_adder_slot_carry]=plane_register.sv
+from[z_adder_slot_carry]='assign entered[j] = carry_q[j] ? along_q[j] - step_x_q : along_q[j];'
+to[z_adder_slot_carry]='assign entered[j] = along_q[j];'  # a carried edge's span start entered a pixel off
+file[z_adder_slot_step]=plane_register.sv
+from[z_adder_slot_step]='along_q[k] <= along_q[k] + (carry_q[k] ? along_step_carry_q[k] : along_step_q[k]);'
+to[z_adder_slot_step]='along_q[k] <= along_q[k] + along_step_q[k];'  # a slot ignores its edge's DDA carry
+for m in walker_enter_slot walker_left_carry_1; do file[$m]=scanline_walker.sv; done
+from[walker_enter_slot]='assign adder_enter_slot = (lo_pick_1 && src_left[0]) || (lo_pick_2 && (src_left[0] || src_left[1]));'
+to[walker_enter_slot]='assign adder_enter_slot = lo_pick_1 || lo_pick_2;'  # edge 1 or 2 taken as slot 1 even when it is the first left edge
+from[walker_left_carry_1]='assign adder_left_carry[1] = src_left[0] && src_left[1] ? dda_carry[1] : dda_carry[2];'
+to[walker_left_carry_1]='assign adder_left_carry[1] = dda_carry[2];'  # slot 1 always takes edge 2's carry
 file[hazard_stall]=zbuffer.sv
 from[hazard_stall]='wire can_accept = mem_clear_done && !hazard;'
 to[hazard_stall]='wire can_accept = mem_clear_done;'  # read-after-write stall removed

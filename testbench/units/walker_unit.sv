@@ -36,27 +36,29 @@ module walker_unit #(
   localparam integer RECORD_BITS /*verilator public*/ =
       rs_rec_lsb(20, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
 
-  wire adder_step_x, adder_next_row, adder_row_enter, adder_from_record;
-  wire [X_BITS-1:0] adder_row_offset;
+  wire adder_step_x, adder_next_row, adder_row_enter, adder_enter_left, adder_enter_slot;
+  wire [1:0] adder_left_carry;
 
   scanline_walker #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS)) walker (
     .clk(clk), .rst(rst), .cfg_traversal(cfg_traversal),
     .in_valid(in_valid), .in_ready(in_ready),
     .in_record(in_record[rs_rec_walker_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0]),
     .adder_load(load), .adder_step_x(adder_step_x), .adder_next_row(adder_next_row),
-    .adder_row_enter(adder_row_enter), .adder_row_offset(adder_row_offset), .adder_from_record(adder_from_record),
+    .adder_row_enter(adder_row_enter), .adder_enter_left(adder_enter_left), .adder_enter_slot(adder_enter_slot),
+    .adder_left_carry(adder_left_carry),
     .frag_valid(frag_valid), .frag_ready(frag_ready), .frag_x(frag_x), .frag_y(frag_y),
     .busy(busy), .candidate(candidate), .last(last));
 
   z_adder #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS)) adders (
     .clk(clk), .cfg_shading(cfg_shading), .load(load), .step_x(adder_step_x),
-    .next_row(adder_next_row), .row_enter(adder_row_enter), .row_offset(adder_row_offset),
-    .from_record(adder_from_record),
+    .next_row(adder_next_row), .row_enter(adder_row_enter), .enter_left(adder_enter_left),
+    .enter_slot(adder_enter_slot), .left_carry(adder_left_carry),
     .depth_start(in_record[LSB_DEPTH_START +: Z_REG_BITS]),
     .depth_step_x(in_record[LSB_DEPTH_STEP_X +: Z_REG_BITS]),
     .depth_step_y(in_record[LSB_DEPTH_STEP_Y +: Z_REG_BITS]),
     .color_start(in_record[LSB_COLOR_START +: 3*COLOR_REG_BITS]),
     .color_step_x(in_record[LSB_COLOR_STEP_X +: 3*COLOR_REG_BITS]),
     .color_step_y(in_record[LSB_COLOR_STEP_Y +: 3*COLOR_REG_BITS]),
-    .flat_rgb(in_record[LSB_FLAT_RGB +: 24]), .depth(frag_z), .rgb(frag_rgb));
+    .flat_rgb(in_record[LSB_FLAT_RGB +: 24]), .left_start(in_record[LSB_LEFT_START +: 2*(Z_REG_BITS + 3*COLOR_REG_BITS)]),
+    .left_step(in_record[LSB_LEFT_STEP +: 2*(Z_REG_BITS + 3*COLOR_REG_BITS)]), .depth(frag_z), .rgb(frag_rgb));
 endmodule
