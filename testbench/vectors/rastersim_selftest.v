@@ -40,14 +40,26 @@ module rastersim_selftest (
     $readmemh("selftest.hex", expected_crc, 0, 1);
   end
   reg [COUNT_BITS-1:0] next_command;
+  reg cmd_valid_q;  // next_command < TRIANGLES
   reg [COMMAND_BITS-1:0] command_q;  // the ROM word of next_command (a synchronous read)
-  wire cmd_valid = next_command < TRIANGLES;
+  wire cmd_valid = cmd_valid_q;
   wire cmd_ready, frame_ready;
-  wire [COUNT_BITS-1:0] command_after = next_command + {{(COUNT_BITS-1){1'b0}}, cmd_valid && cmd_ready};
+  wire accept = cmd_valid && cmd_ready;
+  // The next cycle's count, validity and ROM address for both outcomes of the handshake, formed
+  // from registers: the handshake only selects (no compare or increment behind the core's ready).
+  wire [COUNT_BITS-1:0] command_plus_1 = next_command + {{(COUNT_BITS-1){1'b0}}, 1'b1};
+  wire more_after = command_plus_1 < TRIANGLES;
+  wire [COUNT_BITS-1:0] address_stay = cmd_valid_q ? next_command : {COUNT_BITS{1'b0}};
+  wire [COUNT_BITS-1:0] address_move = more_after ? command_plus_1 : {COUNT_BITS{1'b0}};
   always @(posedge clk) begin
-    if (rst) next_command <= {COUNT_BITS{1'b0}};
-    else next_command <= command_after;
-    command_q <= commands[command_after < TRIANGLES ? command_after : 0];
+    if (rst) begin
+      next_command <= {COUNT_BITS{1'b0}};
+      cmd_valid_q <= TRIANGLES > 0;
+    end else if (accept) begin
+      next_command <= command_plus_1;
+      cmd_valid_q <= more_after;
+    end
+    command_q <= commands[accept ? address_move : address_stay];
   end
   // The command's fields (rastersim_vectors_params.vh), 64 bits each: field k at [64 k +: 64].
   wire [64*COMMAND_FIELDS-1:0] command_fields;
