@@ -362,9 +362,12 @@ module triangle_setup #(
         : Z_REG_BITS'($signed(color_q[3 * (product_p - 2'd1) + (product_step_field ? 2 : 0)]));
     reg [Z_REG_BITS-1:0] product_acc_q;
     reg [PB-1:0] product_bits_q;  // the multiplier, consumed from the top
+    // The operation's multiplicand and base, taken in its load cycle: the plane selection is then
+    // off the accumulator's path.
+    reg [Z_REG_BITS-1:0] product_step_x_q, product_base_q;
     wire product_first = left_q == SB'(PB + 1);
     wire product_last = left_q == SB'(1);
-    wire [Z_REG_BITS-1:0] product_addend = product_bits_q[PB-1] ? product_step_x : {Z_REG_BITS{1'b0}};
+    wire [Z_REG_BITS-1:0] product_addend = product_bits_q[PB-1] ? product_step_x_q : {Z_REG_BITS{1'b0}};
     wire [Z_REG_BITS-1:0] product_doubled = {product_acc_q[Z_REG_BITS-2:0], 1'b0};
 
     // ---- The box, in two registered steps (the vertices change only at accept and swap) ----
@@ -512,8 +515,10 @@ module triangle_setup #(
       if (active_q && load_q && is_product) begin
         product_acc_q <= {Z_REG_BITS{1'b0}};
         product_bits_q <= product_multiplier;
+        product_step_x_q <= product_step_x;
+        product_base_q <= product_base;
       end else if (active_q && is_product) begin
-        if (product_last) product_acc_q <= product_base - product_acc_q;
+        if (product_last) product_acc_q <= product_base_q - product_acc_q;
         else product_acc_q <= product_first ? product_doubled - product_addend : product_doubled + product_addend;
         product_bits_q <= {product_bits_q[PB-2:0], 1'b0};
       end

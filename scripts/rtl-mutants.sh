@@ -16,7 +16,7 @@ mutants=("$@")
                                      z_adder_slot_step walker_enter_slot walker_left_carry_1 hazard_stall
                                      hazard_window_short hazard_address_bit ring_read_slot
                                      serial_floor serial_remainder_correction serial_multiplier_bits
-                                     serial_bias_carry setup_slot_counter setup_floor_correction setup_missing_step
+                                     serial_bias_carry serial_product_step_x setup_slot_counter setup_floor_correction setup_missing_step
                                      setup_credit_count setup_fifo_empty setup_edge_sign setup_offscreen_rows)
 
 # name -> file, text to replace, replacement (fixed strings); params: extra verilator -G settings;
@@ -86,7 +86,8 @@ to[hazard_address_bit]='if (live[k] && ring_pixel_q[k][PIXEL_BITS-1:1] == frag_p
 from[ring_read_slot]='ram_read_q <= ring_data_q[next_done_slot];'
 to[ring_read_slot]='ram_read_q <= ring_data_q[done_slot];'  # the in-flight RAM read a cycle late
 # The serial setup unit.
-for m in serial_floor serial_remainder_correction serial_multiplier_bits serial_bias_carry serial_swap_deltas; do
+for m in serial_floor serial_remainder_correction serial_multiplier_bits serial_bias_carry serial_swap_deltas \
+         serial_product_step_x; do
   file[$m]=triangle_setup.sv
   params[$m]="-GSETUP_INTERVAL=0"
 done
@@ -100,6 +101,8 @@ from[serial_bias_carry]='+ H'"'"'(subtract || (bit_now && use_start && bias[weig
 to[serial_bias_carry]='+ H'"'"'(subtract);'  # the start numerators use the biased edge values
 from[serial_swap_deltas]='dx_q[d] <= -dx_q[2 - d];'
 to[serial_swap_deltas]='dx_q[d] <= dx_q[2 - d];'  # the swapped edges keep their x direction
+from[serial_product_step_x]='product_step_x_q <= product_step_x;'
+to[serial_product_step_x]='product_step_x_q <= depth_q[1];'  # the colour planes along the left edges step by the depth's step_x
 # The pipelined setup unit and the record FIFO.
 for m in setup_slot_counter setup_floor_correction setup_missing_step setup_credit_count setup_fifo_empty setup_edge_sign \
          setup_offscreen_rows; do
