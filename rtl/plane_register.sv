@@ -34,8 +34,8 @@ module plane_register #(
 `endif
   reg [REG_BITS-1:0] value_q, row_q, step_x_q, step_y_q;
   // Per left-edge slot j, with the DDA's carry one row behind so that no sum waits for it:
-  // along_q = the plane at the slot edge's span start on the row after the current one, less
-  // carry_q * step_x; along_step_q and along_step_carry_q (= along_step_q - step_x) step it.
+  // along_q - carry_q * step_x = the plane at the slot edge's span start on the row after the
+  // current one; along_step_q and along_step_carry_q (= along_step_q - step_x) step along_q.
   reg [REG_BITS-1:0] along_q [0:1];
   reg [REG_BITS-1:0] along_step_q [0:1];
   reg [REG_BITS-1:0] along_step_carry_q [0:1];
