@@ -2,6 +2,8 @@
 // triangle's bounding box, edge functions are updated by additions only, one candidate per clock.
 // cfg_traversal selects the traversal at run time (both emit the same fragments in the same order):
 //  0 bbox: every bounding-box pixel, row-major; the counters wrap to the next row in the same cycle.
+//    A pixel is covered when it lies in its row's span (below), the same DDA and bounds as span
+//    traversal: no edge value is stepped per pixel.
 //  1 span: one cycle per covered pixel, one for a row with none. A row's span bounds come from the
 //    DDA registers (quotient and remainder of each edge by |step_x|, additions only) in the cycle
 //    before the row: the first row's from the record in the load cycle, each next row's in the
@@ -89,10 +91,9 @@ module scanline_walker #(
 
   reg [X_BITS-1:0] x0_q, x1_q, x_end_q;
   reg [Y_BITS-1:0] y1_q;
-  reg          row_empty_q;                // span: the current row has no covered pixel
-  reg signed [EDGE_BITS-1:0]  edge_row_q [0:2];    // edge value at x0: bbox the current row, span the next
-  reg signed [EDGE_BITS-1:0]  edge_value_q [0:2];  // bbox: edge value at (x, y)
-  reg signed [EDGE_BITS-1:0]  step_x_q [0:2];     // sign-extended to EDGE_BITS at load
+  reg          row_empty_q;                // the current row has no covered pixel
+  reg [X_BITS-1:0] span_start_q;           // bbox: the current row's first covered pixel
+  reg signed [EDGE_BITS-1:0]  edge_row_q [0:2];    // edge value at x0 of the row after the current one
   reg signed [EDGE_BITS-1:0]  step_y_q [0:2];
   reg signed [EDGE_BITS-1:0]  quot_q [0:2];        // span DDA of the next row: floor(edge_row / d), d = |step_x|
   // The DDA's remainders are kept less d (rem - d in [-d, -1]), so that the carry is the sign of one
@@ -104,7 +105,8 @@ module scanline_walker #(
   reg [REM_BITS-1:0]              step_rem_less_q [0:2];  // step_rem - d, in [-d, -1]
 
   // ---- the current candidate ----
-  wire covered = !edge_value_q[0][EDGE_BITS-1] && !edge_value_q[1][EDGE_BITS-1] && !edge_value_q[2][EDGE_BITS-1];
+  // bbox: the pixel lies in its row's span (the span's pixels are exactly those with every edge >= 0).
+  wire covered = !row_empty_q && frag_x >= span_start_q && frag_x <= x_end_q;
   assign frag_valid = walking_q && (span_traversal ? !row_empty_q : covered);
   wire advance = walking_q && (frag_ready || !frag_valid);
   wire row_done = span_traversal ? row_empty_q || frag_x == x_end_q : frag_x == x1_q;
@@ -123,35 +125,48 @@ module scanline_walker #(
   reg mid_walk_q;
   wire use_record = !mid_walk_q;
   wire signed [EDGE_BITS-1:0] src_edge_row [0:2];
-  wire signed [EDGE_BITS-1:0] src_step_x [0:2];
   wire signed [EDGE_BITS-1:0] src_step_y [0:2];
   wire signed [EDGE_BITS-1:0] src_quot [0:2];
-  wire [REM_BITS-1:0]             src_rem_less [0:2];
   wire signed [EDGE_BITS-1:0] src_step_quot [0:2];
-  wire [REM_BITS-1:0]             src_step_rem [0:2];
-  wire [REM_BITS-1:0]             src_step_rem_less [0:2];
+  // The record's first DDA step, formed from the record alone (beside the multiplexer): its carries
+  // and the remainders (less d) of the row after the first.
+  wire [2:0] in_dda_carry;
+  wire [REM_BITS-1:0] in_next_rem_less [0:2];
+  wire [REM_BITS-1:0] in_step_rem [0:2];
+  wire [REM_BITS-1:0] in_step_rem_less [0:2];
+  // a + b + c + plus[1] + plus[0] modulo 2^REM_BITS (each plus bit adds one), as one carry-save
+  // level and one adder.
+  function automatic [REM_BITS-1:0] rem_sum3(input [REM_BITS-1:0] a, input [REM_BITS-1:0] b,
+                                             input [REM_BITS-1:0] c, input [1:0] plus);
+    reg [REM_BITS-1:0] save_carry;
+    begin
+      save_carry = ((a & b) | (a & c) | (b & c)) << 1;
+      rem_sum3 = (a ^ b ^ c) + (save_carry | {{(REM_BITS-1){1'b0}}, plus[1]}) + {{(REM_BITS-1){1'b0}}, plus[0]};
+    end
+  endfunction
   genvar g;
   generate
     for (g = 0; g < 3; g = g + 1) begin : source
-      wire signed [EDGE_BITS-1:0] in_step_x_wide = $signed({{(EDGE_BITS-EDGE_STEP_X_BITS){in_edge_step_x[g*EDGE_STEP_X_BITS + EDGE_STEP_X_BITS - 1]}}, in_edge_step_x[g*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS]});
       wire signed [EDGE_BITS-1:0] in_step_y_wide = $signed({{(EDGE_BITS-EDGE_STEP_Y_BITS){in_edge_step_y[g*EDGE_STEP_Y_BITS + EDGE_STEP_Y_BITS - 1]}}, in_edge_step_y[g*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]});
       wire signed [EDGE_BITS-1:0] in_step_quot_wide = $signed({{(EDGE_BITS-EDGE_STEP_Y_BITS){in_span_step_quot[g*EDGE_STEP_Y_BITS + EDGE_STEP_Y_BITS - 1]}}, in_span_step_quot[g*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]});
       assign src_edge_row[g] = use_record ? in_edge_start[g*EDGE_BITS +: EDGE_BITS] : edge_row_q[g];
-      assign src_step_x[g] = use_record ? in_step_x_wide : step_x_q[g];
       assign src_step_y[g] = use_record ? in_step_y_wide : step_y_q[g];
       assign src_quot[g] = use_record ? in_span_quot[g*EDGE_BITS +: EDGE_BITS] : quot_q[g];
-      // The record's remainders less d, formed from the record alone (beside the multiplexer).
+      // The record's remainders are in [0, d), d = |step_x|; the DDA keeps them less d. The first
+      // step's carry is rem + step_rem - d >= 0 (the sum lies in [-d, d)), and the next remainder
+      // less d is that sum, or the sum less d again on a carry: -d is step_x when step_x < 0, else
+      // ~step_x + 1, -2d twice that (modulo 2^REM_BITS).
       wire [REM_BITS-1:0] in_rem = {1'b0, in_span_rem[g*SPAN_REM_BITS +: SPAN_REM_BITS]};
-      wire [REM_BITS-1:0] in_step_rem = {1'b0, in_span_step_rem[g*SPAN_REM_BITS +: SPAN_REM_BITS]};
-      // rem - |step_x|: one adder each way, not a negation and then a subtraction.
+      assign in_step_rem[g] = {1'b0, in_span_step_rem[g*SPAN_REM_BITS +: SPAN_REM_BITS]};
       wire in_step_x_negative = in_edge_step_x[g*EDGE_STEP_X_BITS + EDGE_STEP_X_BITS - 1];
       wire [REM_BITS-1:0] in_step_x_low = in_edge_step_x[g*EDGE_STEP_X_BITS +: REM_BITS];
-      wire [REM_BITS-1:0] in_rem_less = in_step_x_negative ? in_rem + in_step_x_low : in_rem - in_step_x_low;
-      wire [REM_BITS-1:0] in_step_rem_less = in_step_x_negative ? in_step_rem + in_step_x_low : in_step_rem - in_step_x_low;
-      assign src_rem_less[g] = use_record ? in_rem_less : rem_less_q[g];
+      wire [REM_BITS-1:0] in_minus_d_less = in_step_x_negative ? in_step_x_low : ~in_step_x_low;  // -d, less 1 when step_x > 0
+      wire [REM_BITS-1:0] in_sum_less_d = rem_sum3(in_rem, in_step_rem[g], in_minus_d_less, {1'b0, !in_step_x_negative});
+      wire [REM_BITS-1:0] in_sum_less_2d = rem_sum3(in_rem, in_step_rem[g], in_minus_d_less << 1, {2{!in_step_x_negative}});
+      assign in_dda_carry[g] = !in_sum_less_d[REM_BITS-1];
+      assign in_next_rem_less[g] = in_dda_carry[g] ? in_sum_less_2d : in_sum_less_d;
+      assign in_step_rem_less[g] = in_step_x_negative ? in_step_rem[g] + in_step_x_low : in_step_rem[g] - in_step_x_low;
       assign src_step_quot[g] = use_record ? in_step_quot_wide : step_quot_q[g];
-      assign src_step_rem[g] = use_record ? in_step_rem : step_rem_q[g];
-      assign src_step_rem_less[g] = use_record ? in_step_rem_less : step_rem_less_q[g];
     end
   endgenerate
   // Left edges have step_x > 0, right ones < 0: the step's sign and a zero test, registered at load
@@ -184,7 +199,22 @@ module scanline_walker #(
   // The box's last offset: the record's is formed from the record alone, beside the multiplexer.
   reg [X_BITS-1:0] last_offset_q;
   wire [X_BITS-1:0] in_last_offset = in_x1 - in_x0;
-  wire [X_BITS-1:0] last_offset = use_record ? in_last_offset : last_offset_q;
+  // Compares with the last offset are formed on each side of the multiplexer and the results chosen
+  // after it: the record's as one carry-save level and one adder from x1, x0 and the quotient
+  // (x1 - x0 + low and x1 - x0 - low on X_BITS + 2 bits, neither subtraction waiting for the other).
+  localparam integer OFFSET_SUM_BITS = X_BITS + 2;
+  function automatic nonnegative_sum3(input [OFFSET_SUM_BITS-1:0] a, input [OFFSET_SUM_BITS-1:0] b,
+                                      input [OFFSET_SUM_BITS-1:0] c, input [1:0] plus);  // each plus bit adds one
+    reg [OFFSET_SUM_BITS-1:0] save_sum, save_carry, total;
+    begin
+      save_sum = a ^ b ^ c;
+      save_carry = ((a & b) | (a & c) | (b & c)) << 1;
+      total = save_sum + (save_carry | {{(OFFSET_SUM_BITS-1){1'b0}}, plus[1]}) + {{(OFFSET_SUM_BITS-1){1'b0}}, plus[0]};
+      nonnegative_sum3 = !total[OFFSET_SUM_BITS-1];
+    end
+  endfunction
+  wire [OFFSET_SUM_BITS-1:0] in_x1_wide = {2'b00, in_x1};
+  wire [OFFSET_SUM_BITS-1:0] in_minus_x0_less_1 = ~{2'b00, in_x0};  // -x0 - 1
   wire [X_BITS:0] low [0:2];  // each quotient's low X_BITS + 1 bits
   wire [2:0] lo_none, lo_small, hi_none, edge_empty;
   generate
@@ -193,8 +223,10 @@ module scanline_walker #(
       wire small_negative = &src_quot[g][EDGE_BITS-1:X_BITS];  // in [-2^X_BITS, -1]
       wire small_positive = ~|src_quot[g][EDGE_BITS-1:X_BITS];  // in [0, 2^X_BITS - 1]
       assign low[g] = src_quot[g][X_BITS:0];
-      assign lo_none[g] = !src_left[g] || !negative;
-      assign lo_small[g] = src_left[g] && small_negative;
+      // A horizontal edge's quotient is 0 (the record's, and the DDA holds it), so "not a right
+      // edge" is enough here: no zero test of step_x on this path.
+      assign lo_none[g] = src_right[g] || !negative;
+      assign lo_small[g] = !src_right[g] && small_negative;
       assign hi_none[g] = !src_right[g] || !small_positive;
       assign edge_empty[g] = src_right[g] ? negative : !src_left[g] && src_edge_row[g][EDGE_BITS-1];
     end
@@ -215,9 +247,25 @@ module scanline_walker #(
   wire hi_le_01 = hi_none[1] || (!hi_none[0] && edge_hi[0] <= edge_hi[1]);
   wire hi_le_02 = hi_none[2] || (!hi_none[0] && edge_hi[0] <= edge_hi[2]);
   wire hi_le_12 = hi_none[2] || (!hi_none[1] && edge_hi[1] <= edge_hi[2]);
-  wire hi_le_03 = !hi_none[0] && edge_hi[0] <= last_offset;
-  wire hi_le_13 = !hi_none[1] && edge_hi[1] <= last_offset;
-  wire hi_le_23 = !hi_none[2] && edge_hi[2] <= last_offset;
+  // Each edge against the last offset: its lower bound fits under it (x1 - x0 + low >= 0), its upper
+  // bound is at most it (x1 - x0 - low >= 0, with low's top bit 0 for a small upper bound).
+  wire [2:0] lo_fits_last, hi_le_last;
+  generate
+    for (g = 0; g < 3; g = g + 1) begin : last_offset_compares
+      wire [X_BITS:0] in_low = in_span_quot[g*EDGE_BITS +: X_BITS + 1];
+      wire [OFFSET_SUM_BITS-1:0] in_low_wide = {in_low[X_BITS], in_low};
+      wire [OFFSET_SUM_BITS-1:0] in_minus_hi_less_1 = ~{2'b00, in_low[X_BITS-1:0]};  // -hi - 1
+      wire in_lo_fits = nonnegative_sum3(in_x1_wide, in_minus_x0_less_1, in_low_wide, 2'b01);
+      wire in_hi_le = nonnegative_sum3(in_x1_wide, in_minus_x0_less_1, in_minus_hi_less_1, 2'b11);
+      wire [OFFSET_SUM_BITS-1:0] registers_lo_sum = {quot_q[g][X_BITS], quot_q[g][X_BITS:0]} + {2'b00, last_offset_q};
+      wire registers_hi_le = quot_q[g][X_BITS-1:0] <= last_offset_q;
+      assign lo_fits_last[g] = use_record ? in_lo_fits : !registers_lo_sum[OFFSET_SUM_BITS-1];
+      assign hi_le_last[g] = use_record ? in_hi_le : registers_hi_le;
+    end
+  endgenerate
+  wire hi_le_03 = !hi_none[0] && hi_le_last[0];
+  wire hi_le_13 = !hi_none[1] && hi_le_last[1];
+  wire hi_le_23 = !hi_none[2] && hi_le_last[2];
   // fits[i][j]: lower bound i <= upper bound j (j = 3: the last offset). A small lower bound -quot_i
   // is at most an upper value u when quot_i + u >= 0; every lower bound fits under "none" (the
   // last offset bounds it too).
@@ -230,10 +278,10 @@ module scanline_walker #(
           // An edge is not both left and right: its own upper bound is "none".
           assign fits[g][h] = 1'b1;
         end else begin : other
-          wire [X_BITS-1:0] upper_value = h == 3 ? last_offset : edge_hi[h % 3];
+          wire [X_BITS-1:0] upper_value = edge_hi[h % 3];
           wire [X_BITS+1:0] sum = {low[g][X_BITS], low[g]} + {2'b00, upper_value};
-          wire upper_none = h == 3 ? 1'b0 : hi_none[h % 3];
-          assign fits[g][h] = lo_none[g] || (lo_small[g] && (upper_none || !sum[X_BITS+1]));
+          wire upper_fits = h == 3 ? lo_fits_last[g] : hi_none[h % 3] || !sum[X_BITS+1];
+          assign fits[g][h] = lo_none[g] || (lo_small[g] && upper_fits);
         end
       end
     end
@@ -264,17 +312,22 @@ module scanline_walker #(
       : ({X_BITS{lo_pick_0}} & start_at[0]) | ({X_BITS{lo_pick_1}} & start_at[1]) | ({X_BITS{lo_pick_2}} & start_at[2]);
   wire [X_BITS-1:0] span_end = ({X_BITS{hi_pick_0}} & end_at[0]) | ({X_BITS{hi_pick_1}} & end_at[1])
                              | ({X_BITS{hi_pick_2}} & end_at[2]) | ({X_BITS{hi_pick_3}} & src_x1);
-  wire enter_span_row = span_traversal && (load || next_row);
+  wire enter_row = load || next_row;
 
   // The DDA step to the row after the one about to start: quot += step_quot (+ 1 on the carry).
-  wire [REM_BITS-1:0] rem_sum [0:2];
   wire [2:0] dda_carry;
+  wire [REM_BITS-1:0] next_rem_less [0:2];
   wire signed [EDGE_BITS-1:0] quot_sum [0:2];
   wire signed [EDGE_BITS-1:0] quot_carried [0:2];
   generate
     for (g = 0; g < 3; g = g + 1) begin : dda
-      assign rem_sum[g] = src_rem_less[g] + src_step_rem[g];
-      assign dda_carry[g] = !rem_sum[g][REM_BITS-1];
+      // The registers' step beside the record's (in_dda_carry, in_next_rem_less), the results
+      // chosen after: no carry chain follows the multiplexer.
+      wire [REM_BITS-1:0] registers_rem_sum = rem_less_q[g] + step_rem_q[g];
+      wire registers_carry = !registers_rem_sum[REM_BITS-1];
+      wire [REM_BITS-1:0] registers_rem_carried = rem_less_q[g] + step_rem_less_q[g];
+      assign dda_carry[g] = use_record ? in_dda_carry[g] : registers_carry;
+      assign next_rem_less[g] = use_record ? in_next_rem_less[g] : registers_carry ? registers_rem_carried : registers_rem_sum;
       // All EDGE_BITS bits: modular, sign-agnostic.
       assign quot_sum[g] = src_quot[g] + src_step_quot[g];
       assign quot_carried[g] = src_quot[g] + src_step_quot[g] + CARRY;
@@ -321,50 +374,33 @@ module scanline_walker #(
       left_q <= in_left;
       right_q <= in_right;
       for (i = 0; i < 3; i = i + 1) begin
-        edge_row_q[i] <= src_edge_row[i];
-        edge_value_q[i] <= src_edge_row[i];
-        step_x_q[i] <= src_step_x[i];
         step_y_q[i] <= src_step_y[i];
         step_quot_q[i] <= src_step_quot[i];
-        step_rem_q[i] <= src_step_rem[i];
-        step_rem_less_q[i] <= src_step_rem_less[i];
+        step_rem_q[i] <= in_step_rem[i];
+        step_rem_less_q[i] <= in_step_rem_less[i];
       end
     end else if (advance) begin
       if (!row_done) begin
         frag_x <= frag_x + 1'b1;
-        for (i = 0; i < 3; i = i + 1) edge_value_q[i] <= edge_value_q[i] + step_x_q[i];
       end else if (!last_row_q) begin
         frag_y <= frag_y + 1'b1;
         last_row_q <= frag_y + 1'b1 == y1_q;
-        if (!span_traversal) begin
-          frag_x <= x0_q;
-          for (i = 0; i < 3; i = i + 1) begin
-            edge_row_q[i] <= edge_row_q[i] + step_y_q[i];
-            edge_value_q[i] <= edge_row_q[i] + step_y_q[i];
-          end
-        end
       end
     end
-    if (enter_span_row) begin
-      // The row about to start: its span; the DDA steps every edge to the row after it.
-      frag_x <= span_start;
+    if (enter_row) begin
+      // The row about to start: its span (span traversal starts there, bbox at x0); the DDA steps
+      // every edge to the row after it.
+      frag_x <= span_traversal ? span_start : src_x0;
+      span_start_q <= span_start;
       x_end_q <= span_end;
       row_empty_q <= !span_nonempty;
       for (i = 0; i < 3; i = i + 1) begin
         edge_row_q[i] <= src_edge_row[i] + src_step_y[i];
-        if (src_left[i] || src_right[i]) begin
-          // Both quotient sums side by side; the remainder's carry picks one.
-          if (dda_carry[i]) begin
-            rem_less_q[i] <= src_rem_less[i] + src_step_rem_less[i];
-            quot_q[i] <= quot_carried[i];
-          end else begin
-            rem_less_q[i] <= rem_sum[i];
-            quot_q[i] <= quot_sum[i];
-          end
-        end else begin
-          rem_less_q[i] <= src_rem_less[i];
-          quot_q[i] <= src_quot[i];
-        end
+        // Both quotient sums side by side; the remainder's carry picks one. A horizontal edge's
+        // quotient is the record's 0 throughout (the span bounds rely on it); its remainder is
+        // never used.
+        rem_less_q[i] <= next_rem_less[i];
+        quot_q[i] <= !(src_left[i] || src_right[i]) ? src_quot[i] : dda_carry[i] ? quot_carried[i] : quot_sum[i];
       end
     end
   end

@@ -4,8 +4,8 @@
 # the end of the module, sets small parameters (the RTL is width-generic) and runs `sat`:
 #   z_adder_recurrence  plane_register: the Z adder's recurrence equals the absolute form
 #                       (temporal induction: any number of steps)
-#   walker_edges        scanline_walker: stepped edge values equal the absolute form and coverage
-#                       is their sign test (bounded: 6 cycles)
+#   walker_edges        scanline_walker: bbox coverage (from the span DDA) is the edge values' sign
+#                       test, the edge row registers the next row's (bounded: 5 cycles)
 #   walker_bounds       scanline_walker: fragments never leave the bounding box or the screen
 #                       (bounded: 14 cycles)
 #   zbuffer_hazard      zbuffer: read-after-write hazard logic, result timing, every read sees
@@ -35,7 +35,7 @@ while IFS='|' read -r name u inc par m mut; do
   unit[$name]=$u includes[$name]=$inc params[$name]=$par mode[$name]=$m mutation[$name]=$mut
 done <<'TABLE'
 z_adder_recurrence|plane_register|plane_register_recurrence.svh|REG_BITS 6 GUARD_BITS 2 OUT_BITS 3|-tempinduct|s/value_q <= value_q + step_x_q;/value_q <= value_q + step_y_q;/
-walker_edges|scanline_walker|scanline_walker_inputs.svh scanline_walker_edges.svh|WIDTH 2 HEIGHT 2 SUBPIXEL_BITS 1|-seq 6|s/edge_value_q\[i\] <= edge_row_q\[i\] + step_y_q\[i\];/edge_value_q[i] <= edge_row_q[i];/
+walker_edges|scanline_walker|scanline_walker_inputs.svh scanline_walker_edges.svh|WIDTH 2 HEIGHT 2 SUBPIXEL_BITS 1|-seq 5|s/frag_x >= span_start_q && frag_x <= x_end_q/frag_x > span_start_q \&\& frag_x <= x_end_q/
 walker_bounds|scanline_walker|scanline_walker_inputs.svh scanline_walker_bounds.svh|WIDTH 4 HEIGHT 3 SUBPIXEL_BITS 1|-seq 14|s/({X_BITS{hi_pick_3}} \& src_x1)/({X_BITS{hi_pick_3}} \& (src_x1 + 1'b1))/
 zbuffer_hazard|zbuffer|zbuffer_hazard.svh|WIDTH 2 HEIGHT 2 Z_BITS 2 MAX_MEMORY_LATENCY 4|-seq 10|s/1'b1} << done_slot;/1'b1} << next_done_slot;/
 TABLE

@@ -10,8 +10,9 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(cd "${1:?usage: rtl-mutants.sh BUILD_DIR [mutant ...]}" && pwd)"
 shift
 mutants=("$@")
-[ ${#mutants[@]} -eq 0 ] && mutants=(edge_compare walker_backpressure walker_no_overlap walker_first_row_span
-                                     walker_empty_row walker_dda_carry walker_lower_bound_order walker_bounds_cross
+[ ${#mutants[@]} -eq 0 ] && mutants=(bbox_coverage walker_backpressure walker_no_overlap walker_first_row_span
+                                     walker_empty_row walker_dda_carry walker_record_carry walker_lower_bound_order
+                                     walker_bounds_cross walker_last_offset
                                      z_adder_first_row z_adder_carry z_adder_slot_carry
                                      z_adder_slot_step walker_enter_slot walker_left_carry_1 hazard_stall
                                      hazard_window_short hazard_address_bit ring_read_slot
@@ -23,9 +24,9 @@ mutants=("$@")
 # check: mutant_check's mode (--cosim-only: the frames of `rastersim cosim --count 100` must catch it).
 declare -A file from to params check
 max_latency=8
-file[edge_compare]=scanline_walker.sv
-from[edge_compare]='!edge_value_q[0][EDGE_BITS-1]'
-to[edge_compare]='(edge_value_q[0] > 0)'            # edge test E >= 0 becomes E > 0
+file[bbox_coverage]=scanline_walker.sv
+from[bbox_coverage]='frag_x >= span_start_q && frag_x <= x_end_q'
+to[bbox_coverage]='frag_x >= span_start_q && frag_x < x_end_q'  # bbox: each row's last covered pixel dropped
 file[walker_backpressure]=scanline_walker.sv
 from[walker_backpressure]='wire advance = walking_q && (frag_ready || !frag_valid);'
 to[walker_backpressure]='wire advance = walking_q;'  # the walker ignores the z-buffer's back-pressure
@@ -44,14 +45,21 @@ from[walker_empty_row]='row_empty_q <= !span_nonempty;'
 to[walker_empty_row]='row_empty_q <= 1'"'"'b0;'  # an empty row presents a fragment
 # The span's one-level compares and the DDA's carry.
 file[walker_dda_carry]=scanline_walker.sv
-from[walker_dda_carry]='assign dda_carry[g] = !rem_sum[g][REM_BITS-1];'
-to[walker_dda_carry]='assign dda_carry[g] = !rem_sum[g][REM_BITS-1] && |rem_sum[g];'  # no carry when rem + step_rem == d
+from[walker_dda_carry]='wire registers_carry = !registers_rem_sum[REM_BITS-1];'
+to[walker_dda_carry]='wire registers_carry = !registers_rem_sum[REM_BITS-1] && |registers_rem_sum;'  # no carry when rem + step_rem == d
+file[walker_record_carry]=scanline_walker.sv
+from[walker_record_carry]='in_minus_d_less << 1, {2{!in_step_x_negative}}'
+to[walker_record_carry]='in_minus_d_less << 1, {1'"'"'b0, !in_step_x_negative}'  # the first row's remainder after a carry one too high
 file[walker_lower_bound_order]=scanline_walker.sv
 from[walker_lower_bound_order]='(lo_small[0] && lo_small[1] && low[0] <= low[1])'
 to[walker_lower_bound_order]='(lo_small[0] && lo_small[1] && low[0] >= low[1])'  # the smaller of two left-edge bounds starts the span
 file[walker_bounds_cross]=scanline_walker.sv
-from[walker_bounds_cross]='(upper_none || !sum[X_BITS+1])'
-to[walker_bounds_cross]='(upper_none || 1'"'"'b1)'  # a left bound past a right one does not empty the row
+from[walker_bounds_cross]='hi_none[h % 3] || !sum[X_BITS+1]'
+to[walker_bounds_cross]='hi_none[h % 3] || 1'"'"'b1'  # a left bound past a right one does not empty the row
+file[walker_last_offset]=scanline_walker.sv
+from[walker_last_offset]='nonnegative_sum3(in_x1_wide, in_minus_x0_less_1, in_minus_hi_less_1'
+to[walker_last_offset]='nonnegative_sum3(in_x1_wide + 1'"'"'b1, in_minus_x0_less_1, in_minus_hi_less_1'  # the first row's right bound may lie one past the box
+# (one short instead, hi < x1 - x0, is an equivalent mutant: at hi = x1 - x0 both ends are x1)
 file[z_adder_first_row]=plane_register.sv
 from[z_adder_first_row]='value_q <= enter_left ? record_left[enter_slot] : start;'
 to[z_adder_first_row]='value_q <= start;'  # the first row's planes not moved to its span start

@@ -1,49 +1,88 @@
 // Included at the end of rtl/scanline_walker.sv by scripts/formal.sh, after
-// scanline_walker_inputs.svh. Edge stepping equals the absolute form: at every candidate (x, y)
-// the incrementally stepped edge values are E_k(x, y) = start_k + (x - x0) step_x_k +
-// (y - y0) step_y_k (modulo 2^EDGE_BITS, as the registers wrap), the covered decision is the sign test of
-// those values; in span traversal the edge row registers equal the absolute form of the row after
-// the current one (the DDA registers run one row ahead).
-  // n a modulo 2^EDGE_BITS for a small signed n (an offset inside the box), as shifts and adds: the
-  // solver then handles a few adders instead of an EDGE_BITS x EDGE_BITS multiplier.
-  function automatic [EDGE_BITS-1:0] times_x(input [X_BITS:0] n, input [EDGE_BITS-1:0] a);
+// scanline_walker_inputs.svh. Coverage equals the edge functions' sign test: at every bbox
+// candidate (x, y), frag_valid is exactly E_k(x, y) >= 0 for all three edges, with the exact
+// E_k(x, y) = start_k + (x - x0) step_x_k + (y - y0) step_y_k (the walker finds it from the span
+// DDA and bounds, no edge value is stepped per pixel); in both traversals the edge row registers
+// hold the edge values at x0 of the row after the current one (modulo 2^EDGE_BITS, as they wrap).
+// Assumed of the record, as the setup unit guarantees it (model/triangle_setup.cpp): the span
+// fields are the floor divisions of start and step_y by d = |step_x| (all zero when step_x = 0),
+// and every edge value inside the box fits EDGE_BITS (the widths are derived for the screen).
+  localparam integer F_WIDE = EDGE_BITS + EDGE_STEP_Y_BITS + 4;  // holds every product and sum below
+  // n * a for an n of EDGE_STEP_X_BITS + 1 bits (a divisor d, or an offset inside the box: at the
+  // proof's small boxes EDGE_STEP_X_BITS > X_BITS, Y_BITS), as shifts and adds: the
+  // solver then handles a few adders instead of an F_WIDE x F_WIDE multiplier.
+  function automatic signed [F_WIDE-1:0] times_small(input signed [EDGE_STEP_X_BITS:0] n, input signed [F_WIDE-1:0] a);
     integer b;
     begin
-      times_x = n[X_BITS] ? -(a << X_BITS) : {EDGE_BITS{1'b0}};
-      for (b = 0; b < X_BITS; b = b + 1) if (n[b]) times_x = times_x + (a << b);
+      times_small = n[EDGE_STEP_X_BITS] ? -(a <<< EDGE_STEP_X_BITS) : {F_WIDE{1'b0}};
+      for (b = 0; b < EDGE_STEP_X_BITS; b = b + 1) if (n[b]) times_small = times_small + (a <<< b);
     end
   endfunction
-  function automatic [EDGE_BITS-1:0] times_y(input [Y_BITS:0] n, input [EDGE_BITS-1:0] a);
-    integer b;
+  function automatic signed [F_WIDE-1:0] exact(input integer k, input [X_BITS-1:0] x, input [Y_BITS-1:0] y);
+    reg signed [F_WIDE-1:0] dx, dy, start, step_x, step_y;
     begin
-      times_y = n[Y_BITS] ? -(a << Y_BITS) : {EDGE_BITS{1'b0}};
-      for (b = 0; b < Y_BITS; b = b + 1) if (n[b]) times_y = times_y + (a << b);
+      dx = $signed({1'b0, x}) - $signed({1'b0, f_x0});
+      dy = $signed({1'b0, y}) - $signed({1'b0, f_y0});
+      start = f_start[k];
+      step_x = f_step_x[k];
+      step_y = f_step_y[k];
+      exact = start + times_small(dx[EDGE_STEP_X_BITS:0], step_x) + times_small(dy[EDGE_STEP_X_BITS:0], step_y);
     end
+  endfunction
+  function automatic fits_edge_bits(input signed [F_WIDE-1:0] v);
+    fits_edge_bits = v >= -(64'sd1 <<< (EDGE_BITS - 1)) && v < (64'sd1 <<< (EDGE_BITS - 1));
   endfunction
 
-  function automatic signed [EDGE_BITS-1:0] absolute(input integer k, input [X_BITS-1:0] x, input [Y_BITS-1:0] y);
-    reg [X_BITS:0] dx;
-    reg [Y_BITS:0] dy;
+  // The record at its load: the DDA fields are floor divisions (multiplication by d < 2^EDGE_STEP_X_BITS).
+  integer f_r;
+  always @* begin
+    if (load) begin
+      for (f_r = 0; f_r < 3; f_r = f_r + 1) begin : record_dda
+        reg signed [F_WIDE-1:0] sx, d, start, step_y, quot, rem, step_quot, step_rem;
+        sx = $signed(in_edge_step_x[f_r*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS]);
+        d = sx < 0 ? -sx : sx;
+        start = $signed(in_edge_start[f_r*EDGE_BITS +: EDGE_BITS]);
+        step_y = $signed(in_edge_step_y[f_r*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]);
+        quot = $signed(in_span_quot[f_r*EDGE_BITS +: EDGE_BITS]);
+        rem = $signed({1'b0, in_span_rem[f_r*SPAN_REM_BITS +: SPAN_REM_BITS]});
+        step_quot = $signed(in_span_step_quot[f_r*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]);
+        step_rem = $signed({1'b0, in_span_step_rem[f_r*SPAN_REM_BITS +: SPAN_REM_BITS]});
+        if (sx == 0) assume(quot == 0 && rem == 0 && step_quot == 0 && step_rem == 0);
+        else assume(start == times_small(d[EDGE_STEP_X_BITS:0], quot) + rem && rem < d
+                    && step_y == times_small(d[EDGE_STEP_X_BITS:0], step_quot) + step_rem && step_rem < d);
+      end
+    end
+  end
+  // Every edge value of the box fits (they are linear: the four corners suffice), assumed once, at
+  // the load, of the record (f_* hold it from the next cycle on).
+  function automatic signed [F_WIDE-1:0] record_at(input integer k, input [X_BITS-1:0] x, input [Y_BITS-1:0] y);
+    reg signed [F_WIDE-1:0] dx, dy, start, step_x, step_y;
     begin
-      dx = {1'b0, x} - {1'b0, f_x0};
-      dy = {1'b0, y} - {1'b0, f_y0};
-      absolute = f_start[k] + times_x(dx, f_step_x[k]) + times_y(dy, f_step_y[k]);
+      dx = $signed({1'b0, x}) - $signed({1'b0, in_x0});
+      dy = $signed({1'b0, y}) - $signed({1'b0, in_y0});
+      start = $signed(in_edge_start[k*EDGE_BITS +: EDGE_BITS]);
+      step_x = $signed(in_edge_step_x[k*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS]);
+      step_y = $signed(in_edge_step_y[k*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]);
+      record_at = start + times_small(dx[EDGE_STEP_X_BITS:0], step_x) + times_small(dy[EDGE_STEP_X_BITS:0], step_y);
     end
   endfunction
-  wire signed [EDGE_BITS-1:0] f_at_pixel [0:2];
-  wire signed [EDGE_BITS-1:0] f_at_row [0:2];
   genvar f_g;
+  for (f_g = 0; f_g < 3; f_g = f_g + 1) begin : f_fit
+    always @* if (load) assume(fits_edge_bits(record_at(f_g, in_x0, in_y0)) && fits_edge_bits(record_at(f_g, in_x1, in_y0))
+                               && fits_edge_bits(record_at(f_g, in_x0, in_y1)) && fits_edge_bits(record_at(f_g, in_x1, in_y1)));
+  end
+
+  wire signed [F_WIDE-1:0] f_at_pixel [0:2];
+  wire signed [F_WIDE-1:0] f_next_row [0:2];
   for (f_g = 0; f_g < 3; f_g = f_g + 1) begin : f_forms
-    assign f_at_pixel[f_g] = absolute(f_g, frag_x, frag_y);
-    assign f_at_row[f_g] = absolute(f_g, f_x0, frag_y);
+    assign f_at_pixel[f_g] = exact(f_g, frag_x, frag_y);
+    assign f_next_row[f_g] = exact(f_g, f_x0, frag_y) + f_step_y[f_g];
   end
 
   integer f_e;
   always @* begin
-    if (f_loaded && walking_q && !cfg_traversal) begin
-      for (f_e = 0; f_e < 3; f_e = f_e + 1) assert(edge_value_q[f_e] == f_at_pixel[f_e]);
+    if (f_loaded && walking_q && !cfg_traversal)
       assert(frag_valid == (f_at_pixel[0] >= 0 && f_at_pixel[1] >= 0 && f_at_pixel[2] >= 0));
-    end
-    if (f_loaded && walking_q && cfg_traversal)
-      for (f_e = 0; f_e < 3; f_e = f_e + 1) assert(edge_row_q[f_e] == f_at_row[f_e] + f_step_y[f_e]);
+    if (f_loaded && walking_q)
+      for (f_e = 0; f_e < 3; f_e = f_e + 1) assert(edge_row_q[f_e] == f_next_row[f_e][EDGE_BITS-1:0]);
   end

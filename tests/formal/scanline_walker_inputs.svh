@@ -1,7 +1,8 @@
 // Included at the end of rtl/scanline_walker.sv by scripts/formal.sh (formal runs only): what the
 // walker may assume of its inputs, and a record of the triangle it took at its last load.
 // The setup unit hands over a bounding box inside the screen (x0 <= x1 < WIDTH, y0 <= y1 < HEIGHT),
-// and the traversal does not change mid-walk; edge values, steps and span quotients are free.
+// and the traversal does not change mid-walk; edge values, steps and span quotients are free, but
+// for a horizontal edge (step_x = 0) the setup leaves the span quotient 0.
 // The proof starts in the reset state (all registers zero: not walking) and rst stays low.
   reg f_loaded = 1'b0;
   reg f_traversal;
@@ -31,6 +32,8 @@
     assume(!rst);
     if (load) begin
       assume(in_x0 <= in_x1 && in_x1 <= WIDTH - 1 && in_y0 <= in_y1 && in_y1 <= HEIGHT - 1);
+      for (f_k = 0; f_k < 3; f_k = f_k + 1)
+        if (in_edge_step_x[f_k*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS] == 0) assume(in_span_quot[f_k*EDGE_BITS +: EDGE_BITS] == 0);
     end
     // Constant while a triangle is walked (a load in its last cycle keeps it for the next one).
     if (walking_q) assume(cfg_traversal == f_traversal);
