@@ -64,6 +64,13 @@ typedef struct {
   int64_t depth_start, depth_step_x, depth_step_y;
   int64_t color_start[3], color_step_x[3], color_step_y[3];
   uint8_t flat_r, flat_g, flat_b;
+  /* The planes along the left edges (docs/cycle-model.md), left-edge slot j at [j] (slot 0: the first
+   * edge with edge_step_x > 0, slot 1: the second; a slot without an edge has start and step_y):
+   * the plane at the slot edge's span start on the first row, start - span_quot * step_x, and its
+   * change per row without the DDA's carry, step_y - span_step_quot * step_x, modulo the plane
+   * register's width; colours zero without Gouraud shading. */
+  int64_t left_depth_start[2], left_depth_step[2];
+  int64_t left_color_start[2][3], left_color_step[2][3];
 } rastersim_setup_record;
 
 /* The release and the commit the library was built from, e.g. "0.1.0 (g1234abc)". */

@@ -240,6 +240,12 @@ int rastersim_read_setup(const rastersim_pipeline* pipeline, int64_t triangle, r
   }
   r.depth_start = s.depth.start, r.depth_step_x = s.depth.step_x, r.depth_step_y = s.depth.step_y;
   r.flat_r = s.flat_color.r, r.flat_g = s.flat_color.g, r.flat_b = s.flat_color.b;
+  static_assert(rastersim::kLeftEdgeSlots == 2, "rastersim_setup_record holds two left-edge slots");
+  for (int j = 0; j < rastersim::kLeftEdgeSlots; ++j) {
+    const rastersim::LeftEdgePlanes& left = s.left[j];
+    r.left_depth_start[j] = left.depth.start, r.left_depth_step[j] = left.depth.step;
+    for (int c = 0; c < 3; ++c) r.left_color_start[j][c] = left.color[c].start, r.left_color_step[j][c] = left.color[c].step;
+  }
   return RASTERSIM_OK;
 }
 

@@ -122,6 +122,11 @@ class Pipeline {
     d["color_start"] = three(s.color_start), d["color_step_x"] = three(s.color_step_x);
     d["color_step_y"] = three(s.color_step_y);
     d["flat_rgb"] = std::vector<int>{s.flat_r, s.flat_g, s.flat_b};
+    // Left-edge slots j = 0, 1 (docs/library.md).
+    auto two = [](const int64_t v[2]) { return std::vector<int64_t>{v[0], v[1]}; };
+    d["left_depth_start"] = two(s.left_depth_start), d["left_depth_step"] = two(s.left_depth_step);
+    d["left_color_start"] = std::vector<std::vector<int64_t>>{three(s.left_color_start[0]), three(s.left_color_start[1])};
+    d["left_color_step"] = std::vector<std::vector<int64_t>>{three(s.left_color_step[0]), three(s.left_color_step[1])};
     return d;
   }
 

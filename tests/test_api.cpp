@@ -63,6 +63,14 @@ TEST(Api, ResultsEqualThePipelinesFieldByField) {
       EXPECT_EQ(s.color_step_y[k], int64_t(m.color[k].step_y));
     }
     EXPECT_EQ(s.depth_step_x, int64_t(m.depth.step_x));
+    for (int j = 0; j < kLeftEdgeSlots; ++j) {
+      EXPECT_EQ(s.left_depth_start[j], int64_t(m.left[j].depth.start));
+      EXPECT_EQ(s.left_depth_step[j], int64_t(m.left[j].depth.step));
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(s.left_color_start[j][c], int64_t(m.left[j].color[c].start));
+        EXPECT_EQ(s.left_color_step[j][c], int64_t(m.left[j].color[c].step));
+      }
+    }
   }
   int64_t count = 0;
   ASSERT_EQ(rastersim_triangle_count(h.p, &count), RASTERSIM_OK);

@@ -92,6 +92,36 @@ def test_setup_record_and_reset():
     assert rastersim.version().startswith("0.1.0")
 
 
+def test_setup_record_left_edge_planes():
+    # With the guard bits fixed, the plane registers are z_bits + guard + 1 (depth) and 8 + guard + 1
+    # (colour) bits wide (docs/widths.md): the left-edge planes are recomputed here from the record's
+    # own fields with Python's exact integers and wrapped to those widths.
+    pipeline = rastersim.Pipeline(width=64, height=48, z_bits=24, z_guard_bits=8)
+    depth_bits, colour_bits = 24 + 8 + 1, 8 + 8 + 1
+
+    def wrap(value, bits):
+        value &= (1 << bits) - 1
+        return value - (1 << bits) if value >> (bits - 1) else value
+
+    for vertices in ([(3.5, 2.25, 0.25, 255, 0, 0), (40.0, 10.5, 0.5, 0, 255, 0), (12.75, 30.0, 0.75, 0, 0, 255)],
+                     [(60.0, 1.0, 0.5, 10, 20, 30), (2.0, 20.0, 0.1, 200, 100, 0), (30.0, 46.5, 0.9, 0, 0, 255)]):
+        for order in (vertices, vertices[::-1]):
+            record = pipeline.setup_record(pipeline.submit_screen(order))
+            left_edges = [k for k in range(3) if record["edge_step_x"][k] > 0]
+            assert 1 <= len(left_edges) <= 2
+            for j in range(2):
+                k = left_edges[j] if j < len(left_edges) else None
+                quot = record["span_quot"][k] if k is not None else 0
+                step_quot = record["span_step_quot"][k] if k is not None else 0
+                assert record["left_depth_start"][j] == wrap(record["depth_start"] - quot * record["depth_step_x"], depth_bits)
+                assert record["left_depth_step"][j] == wrap(record["depth_step_y"] - step_quot * record["depth_step_x"], depth_bits)
+                for c in range(3):
+                    assert record["left_color_start"][j][c] == wrap(
+                        record["color_start"][c] - quot * record["color_step_x"][c], colour_bits)
+                    assert record["left_color_step"][j][c] == wrap(
+                        record["color_step_y"][c] - step_quot * record["color_step_x"][c], colour_bits)
+
+
 def test_profile_from_fields_equals_json():
     from_fields = rastersim.Pipeline(width=64, height=48, traversal="bbox", depth_write=False)
     from_json = rastersim.Pipeline('{"width": 64, "height": 48, "traversal": "bbox", "depth_write": false}')
