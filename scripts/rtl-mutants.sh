@@ -155,13 +155,22 @@ if text.count(old) != 1:
 open(path, "w").write(text.replace(old, new))
 PY
   echo "mutant $m: ${file[$m]}: '${from[$m]}' -> '${to[$m]}'"
-  if ! verilator --cc --exe --build -j 2 -Wno-fatal -Wno-lint -Wno-style --x-assign unique --x-initial unique \
+  # Verilate, then build; Verilator's runtime objects (verilated*.o: the same sources and flags for
+  # every mutant) are compiled for the first mutant only and copied into the others, touched so
+  # that make takes them as newer than the freshly generated makefile they depend on.
+  if ! verilator --cc --exe -Wno-fatal -Wno-lint -Wno-style --x-assign unique --x-initial unique \
       -I"$dir/rtl" "$dir"/rtl/*.sv "$root/testbench/rtl/rastersim_debug.sv" --top-module rastersim_top --prefix Vmutant -Mdir "$dir/obj" \
       -GWIDTH=64 -GHEIGHT=48 -GSUBPIXEL_BITS=4 -GZ_BITS=24 -GMAX_MEMORY_LATENCY=$max_latency ${params[$m]:-} --trace-fst \
       "$root/testbench/mutant_check.cpp" -o mutant_check \
       -CFLAGS "-std=gnu++17 -O1 -I$root -isystem $build/testbench" \
-      -LDFLAGS "$build/testbench/librastersim_rtl.a $build/librastersim_model.a" > "$dir/build.log" 2>&1; then
+      -LDFLAGS "$build/testbench/librastersim_rtl.a $build/librastersim_model.a" > "$dir/build.log" 2>&1 \
+     || ! { if compgen -G "$work/runtime/*.o" > /dev/null; then cp "$work"/runtime/* "$dir/obj/" && touch "$dir"/obj/verilated*.o; fi; } \
+     || ! make -C "$dir/obj" -f Vmutant.mk -j 2 >> "$dir/build.log" 2>&1; then
     echo "mutant $m: build failed"; tail -20 "$dir/build.log"; status=1; continue
+  fi
+  if ! compgen -G "$work/runtime/*.o" > /dev/null; then
+    mkdir -p "$work/runtime"
+    cp "$dir"/obj/verilated*.o "$dir"/obj/verilated*.d "$work/runtime/"
   fi
   replays="$build/rtl-mutants/$m"
   mkdir -p "$replays"
