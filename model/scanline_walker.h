@@ -133,9 +133,13 @@ class ScanlineWalker {
       int64_t lo = 0, hi = last;
       int lo_slot = -1;
       for (const EdgeState& e : edge) {
-        if (e.step_x > 0 && -e.quot > lo) lo = -e.quot, lo_slot = e.slot;  // t >= ceil(-E / d) = -floor(E / d)
-        else if (e.step_x < 0) hi = std::min(hi, e.quot);   // t <= floor(E / d)
-        else if (e.step_x == 0 && e.row_value < 0) hi = -1;  // horizontal edge, row outside
+        if (e.step_x > 0) {
+          if (-e.quot > lo) lo = -e.quot, lo_slot = e.slot;  // t >= ceil(-E / d) = -floor(E / d)
+        } else if (e.step_x < 0) {
+          hi = std::min(hi, e.quot);  // t <= floor(E / d)
+        } else if (e.row_value < 0) {
+          hi = -1;  // horizontal edge, row outside
+        }
       }
       if (lo <= hi) {
         adders.enter_span_row(lo_slot);
