@@ -277,11 +277,11 @@ module scanline_walker #(
         if (h == g) begin : same_edge
           // An edge is not both left and right: its own upper bound is "none".
           assign fits[g][h] = 1'b1;
-        end else begin : other
-          wire [X_BITS-1:0] upper_value = edge_hi[h % 3];
-          wire [X_BITS+1:0] sum = {low[g][X_BITS], low[g]} + {2'b00, upper_value};
-          wire upper_fits = h == 3 ? lo_fits_last[g] : hi_none[h % 3] || !sum[X_BITS+1];
-          assign fits[g][h] = lo_none[g] || (lo_small[g] && upper_fits);
+        end else if (h == 3) begin : last_offset
+          assign fits[g][h] = lo_none[g] || (lo_small[g] && lo_fits_last[g]);
+        end else begin : other_edge
+          wire [X_BITS+1:0] sum = {low[g][X_BITS], low[g]} + {2'b00, edge_hi[h]};
+          assign fits[g][h] = lo_none[g] || (lo_small[g] && (hi_none[h] || !sum[X_BITS+1]));
         end
       end
     end

@@ -54,8 +54,8 @@ file[walker_lower_bound_order]=scanline_walker.sv
 from[walker_lower_bound_order]='(lo_small[0] && lo_small[1] && low[0] <= low[1])'
 to[walker_lower_bound_order]='(lo_small[0] && lo_small[1] && low[0] >= low[1])'  # the smaller of two left-edge bounds starts the span
 file[walker_bounds_cross]=scanline_walker.sv
-from[walker_bounds_cross]='hi_none[h % 3] || !sum[X_BITS+1]'
-to[walker_bounds_cross]='hi_none[h % 3] || 1'"'"'b1'  # a left bound past a right one does not empty the row
+from[walker_bounds_cross]='hi_none[h] || !sum[X_BITS+1]'
+to[walker_bounds_cross]='hi_none[h] || 1'"'"'b1'  # a left bound past a right one does not empty the row
 file[walker_last_offset]=scanline_walker.sv
 from[walker_last_offset]='nonnegative_sum3(in_x1_wide, in_minus_x0_less_1, in_minus_hi_less_1'
 to[walker_last_offset]='nonnegative_sum3(in_x1_wide + 1'"'"'b1, in_minus_x0_less_1, in_minus_hi_less_1'  # the first row's right bound may lie one past the box
