@@ -18,16 +18,20 @@
       for (b = 0; b < EDGE_STEP_X_BITS; b = b + 1) if (n[b]) times_small = times_small + (a <<< b);
     end
   endfunction
-  function automatic signed [F_WIDE-1:0] exact(input integer k, input [X_BITS-1:0] x, input [Y_BITS-1:0] y);
-    reg signed [F_WIDE-1:0] dx, dy, start, step_x, step_y;
+  // An edge's exact value at (x, y): start at (x0, y0), stepped by step_x per pixel and step_y per row.
+  function automatic signed [F_WIDE-1:0] edge_at(input signed [F_WIDE-1:0] start, input signed [F_WIDE-1:0] step_x,
+                                                 input signed [F_WIDE-1:0] step_y, input [X_BITS-1:0] x0,
+                                                 input [Y_BITS-1:0] y0, input [X_BITS-1:0] x, input [Y_BITS-1:0] y);
+    reg signed [F_WIDE-1:0] dx, dy;
     begin
-      dx = $signed({1'b0, x}) - $signed({1'b0, f_x0});
-      dy = $signed({1'b0, y}) - $signed({1'b0, f_y0});
-      start = f_start[k];
-      step_x = f_step_x[k];
-      step_y = f_step_y[k];
-      exact = start + times_small(dx[EDGE_STEP_X_BITS:0], step_x) + times_small(dy[EDGE_STEP_X_BITS:0], step_y);
+      dx = $signed({1'b0, x}) - $signed({1'b0, x0});
+      dy = $signed({1'b0, y}) - $signed({1'b0, y0});
+      edge_at = start + times_small(dx[EDGE_STEP_X_BITS:0], step_x) + times_small(dy[EDGE_STEP_X_BITS:0], step_y);
     end
+  endfunction
+  // Edge k of the triangle taken at the last load.
+  function automatic signed [F_WIDE-1:0] exact(input integer k, input [X_BITS-1:0] x, input [Y_BITS-1:0] y);
+    exact = edge_at(f_start[k], f_step_x[k], f_step_y[k], f_x0, f_y0, x, y);
   endfunction
   function automatic fits_edge_bits(input signed [F_WIDE-1:0] v);
     fits_edge_bits = v >= -(64'sd1 <<< (EDGE_BITS - 1)) && v < (64'sd1 <<< (EDGE_BITS - 1));
@@ -56,15 +60,9 @@
   // Every edge value of the box fits (they are linear: the four corners suffice), assumed once, at
   // the load, of the record (f_* hold it from the next cycle on).
   function automatic signed [F_WIDE-1:0] record_at(input integer k, input [X_BITS-1:0] x, input [Y_BITS-1:0] y);
-    reg signed [F_WIDE-1:0] dx, dy, start, step_x, step_y;
-    begin
-      dx = $signed({1'b0, x}) - $signed({1'b0, in_x0});
-      dy = $signed({1'b0, y}) - $signed({1'b0, in_y0});
-      start = $signed(in_edge_start[k*EDGE_BITS +: EDGE_BITS]);
-      step_x = $signed(in_edge_step_x[k*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS]);
-      step_y = $signed(in_edge_step_y[k*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]);
-      record_at = start + times_small(dx[EDGE_STEP_X_BITS:0], step_x) + times_small(dy[EDGE_STEP_X_BITS:0], step_y);
-    end
+    record_at = edge_at($signed(in_edge_start[k*EDGE_BITS +: EDGE_BITS]),
+                        $signed(in_edge_step_x[k*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS]),
+                        $signed(in_edge_step_y[k*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]), in_x0, in_y0, x, y);
   endfunction
   genvar f_g;
   for (f_g = 0; f_g < 3; f_g = f_g + 1) begin : f_fit
