@@ -16,9 +16,9 @@ struct FastWalk::Sink {
   }
   bool run(int x, int y, int64_t n, ZAdder& adders, int64_t cycle) {
     ZBuffer& zbuffer = p.zbuffer_;
-    if (!zbuffer.settled()) return false;
+    if (!zbuffer.settled(cycle)) return false;
     const uint32_t address = uint32_t(y) * uint32_t(p.profile_.width) + uint32_t(x);
-    zbuffer.accept_run(address, cycle, n);
+    zbuffer.take_run(address, cycle, n);
     int64_t passes;
     zbuffer.prefetch_rows_below(address, n, 2);
 #ifdef RASTERSIM_HAVE_AVX512_KERNEL

@@ -1,5 +1,5 @@
 // The untraced walk: without a fragment sink the pipeline takes whole runs of fragments at once
-// once no hazard can stall them (ZBuffer::settled, accept_run), through the z-buffer's run kernels
+// once no hazard can stall them (ZBuffer::settled, take_run), through the z-buffer's run kernels
 // (fast/run_kernels.h), and with the AVX-512 kernel the whole walk is compiled for AVX-512 with the
 // kernel inlined. A fast path beside the model: the same fragments, buffers, counters and cycles as
 // the traced walk (Pipeline::walk_traced), which tests/test_fast_path.cpp checks.

@@ -22,7 +22,7 @@ struct Fragment {
   uint32_t z;      // depth entering the test, uN
   Rgb color;
   bool pass;       // depth test result
-  int64_t cycle;   // cycle the z-buffer accepted it
+  int64_t cycle;   // cycle the z-buffer took it from the walker (docs/cycle-model.md)
 };
 
 class FragmentSink {
@@ -90,19 +90,19 @@ class Pipeline {
   int64_t walk_traced(const SetupResult& s, int64_t load_cycle, TriangleRecord& record);
   bool avx512_walk_ = false;  // the fast path's choice, made once (FastWalk::avx512_applies)
 
-  // The walker's fragment output, wired to the z-buffer's input: its accept cycle, depth test and
-  // write; with Trace, reported to the sink.
+  // The walker's fragment output, wired to the z-buffer's input: the cycle it is taken, its depth
+  // test and write; with Trace, reported to the sink.
   template <bool Trace>
   int64_t take_fragment(int x, int y, const ZAdder& adders, int64_t cycle, TriangleRecord& record) {
     const uint32_t address = uint32_t(y) * uint32_t(profile_.width) + uint32_t(x);
-    const int64_t accepted = zbuffer_.accept(address, cycle);
+    const int64_t taken = zbuffer_.take(address, cycle);
     const uint32_t z = adders.depth();
     const Rgb color = adders.color();
     const bool pass = zbuffer_.test_and_write(address, z, color);
     ++record.fragments;
     record.depth_pass += pass;
-    if (Trace) sink_->on_fragment(Fragment{record.index, x, y, z, color, pass, accepted});
-    return accepted;
+    if (Trace) sink_->on_fragment(Fragment{record.index, x, y, z, color, pass, taken});
+    return taken;
   }
 
   Profile profile_;

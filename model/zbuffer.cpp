@@ -21,6 +21,7 @@ void ZBuffer::clear() {
   slot_ = 0;
   fresh_ = 0;
   busy_until_ = -1;
+  last_read_ = read_before_last_ = -2;
   counters_ = {};
 }
 

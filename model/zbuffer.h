@@ -1,9 +1,10 @@
 // Z-buffer unit: read, compare, conditional write of depth and colour, through a memory port with
 // a read latency of L cycles (profile.memory_latency) to the z-buffer memory (zbuffer_memory.h).
-// A fragment accepted in cycle c reads in c, gets its data and writes in c + L; a fragment to the
-// same address may be accepted no earlier than c + L + 1 (read-after-write hazard), and none is
-// accepted in a cycle in which the memory refuses reads (its stall pattern): the unit stalls
-// (docs/cycle-model.md).
+// The walker's fragments enter a two-entry input buffer (taken in cycle t while fewer than two are
+// held) and issue their reads in order from its head, at the earliest in t + 1; a fragment read in
+// r gets its data and writes in r + L; a fragment to the same address may be read no earlier than
+// r + L + 1 (read-after-write hazard), and none is read in a cycle in which the memory refuses reads
+// (its stall pattern) (docs/cycle-model.md, "Z-buffer").
 #pragma once
 
 #include <algorithm>
@@ -20,8 +21,8 @@
 namespace rastersim {
 
 struct ZBufferCounters {
-  int64_t busy = 0;   // cycles with a fragment accepted or in flight
-  int64_t stall = 0;  // cycles a fragment waited: hazards and memory back-pressure
+  int64_t busy = 0;   // cycles with a fragment taken, held in the input buffer or in flight
+  int64_t stall = 0;  // cycles the buffer's head waited: hazards and memory back-pressure
   int64_t depth_pass = 0;
   int64_t depth_fail = 0;
 };
@@ -39,50 +40,60 @@ class ZBuffer {
   const std::vector<uint32_t>& depth() const { return memory_.depth(); }
   const std::vector<uint32_t>& color() const { return memory_.color(); }  // 0x00RRGGBB
 
-  // Starts a new triangle whose fragments are presented in cycle `first` or later: its own fragments
+  // Starts a new triangle whose fragments are offered in cycle `first` or later: its own fragments
   // never collide, so after L of them no check is needed; none at all when every fragment in flight
-  // has been written before `first` (a hazard needs one presented by its write cycle, busy_until_).
+  // has been written before `first` (a hazard needs one read by its write cycle, busy_until_).
   void begin_triangle(int64_t first) { fresh_ = first > busy_until_ ? latency_ : 0; }
-  // True once no fragment can stall until the next triangle: accept_run() may be used. Never
-  // with a stall pattern: the memory may refuse any read.
-  bool settled() const { return fresh_ >= latency_ && !memory_.has_stalls(); }
+  // True once fragments offered one per cycle from `cycle` on are each taken in the cycle offered
+  // and read in the next until the next triangle: take_run() may be used. Never with a stall
+  // pattern: the memory may refuse any read.
+  bool settled(int64_t cycle) const { return fresh_ >= latency_ && last_read_ <= cycle && !memory_.has_stalls(); }
 
-  // Timing: the cycle at which a fragment presented in `cycle` for `address` is accepted: the first
-  // one without a hazard (once free, an address stays free) in which the memory takes the read.
-  int64_t accept(uint32_t address, int64_t cycle) {
-    int64_t accepted = cycle;
+  // Timing: the cycle in which a fragment offered in `cycle` for `address` is taken into the input
+  // buffer (the walker moves on then): once the fragment two ahead has been read. Its own read goes
+  // out from the buffer's head a cycle later at the earliest and after the fragment ahead's, once no
+  // hazard holds (once free, an address stays free), in a cycle in which the memory takes it.
+  int64_t take(uint32_t address, int64_t cycle) {
+    const int64_t taken = std::max(cycle, read_before_last_ + 1);
+    const int64_t earliest = std::max(taken, last_read_) + 1;
+    int64_t read = earliest;
     if (fresh_ < latency_) {
       for (int k = 0; k < latency_; ++k)
-        if (inflight_address_[k] == address && inflight_cycle_[k] + latency_ + 1 > accepted)
-          accepted = inflight_cycle_[k] + latency_ + 1;
+        if (inflight_address_[k] == address && inflight_cycle_[k] + latency_ + 1 > read)
+          read = inflight_cycle_[k] + latency_ + 1;
       ++fresh_;
     }
     if (memory_.has_stalls())
-      while (memory_.stalls(accepted)) ++accepted;
-    counters_.stall += accepted - cycle;
+      while (memory_.stalls(read)) ++read;
+    counters_.stall += read - earliest;
     inflight_address_[slot_] = address;
-    inflight_cycle_[slot_] = accepted;
+    inflight_cycle_[slot_] = read;
     slot_ = slot_ + 1 == latency_ ? 0 : slot_ + 1;
-    const int64_t end = accepted + latency_;
-    counters_.busy += end - std::max(accepted, busy_until_ + 1) + 1;
+    const int64_t end = read + latency_;
+    counters_.busy += end - std::max(taken, busy_until_ + 1) + 1;
     busy_until_ = end;
-    return accepted;
+    read_before_last_ = last_read_;
+    last_read_ = read;
+    return taken;
   }
 
-  // Timing of n fragments at consecutive addresses presented in consecutive cycles from `cycle`, when
-  // settled(): each is accepted in the cycle it is presented. The same state and counters as n calls
-  // of accept(), without the per-fragment bookkeeping.
-  void accept_run(uint32_t address, int64_t cycle, int64_t n) {
-    // The first fragment extends the busy interval as accept() does; each later one by one cycle.
-    counters_.busy += cycle + latency_ - std::max(cycle, busy_until_ + 1) + 1 + (n - 1);
-    busy_until_ = cycle + n - 1 + latency_;
+  // Timing of n fragments at consecutive addresses offered in consecutive cycles from `cycle`, when
+  // settled(cycle): each is taken in the cycle it is offered and read in the next. The same state
+  // and counters as n calls of take(), without the per-fragment bookkeeping.
+  void take_run(uint32_t address, int64_t cycle, int64_t n) {
+    // Taken in cycle .. cycle + n - 1, read in cycle + 1 .. cycle + n.
+    const int64_t end = cycle + n + latency_;
+    counters_.busy += end - std::max(cycle, busy_until_ + 1) + 1;
+    busy_until_ = end;
+    read_before_last_ = n >= 2 ? cycle + n - 1 : last_read_;
+    last_read_ = cycle + n;
     // Only the last L of them stay in the ring, which is ordered by age from slot_ (and only by
     // that): when all L are new they go to slots 0..L-1, without a modulo.
     const int64_t first = std::max<int64_t>(0, n - latency_);
     int slot = first > 0 ? 0 : slot_;
     for (int64_t i = first; i < n; ++i) {
       inflight_address_[slot] = address + uint32_t(i);
-      inflight_cycle_[slot] = cycle + i;
+      inflight_cycle_[slot] = cycle + 1 + i;
       slot = slot + 1 == latency_ ? 0 : slot + 1;
     }
     slot_ = slot;
@@ -159,6 +170,7 @@ class ZBuffer {
   bool depth_test(uint32_t z, uint32_t stored) const { return depth_test(pass_mask_, z, stored); }
 
   int64_t last_busy_cycle() const { return busy_until_; }
+  int64_t last_read() const { return last_read_; }  // read cycle of the fragment take() last took
   const ZBufferCounters& counters() const { return counters_; }
 
  private:
@@ -189,12 +201,14 @@ class ZBuffer {
   std::string run_kernel_name_;
   int64_t short_run_limit_;
   ZBufferMemory memory_;
-  // The last L accepted fragments (a ring): the only ones that can still be in flight.
+  // The last L fragments read (a ring): the only ones that can still be in flight.
   std::vector<uint32_t> inflight_address_;
-  std::vector<int64_t> inflight_cycle_;
+  std::vector<int64_t> inflight_cycle_;  // their read cycles
   int slot_ = 0;
   int fresh_ = 0;
   int64_t busy_until_ = -1;
+  int64_t last_read_ = -2;         // read cycle of the last fragment taken
+  int64_t read_before_last_ = -2;  // and of the one before it
   ZBufferCounters counters_;
 };
 

@@ -54,6 +54,7 @@ module rastersim_core #(
   output wire trace_result_valid,
   output wire trace_result_pass,
   output wire trace_zbuffer_busy,
+  output wire trace_zbuffer_stall,         // the z-buffer's oldest held fragment waits to be read
   // Memory port of the z-buffer (word address y * WIDTH + x).
   input  wire mem_clear_done,
   output wire mem_rd_valid,
@@ -262,6 +263,7 @@ module rastersim_core #(
     .frag_valid(frag_valid), .frag_ready(frag_ready), .frag_x(frag_x), .frag_y(frag_y),
     .frag_z(frag_z), .frag_rgb(frag_rgb),
     .result_valid(trace_result_valid), .result_pass(trace_result_pass), .busy(trace_zbuffer_busy),
+    .stall(trace_zbuffer_stall),
     .mem_clear_done(mem_clear_done), .mem_rd_valid(mem_rd_valid), .mem_rd_ready(mem_rd_ready),
     .mem_rd_addr(mem_rd_addr), .mem_rd_depth(mem_rd_depth), .mem_wr_depth_en(mem_wr_depth_en),
     .mem_wr_color_en(mem_wr_color_en), .mem_wr_addr(mem_wr_addr), .mem_wr_depth(mem_wr_depth),

@@ -51,6 +51,7 @@ module rastersim_top #(
   output wire trace_result_valid,
   output wire trace_result_pass,
   output wire trace_zbuffer_busy,
+  output wire trace_zbuffer_stall,
   // Final memories, read back after the frame.
   input  wire [rs_ubits32(WIDTH * HEIGHT - 1)-1:0] readback_addr,
   output wire [Z_BITS-1:0] readback_depth,
@@ -82,6 +83,7 @@ module rastersim_top #(
     .trace_frag_x(trace_frag_x), .trace_frag_y(trace_frag_y), .trace_frag_z(trace_frag_z),
     .trace_frag_rgb(trace_frag_rgb), .trace_result_valid(trace_result_valid),
     .trace_result_pass(trace_result_pass), .trace_zbuffer_busy(trace_zbuffer_busy),
+    .trace_zbuffer_stall(trace_zbuffer_stall),
     .mem_clear_done(mem_clear_done), .mem_rd_valid(mem_rd_valid), .mem_rd_ready(mem_rd_ready),
     .mem_rd_addr(mem_rd_addr), .mem_rd_depth(mem_rd_depth), .mem_wr_depth_en(mem_wr_depth_en),
     .mem_wr_color_en(mem_wr_color_en), .mem_wr_addr(mem_wr_addr), .mem_wr_depth(mem_wr_depth),

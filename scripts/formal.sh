@@ -8,8 +8,8 @@
 #                       test, the edge row registers the next row's (bounded: 5 cycles)
 #   walker_bounds       scanline_walker: fragments never leave the bounding box or the screen
 #                       (bounded: 14 cycles)
-#   zbuffer_hazard      zbuffer: read-after-write hazard logic, result timing, every read sees
-#                       all earlier writes (bounded: 10 cycles, latencies 1..4)
+#   zbuffer_hazard      zbuffer: input buffer order, read-after-write hazard logic, result timing,
+#                       every read sees all earlier writes (bounded: 10 cycles, latencies 1..4)
 # With --mutants, each proof instead runs on a copy of its unit with one deliberate bug (a
 # sed substitution that must apply) and must FAIL with a counterexample.
 # Usage: scripts/formal.sh [--mutants] [PROOF ...]   exit 0: every proof (or every mutant's
@@ -37,7 +37,7 @@ done <<'TABLE'
 z_adder_recurrence|plane_register|plane_register_recurrence.svh|REG_BITS 6 GUARD_BITS 2 OUT_BITS 3|-tempinduct|s/value_q <= value_q + step_x_q;/value_q <= value_q + step_y_q;/
 walker_edges|scanline_walker|scanline_walker_inputs.svh scanline_walker_edges.svh|WIDTH 2 HEIGHT 2 SUBPIXEL_BITS 1|-seq 5|s/frag_x >= span_start_q && frag_x <= x_end_q/frag_x > span_start_q \&\& frag_x <= x_end_q/
 walker_bounds|scanline_walker|scanline_walker_inputs.svh scanline_walker_bounds.svh|WIDTH 4 HEIGHT 3 SUBPIXEL_BITS 1|-seq 14|s/({X_BITS{hi_pick_3}} \& src_x1)/({X_BITS{hi_pick_3}} \& (src_x1 + 1'b1))/
-zbuffer_hazard|zbuffer|zbuffer_hazard.svh|WIDTH 2 HEIGHT 2 Z_BITS 2 MAX_MEMORY_LATENCY 4|-seq 10|s/1'b1} << done_slot;/1'b1} << next_done_slot;/
+zbuffer_hazard|zbuffer|zbuffer_hazard.svh|WIDTH 2 HEIGHT 2 Z_BITS 2 MAX_MEMORY_LATENCY 4|-seq 10|s/(accepted_q \&\& ahead_q\[head_q\])/1'b0/
 TABLE
 
 work="$(mktemp -d)"

@@ -15,7 +15,8 @@ mutants=("$@")
                                      walker_bounds_cross walker_last_offset
                                      z_adder_first_row z_adder_carry z_adder_slot_carry
                                      z_adder_slot_step walker_enter_slot walker_left_carry_1 hazard_stall
-                                     hazard_window_short hazard_address_bit ring_read_slot
+                                     hazard_window_short hazard_address_bit ring_read_slot hazard_last_read
+                                     hazard_taken_slot hazard_waiting_slot buffer_one_entry done_last_read
                                      serial_floor serial_remainder_correction serial_multiplier_bits
                                      serial_bias_carry serial_product_step_x setup_slot_counter setup_floor_correction setup_missing_step
                                      setup_credit_count setup_fifo_empty setup_edge_sign setup_offscreen_rows)
@@ -79,20 +80,31 @@ to[walker_enter_slot]='assign adder_enter_slot = lo_pick_1 || lo_pick_2;'  # edg
 from[walker_left_carry_1]='assign adder_left_carry[1] = src_left[0] && src_left[1] ? dda_carry[1] : dda_carry[2];'
 to[walker_left_carry_1]='assign adder_left_carry[1] = dda_carry[2];'  # slot 1 always takes edge 2's carry
 file[hazard_stall]=zbuffer.sv
-from[hazard_stall]='wire can_accept = mem_clear_done && !hazard;'
-to[hazard_stall]='wire can_accept = mem_clear_done;'  # read-after-write stall removed
+from[hazard_stall]='assign mem_rd_valid = head_valid && mem_clear_done && !hazard;'
+to[hazard_stall]='assign mem_rd_valid = head_valid && mem_clear_done;'  # read-after-write stall removed
 params[hazard_stall]="-GSETUP_INTERVAL=4"  # a setup fast enough for back-to-back triangles to meet
-# The z-buffer's live bits and its in-flight RAM.
-for m in hazard_window_short hazard_address_bit ring_read_slot; do
+# The z-buffer's live bits, its input buffer's match bits and its in-flight RAM.
+for m in hazard_window_short hazard_address_bit ring_read_slot hazard_last_read hazard_taken_slot hazard_waiting_slot \
+         buffer_one_entry done_last_read; do
   file[$m]=zbuffer.sv
   params[$m]="-GSETUP_INTERVAL=4"
 done
 from[hazard_window_short]='1'"'"'b1} << done_slot;'
-to[hazard_window_short]='1'"'"'b1} << next_done_slot;'  # a slot retires a cycle before its data cycle
-from[hazard_address_bit]='if (live[k] && ring_pixel_q[k] == frag_pixel) hazard = 1'"'"'b1;'
-to[hazard_address_bit]='if (live[k] && ring_pixel_q[k][PIXEL_BITS-1:1] == frag_pixel[PIXEL_BITS-1:1]) hazard = 1'"'"'b1;'  # the compare ignores bit 0 of x
+to[hazard_window_short]='1'"'"'b1} << next_done_slot;'  # the done slot one age short: results and retirement a cycle early
+from[hazard_address_bit]='frag_ahead : ring_pixel_q[k] == frag_pixel;'
+to[hazard_address_bit]='frag_ahead : ring_pixel_q[k][PIXEL_BITS-1:1] == frag_pixel[PIXEL_BITS-1:1];'  # the compare ignores bit 0 of x
 from[ring_read_slot]='ram_read_q <= ring_data_q[next_done_slot];'
 to[ring_read_slot]='ram_read_q <= ring_data_q[done_slot];'  # the in-flight RAM read a cycle late
+from[hazard_last_read]=' || (accepted_q && ahead_q[head_q]);'
+to[hazard_last_read]=';'  # the fragment read in the last cycle not compared with the head
+from[hazard_taken_slot]='frag_match[k] = now_onehot_q[k] ? frag_ahead : ring_pixel_q[k] == frag_pixel;'
+to[hazard_taken_slot]='frag_match[k] = ring_pixel_q[k] == frag_pixel;'  # a fragment taken as the head is read: the slot's old pixel
+from[hazard_waiting_slot]='(ahead_q[e] ? now_onehot_q : {RING{1'"'"'b0}})'
+to[hazard_waiting_slot]='{RING{1'"'"'b0}}'  # a waiting fragment not matched with the one read ahead of it
+from[buffer_one_entry]='assign frag_ready = !count_q[1];'
+to[buffer_one_entry]='assign frag_ready = count_q == 2'"'"'d0;'  # one entry: a fragment every other cycle
+from[done_last_read]='done_live_q <= |(live & next_done_onehot);'
+to[done_last_read]='done_live_q <= |(live_q & next_done_onehot);'  # at L = 2 the last cycle's read never completes
 # The serial setup unit.
 for m in serial_floor serial_remainder_correction serial_multiplier_bits serial_bias_carry serial_swap_deltas \
          serial_product_step_x; do

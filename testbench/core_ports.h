@@ -62,7 +62,7 @@ struct TraceSample {
   bool frag_valid = false, frag_ready = false;
   int frag_x = 0, frag_y = 0;
   uint32_t frag_z = 0, frag_rgb = 0;
-  bool result_valid = false, result_pass = false, zbuffer_busy = false;
+  bool result_valid = false, result_pass = false, zbuffer_busy = false, zbuffer_stall = false;
 
   bool busy() const { return setup_busy || walker_busy || zbuffer_busy; }
 };
@@ -94,6 +94,7 @@ TraceSample sample_trace(const Ports& top) {
   s.result_valid = bit(top.trace_result_valid);
   s.result_pass = bit(top.trace_result_pass);
   s.zbuffer_busy = bit(top.trace_zbuffer_busy);
+  s.zbuffer_stall = bit(top.trace_zbuffer_stall);
   return s;
 }
 
@@ -246,13 +247,12 @@ class TraceObserver {
       out_.setups[size_t(in_walker_)] = read_record();
     }
     if (s.walker_candidate) ++stats.candidates;
-    const bool stall = s.frag_valid && !s.frag_ready;
     stats.setup.busy += s.setup_busy;
     stats.setup.stall += s.setup_stall;
     stats.walker.busy += s.walker_busy;
-    stats.walker.stall += stall;
+    stats.walker.stall += s.frag_valid && !s.frag_ready;
     stats.zbuffer.busy += s.zbuffer_busy;
-    stats.zbuffer.stall += stall;
+    stats.zbuffer.stall += s.zbuffer_stall;
     if (s.busy()) last_busy_ = cycle;
     // A fragment can wait on the memory's back-pressure longer than L cycles with no unit busy.
     done_ = !submitting && !s.busy() && !s.frag_valid && in_flight_.empty();
@@ -279,7 +279,7 @@ class TraceObserver {
   std::deque<int64_t> in_setup_;   // drawn, record not yet in the output register
   std::deque<int64_t> waiting_;    // record made, not yet loaded by the walker
   int64_t in_walker_ = -1;     // triangle the walker walks
-  std::deque<size_t> in_flight_;  // fragments accepted by the z-buffer, awaiting their result
+  std::deque<size_t> in_flight_;  // fragments taken by the z-buffer, awaiting their result
   int64_t last_busy_ = -1;
   bool done_ = false;
 };

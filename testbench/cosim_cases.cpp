@@ -116,6 +116,12 @@ class Generator {
     const int64_t cx = px * one_ + one_ / 2, cy = py * one_ + one_ / 2;
     return triangle({cx - one_, cy - one_, cx + one_, cy - one_, cx, cy + one_});
   }
+  // A triangle inside the square of half-width d around the centre of pixel (px, py): it covers that
+  // pixel alone (d < one pixel's half-width beyond S = 1; at S = 1 the neighbours' centres are 2 away).
+  SnappedTriangle only(int px, int py) {
+    const int64_t cx = px * one_ + one_ / 2, cy = py * one_ + one_ / 2, d = std::max<int64_t>(1, one_ / 4);
+    return triangle({cx - d, cy - d, cx + d, cy, cx - d, cy + d});
+  }
   // Constant depth equal to the clear value: the equal and gequal tests can pass on a cleared buffer.
   SnappedTriangle at_clear_depth(SnappedTriangle t) {
     for (SnappedVertex& v : t.v) v.z = p_.depth_clear_value();
@@ -298,13 +304,19 @@ std::vector<CosimCase> coverage_cases(const Profile& profile, const std::set<std
   const int cx = std::clamp(profile.width / 2, std::min(21, profile.width - 1), std::max(0, profile.width - 3));
   const int cy = std::clamp(profile.height / 2, std::min(21, profile.height - 1), std::max(0, profile.height - 3));
   CosimCase hazards{"", {}, profile};
-  for (int i = 0; i < 5; ++i) {
+  // A cover triangle, a walk ending on pixel (px, cy), then two more on that pixel: one starting on
+  // it and one around it; or, as a chain, one covering it alone and one starting on it (the middle
+  // one's only fragment waits on the first one's write while the third one's first fragment waits
+  // behind it in the z-buffer's input buffer, so the third must also wait for the middle one's
+  // read: docs/cycle-model.md, "Z-buffer").
+  auto group = [&](int px, bool chain) {
     hazards.triangles.push_back(whole_screen ? screen_cover(false) : g.triangle({0, 0, leg * one, 0, 0, leg * one}));
-    const int px = std::clamp(cx + i - 2, 0, profile.width - 1);
     hazards.triangles.push_back(g.ending_at(px, cy));
-    hazards.triangles.push_back(g.starting_at(px, cy));
-    hazards.triangles.push_back(g.around(px, cy));
-  }
+    hazards.triangles.push_back(chain ? g.only(px, cy) : g.starting_at(px, cy));
+    hazards.triangles.push_back(chain ? g.starting_at(px, cy) : g.around(px, cy));
+  };
+  for (int i = 0; i < 5; ++i) group(std::clamp(cx + i - 2, 0, profile.width - 1), false);
+  for (int i = 0; i < 3; ++i) group(std::clamp(cx + i - 1, 0, profile.width - 1), true);
   if (free("setup_fifo_depth")) hazards.profile.setup_fifo_depth = std::max(2, profile.setup_fifo_depth);
   std::vector<int> latencies = {profile.memory_latency};
   if (free("memory_latency")) latencies = {1, max_memory_latency};

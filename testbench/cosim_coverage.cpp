@@ -45,8 +45,8 @@ std::vector<CoverageBin> coverage_bins(const Profile& p, const std::set<std::str
   set(kDrawnNoFragment, "drawn_without_fragment", "drawn triangle that covers no pixel centre");
   set(kGuardBandDrawn, "guard_band_drawn", "drawn triangle with a vertex outside the screen");
   set(kGuardBandLimit, "guard_band_limit", "drawn triangle with a vertex on the guard band's limit (-W, 2W, -H or 2H)");
-  set(kHazardBBox, "walker_hazard_stall_bbox", "cycle the walker waited on a read-after-write hazard (bbox)");
-  set(kHazardSpan, "walker_hazard_stall_span", "cycle the walker waited on a read-after-write hazard (span)");
+  set(kHazardBBox, "zbuffer_hazard_stall_bbox", "cycle the z-buffer's oldest held fragment waited on a read-after-write hazard (bbox)");
+  set(kHazardSpan, "zbuffer_hazard_stall_span", "cycle the z-buffer's oldest held fragment waited on a read-after-write hazard (span)");
   set(kMemoryBackPressure, "memory_back_pressure", "cycle the z-buffer waited on a memory that refused a read");
   set(kFifoFullDepth1, "fifo_full_depth_1", "cycle the setup unit waited for a record credit, setup_fifo_depth 1");
   set(kFifoFullDeep, "fifo_full_depth_2_up", "cycle the setup unit waited for a record credit, setup_fifo_depth >= 2");
@@ -160,8 +160,8 @@ CoverageCounts frame_coverage(const Profile& p, const std::vector<SnappedTriangl
       }
     }
   }
-  // In rastersim_top the walker waits only on hazards (its memory never refuses a read).
-  hits[p.traversal == Traversal::BBox ? kHazardBBox : kHazardSpan] += model.stats.walker.stall;
+  // In rastersim_top the z-buffer waits only on hazards (its memory never refuses a read).
+  hits[p.traversal == Traversal::BBox ? kHazardBBox : kHazardSpan] += model.stats.zbuffer.stall;
   hits[p.setup_fifo_depth == 1 ? kFifoFullDepth1 : kFifoFullDeep] += model.stats.setup.stall;
   const int64_t fragments = int64_t(model.fragments.size());
   if (p.memory_latency == 1) hits[kLatencyMin] += fragments;

@@ -252,7 +252,7 @@ Divergence compare(const RtlResult& model, const RtlResult& rtl) {
         return divergence(t, "scanline_walker", which + " (x, y)", "(" + to_string(a.x) + ", " + to_string(a.y) + ")",
                           "(" + to_string(b.x) + ", " + to_string(b.y) + ")", a.cycle);
       if (a.cycle != b.cycle)
-        return divergence(t, "zbuffer", at + " accept cycle", to_string(a.cycle), to_string(b.cycle), a.cycle);
+        return divergence(t, "zbuffer", at + " taken cycle", to_string(a.cycle), to_string(b.cycle), a.cycle);
       if (a.z != b.z) return divergence(t, "z_adder", at + " z", to_string(a.z), to_string(b.z), a.cycle);
       if (differs(a.color, b.color))
         return divergence(t, "z_adder", at + " colour", rgb_text(a.color), rgb_text(b.color), a.cycle);

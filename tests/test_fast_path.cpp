@@ -1,8 +1,8 @@
 // Without a fragment sink the pipeline takes whole runs of fragments at once when no hazard can
-// stall them (fast/fast_walk.cpp, ZBuffer::accept_run). The traced path handles every fragment one
+// stall them (fast/fast_walk.cpp, ZBuffer::take_run). The traced path handles every fragment one
 // at a time and is the one co-simulation checks against the RTL; this test requires the untraced
 // path to give the same frame: every counter, every triangle record, every buffer word, also under
-// a memory stall pattern (which may refuse any read, so no run is taken at once: ZBuffer::settled()).
+// a memory stall pattern (which may refuse any read, so no run is taken at once: ZBuffer::settled).
 #include <gtest/gtest.h>
 
 #include <random>

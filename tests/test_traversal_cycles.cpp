@@ -4,8 +4,10 @@
 //   reference coverage (bounding-box rows and area, covered pixels) and the documented constants:
 //   walker = load + bbox pixels (bbox) or load + rows + span pixels (span), each fragment's cycle,
 //   the setup/walker hand-off chain, z-buffer busy intervals, frame cycles.
-// - The z-buffer read-after-write hazard: a fragment to an address accepted in cycle c waits until
-//   c + L + 1; fragments to other addresses never stall.
+// - The z-buffer's two-entry input buffer, simulated here cycle by cycle: a fragment is taken while
+//   fewer than two are held and read from the buffer's head a cycle later at the earliest; its
+//   read-after-write hazard: a fragment to an address read in cycle r waits until r + L + 1;
+//   fragments to other addresses never stall.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -146,6 +148,43 @@ int64_t busy_union(std::vector<int64_t> accepted, int latency) {
   return total;
 }
 
+// The z-buffer's input buffer cycle by cycle (docs/cycle-model.md, "Z-buffer"), not the model's
+// recurrence: fragment i is offered in unstalled[i] shifted by the walker's stall cycles before it,
+// taken in a cycle in which fewer than two fragments are held at the cycle's start, and read from
+// the head in the first cycle after its take in which can_read(cycle, i) holds.
+struct InputBuffer {
+  std::vector<int64_t> taken, read;
+  int64_t walker_stall = 0, head_waits = 0;
+};
+template <class CanRead>
+InputBuffer simulate_input_buffer(const std::vector<int64_t>& unstalled, CanRead can_read) {
+  InputBuffer b;
+  const size_t n = unstalled.size();
+  b.taken.assign(n, -1), b.read.assign(n, -1);
+  std::vector<size_t> held;  // oldest first
+  size_t next = 0;
+  for (int64_t cycle = n ? unstalled[0] : 0; next < n || !held.empty(); ++cycle) {
+    const size_t held_at_start = held.size();
+    if (!held.empty()) {
+      if (can_read(cycle, held.front(), b.read)) {
+        b.read[held.front()] = cycle;
+        held.erase(held.begin());
+      } else {
+        ++b.head_waits;
+      }
+    }
+    if (next < n && unstalled[next] + b.walker_stall <= cycle) {
+      if (held_at_start < 2) {
+        b.taken[next] = cycle;
+        held.push_back(next++);
+      } else {
+        ++b.walker_stall;
+      }
+    }
+  }
+  return b;
+}
+
 class CycleModel : public ::testing::TestWithParam<Traversal> {};
 
 TEST_P(CycleModel, OneTriangleCostsWhatTheRulesSay) {
@@ -204,8 +243,9 @@ TEST_P(CycleModel, OneTriangleCostsWhatTheRulesSay) {
       ASSERT_EQ(log.fragments[i].cycle, cycles[i]) << "fragment " << i << " at (" << log.fragments[i].x << ", "
                                                    << log.fragments[i].y << ")";
     EXPECT_EQ(r.fragments, int64_t(cycles.size()));
-    EXPECT_EQ(stats.zbuffer.busy, busy_union(cycles, p.memory_latency));
-    const int64_t last_write = cycles.empty() ? -1 : cycles.back() + p.memory_latency;
+    // Each fragment read in the cycle after it is taken: busy from its take through its write.
+    EXPECT_EQ(stats.zbuffer.busy, busy_union(cycles, p.memory_latency + 1));
+    const int64_t last_write = cycles.empty() ? -1 : cycles.back() + 1 + p.memory_latency;
     EXPECT_EQ(r.last_write, last_write);
     EXPECT_EQ(stats.cycles, std::max(r.walker_end, last_write) + 1);
   }
@@ -365,8 +405,8 @@ TEST_P(CycleModel, HandOffChainOverAScene) {
 }
 
 // The memory's stall pattern (zbuffer_memory.h): one triangle has no hazards, so each covered pixel
-// is accepted in the first cycle, at or after the one the rules above give it shifted by the waits
-// of the fragments before it, in which the memory is ready; every later event shifts by the waits.
+// is read in the first cycle after its take in which the memory is ready; the walker waits when the
+// input buffer is full, and every later event of the walker shifts by its waits.
 TEST_P(CycleModel, OneTriangleUnderAStallPatternShiftsByEachWait) {
   Profile p = test::make_profile(80, 60, 4, GetParam(), 20);
   const uint64_t seed = 7 + uint64_t(GetParam());
@@ -391,18 +431,16 @@ TEST_P(CycleModel, OneTriangleUnderAStallPatternShiftsByEachWait) {
     const TriangleRecord& r = records.at(0);
     const std::vector<int64_t> unstalled = expected_fragment_cycles(t, p, pipe.widths(), r.walker_load);
     ASSERT_EQ(log.fragments.size(), unstalled.size());
-    int64_t wait = 0;
-    for (size_t i = 0; i < unstalled.size(); ++i) {
-      int64_t accepted = unstalled[i] + wait;
-      while (memory_stalls(uint64_t(p.memory_stall_seed), p.memory_stall_percent, accepted)) ++accepted;
-      ASSERT_EQ(log.fragments[i].cycle, accepted) << "fragment " << i;
-      wait = accepted - unstalled[i];
-    }
+    const InputBuffer b = simulate_input_buffer(unstalled, [&](int64_t cycle, size_t, const std::vector<int64_t>&) {
+      return !memory_stalls(uint64_t(p.memory_stall_seed), p.memory_stall_percent, cycle);
+    });
+    for (size_t i = 0; i < unstalled.size(); ++i) ASSERT_EQ(log.fragments[i].cycle, b.taken[i]) << "fragment " << i;
+    const int64_t wait = b.walker_stall;
     EXPECT_EQ(stats.walker.stall, wait);
-    EXPECT_EQ(stats.zbuffer.stall, wait);
+    EXPECT_EQ(stats.zbuffer.stall, b.head_waits);
     EXPECT_EQ(r.walker_end - r.walker_load, expected_walk_cycles(t, p) + wait);
     EXPECT_EQ(stats.walker.busy, pipe.widths().walker_load_cycles + expected_walk_cycles(t, p));
-    const int64_t last_write = unstalled.empty() ? -1 : log.fragments.back().cycle + p.memory_latency;
+    const int64_t last_write = unstalled.empty() ? -1 : b.read.back() + p.memory_latency;
     EXPECT_EQ(r.last_write, last_write);
     EXPECT_EQ(stats.cycles, std::max(r.walker_end, last_write) + 1);
     total_wait += wait;
@@ -476,28 +514,30 @@ TEST_P(ZBufferHazard, SameAddressWaitsLPlusOneOthersNever) {
       pipe.submit(c.first);
       pipe.submit(c.second);
       ASSERT_EQ(log.fragments.size(), first_pixels.size() + second_pixels.size());
-      // The second triangle's fragments are consecutive candidates on one row, presented right
-      // after the load; each one waits for any earlier fragment to its address accepted L or fewer
-      // cycles before.
-      int64_t presented = records[1].walker_load + w.walker_load_cycles;
-      int64_t stall = 0, accepted = 0;
-      for (size_t k = 0; k < second_pixels.size(); ++k) {
-        accepted = presented;
-        for (size_t m = 0; m < first_pixels.size(); ++m)
-          if (first_pixels[m].x == second_pixels[k].x && first_pixels[m].y == second_pixels[k].y)
-            accepted = std::max(accepted, log.fragments[m].cycle + latency + 1);
-        const Fragment& f = log.fragments[first_pixels.size() + k];
-        EXPECT_EQ(f.cycle, accepted) << "fragment " << k << " of the second triangle";
-        stall += accepted - presented;
-        presented = accepted + 1;
-      }
+      // Each triangle's fragments are consecutive candidates on one row, offered right after its
+      // load; each read waits for any earlier fragment to its address read L or fewer cycles before.
+      std::vector<int64_t> unstalled;
+      std::vector<reference::Pixel> pixels = first_pixels;
+      pixels.insert(pixels.end(), second_pixels.begin(), second_pixels.end());
+      for (size_t k = 0; k < first_pixels.size(); ++k)
+        unstalled.push_back(records[0].walker_load + w.walker_load_cycles + int64_t(k));
+      for (size_t k = 0; k < second_pixels.size(); ++k)
+        unstalled.push_back(records[1].walker_load + w.walker_load_cycles + int64_t(k));
+      const InputBuffer b = simulate_input_buffer(unstalled, [&](int64_t cycle, size_t i, const std::vector<int64_t>& read) {
+        for (size_t m = 0; m < i; ++m)
+          if (pixels[m].x == pixels[i].x && pixels[m].y == pixels[i].y && cycle <= read[m] + latency) return false;
+        return true;
+      });
+      for (size_t k = 0; k < pixels.size(); ++k)
+        EXPECT_EQ(log.fragments[k].cycle, b.taken[k]) << "fragment " << k << " of the two triangles";
       const FrameStats& stats = pipe.stats();
-      EXPECT_EQ(stats.zbuffer.stall, stall);
-      EXPECT_EQ(stats.walker.stall, stall);
-      EXPECT_EQ(records[1].walker_end, accepted);
-      EXPECT_EQ(records[1].last_write, accepted + latency);
-      EXPECT_EQ(stats.cycles, accepted + latency + 1);
-      stalls_seen += stall > 0;
+      EXPECT_EQ(stats.zbuffer.stall, b.head_waits);
+      EXPECT_EQ(stats.walker.stall, b.walker_stall);
+      EXPECT_EQ(records[0].walker_end, b.taken[first_pixels.size() - 1]);
+      EXPECT_EQ(records[1].walker_end, b.taken.back());
+      EXPECT_EQ(records[1].last_write, b.read.back() + latency);
+      EXPECT_EQ(stats.cycles, b.read.back() + latency + 1);
+      stalls_seen += b.head_waits > 0;
     }
     if (c.overlap) {
       EXPECT_GE(stalls_seen, 3) << c.name << ": the latencies above must include stalling ones";

@@ -136,7 +136,7 @@ module scoreboard_tb #(
     .trace_walker_load(), .trace_walker_busy(), .trace_walker_candidate(), .trace_walker_last(),
     .trace_frag_valid(frag_valid), .trace_frag_ready(frag_ready), .trace_frag_x(frag_x), .trace_frag_y(frag_y),
     .trace_frag_z(frag_z), .trace_frag_rgb(frag_rgb), .trace_result_valid(result_valid),
-    .trace_result_pass(result_pass), .trace_zbuffer_busy(),
+    .trace_result_pass(result_pass), .trace_zbuffer_busy(), .trace_zbuffer_stall(),
     .readback_addr(readback_addr), .readback_depth(readback_depth), .readback_rgb(readback_rgb));
 
   // ---- Comparison, cycle by cycle ----

@@ -76,7 +76,7 @@ int sc_main(int, char*[]) {
   sc_signal<bool> cfg_depth_write, cfg_front_face, cfg_traversal, cfg_shading;
   sc_signal<uint32_t> cmd[12];
   sc_signal<bool> setup_decided, setup_busy, setup_stall, setup_done, walker_load, walker_busy, walker_candidate, walker_last;
-  sc_signal<bool> frag_valid, frag_ready, result_valid, result_pass, zbuffer_busy;
+  sc_signal<bool> frag_valid, frag_ready, result_valid, result_pass, zbuffer_busy, zbuffer_stall;
   sc_signal<uint32_t> setup_status, frag_x, frag_y, frag_z, frag_rgb;
   sc_signal<bool> mem_clear_done, mem_rd_valid, mem_rd_ready, mem_wr_depth_en, mem_wr_color_en;
   sc_signal<uint32_t> mem_rd_addr, mem_rd_depth, mem_wr_addr, mem_wr_depth, mem_wr_rgb;
@@ -107,6 +107,7 @@ int sc_main(int, char*[]) {
   core.trace_frag_valid(frag_valid), core.trace_frag_ready(frag_ready);
   core.trace_frag_x(frag_x), core.trace_frag_y(frag_y), core.trace_frag_z(frag_z), core.trace_frag_rgb(frag_rgb);
   core.trace_result_valid(result_valid), core.trace_result_pass(result_pass), core.trace_zbuffer_busy(zbuffer_busy);
+  core.trace_zbuffer_stall(zbuffer_stall);
   core.mem_clear_done(mem_clear_done), core.mem_rd_valid(mem_rd_valid), core.mem_rd_ready(mem_rd_ready);
   core.mem_rd_addr(mem_rd_addr), core.mem_rd_depth(mem_rd_depth);
   core.mem_wr_depth_en(mem_wr_depth_en), core.mem_wr_color_en(mem_wr_color_en);

@@ -102,6 +102,7 @@ RastersimSystem::RastersimSystem(sc_core::sc_module_name name, int fifo_depth)
   core_.trace_result_valid(trace_result_valid_);
   core_.trace_result_pass(trace_result_pass_);
   core_.trace_zbuffer_busy(trace_zbuffer_busy_);
+  core_.trace_zbuffer_stall(trace_zbuffer_stall_);
   core_.mem_clear_done(mem_clear_done_);
   core_.mem_rd_valid(mem_rd_valid_);
   core_.mem_rd_ready(mem_rd_ready_);

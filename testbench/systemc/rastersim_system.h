@@ -67,7 +67,7 @@ class RastersimSystem : public sc_core::sc_module {
   sc_core::sc_signal<uint32_t> trace_setup_status_;
   sc_core::sc_signal<bool> trace_walker_load_, trace_walker_busy_, trace_walker_candidate_, trace_walker_last_;
   sc_core::sc_signal<bool> trace_frag_valid_, trace_frag_ready_, trace_result_valid_, trace_result_pass_;
-  sc_core::sc_signal<bool> trace_zbuffer_busy_;
+  sc_core::sc_signal<bool> trace_zbuffer_busy_, trace_zbuffer_stall_;
   sc_core::sc_signal<uint32_t> trace_frag_x_, trace_frag_y_, trace_frag_z_, trace_frag_rgb_;
   // Memory port.
   sc_core::sc_signal<bool> mem_clear_done_, mem_rd_valid_, mem_rd_ready_, mem_wr_depth_en_, mem_wr_color_en_;

@@ -131,7 +131,7 @@ Layouts make_layouts(const Profile& p) {
   l.triangles.add("setup_done", 32, true, "cycle its record became valid (drawn) or its decision cycle (rejected)");
   l.triangles.add("walker_load", 32, true, std::string("cycle the walker took the record") + none);
   l.triangles.add("walker_end", 32, true, std::string("walker's last cycle on the triangle") + none);
-  l.triangles.add("fragments", 32, false, "fragments the z-buffer accepted");
+  l.triangles.add("fragments", 32, false, "fragments the z-buffer took");
   l.triangles.add("depth_pass", 32, false, "of which passed the depth test");
   l.triangles.add("last_write", 32, true, std::string("cycle of its last depth-test result (write)") + none);
 
@@ -140,12 +140,12 @@ Layouts make_layouts(const Profile& p) {
     l.setup.add(f.name, f.bits, f.is_signed, f.meaning);
 
   l.fragments.add("tri", 32, false, "triangle index");
-  l.fragments.add("cycle", 32, true, "cycle the z-buffer accepted it (frag_valid and frag_ready)");
+  l.fragments.add("cycle", 32, true, "cycle the z-buffer took it (frag_valid and frag_ready)");
   l.fragments.add("x", w.x_bits, false, "pixel column");
   l.fragments.add("y", w.y_bits, false, "pixel row");
   l.fragments.add("z", p.z_bits, false, "depth entering the test (uN)");
   l.fragments.add("rgb", 24, false, "colour 0xRRGGBB");
-  l.fragments.add("pass", 1, false, "depth test result, memory_latency cycles after the accept");
+  l.fragments.add("pass", 1, false, "depth test result, memory_latency cycles after its read (results come in fragment order)");
 
   l.depth.add("depth", p.z_bits, false, "final depth word (uN); address y * width + x");
   l.color.add("rgb", 24, false, "final colour word 0xRRGGBB; address y * width + x");
@@ -167,7 +167,7 @@ Layouts make_layouts(const Profile& p) {
       {"walker_busy", "cycles with trace_walker_busy"},
       {"walker_stall", "cycles with trace_frag_valid and not trace_frag_ready"},
       {"zbuffer_busy", "cycles with trace_zbuffer_busy"},
-      {"zbuffer_stall", "cycles with trace_frag_valid and not trace_frag_ready (hazards)"},
+      {"zbuffer_stall", "cycles with trace_zbuffer_stall (hazards, memory back-pressure)"},
   };
   for (const auto& [name, meaning] : frame_fields) l.frame.add(name, 32, false, meaning);
   return l;
@@ -178,7 +178,7 @@ std::vector<VectorFile> vector_files(const Layouts& l) {
       {"commands.hex", &l.commands, "input: one triangle command per line, in submission order"},
       {"triangles.hex", &l.triangles, "expected: one transaction record per triangle (decision and cycles)"},
       {"setup.hex", &l.setup, "expected: the setup -> walker record of every drawn triangle, in order"},
-      {"fragments.hex", &l.fragments, "expected: every fragment the z-buffer accepts, in order"},
+      {"fragments.hex", &l.fragments, "expected: every fragment the z-buffer takes, in order"},
       {"depth.hex", &l.depth, "expected: the final depth memory, one word per pixel"},
       {"color.hex", &l.color, "expected: the final colour memory, one word per pixel"},
       {"frame.hex", &l.frame, "expected: the frame's counters (one line)"},

@@ -76,6 +76,7 @@ module rastersim_selftest (
   wire [2:0] trace_setup_status;
   wire trace_walker_load, trace_walker_busy, trace_walker_candidate, trace_walker_last;
   wire trace_frag_valid, trace_frag_ready, trace_result_valid, trace_result_pass, trace_zbuffer_busy;
+  wire trace_zbuffer_stall;
   wire [X_BITS-1:0] trace_frag_x;
   wire [Y_BITS-1:0] trace_frag_y;
   wire [Z_BITS-1:0] trace_frag_z;
@@ -112,6 +113,7 @@ module rastersim_selftest (
     .trace_frag_x(trace_frag_x), .trace_frag_y(trace_frag_y), .trace_frag_z(trace_frag_z),
     .trace_frag_rgb(trace_frag_rgb), .trace_result_valid(trace_result_valid),
     .trace_result_pass(trace_result_pass), .trace_zbuffer_busy(trace_zbuffer_busy),
+    .trace_zbuffer_stall(trace_zbuffer_stall),
     .mem_clear_done(mem_clear_done), .mem_rd_valid(mem_rd_valid), .mem_rd_ready(mem_rd_ready),
     .mem_rd_addr(mem_rd_addr), .mem_rd_depth(mem_rd_depth), .mem_wr_depth_en(mem_wr_depth_en),
     .mem_wr_color_en(mem_wr_color_en), .mem_wr_addr(mem_wr_addr), .mem_wr_depth(mem_wr_depth),

@@ -70,7 +70,7 @@ module rastersim_vectors_tb;
   wire [Y_BITS-1:0] trace_frag_y;
   wire [Z_BITS-1:0] trace_frag_z;
   wire [23:0] trace_frag_rgb;
-  wire trace_result_valid, trace_result_pass, trace_zbuffer_busy;
+  wire trace_result_valid, trace_result_pass, trace_zbuffer_busy, trace_zbuffer_stall;
   wire [Z_BITS-1:0] readback_depth;
   wire [23:0] readback_rgb;
 
@@ -93,7 +93,7 @@ module rastersim_vectors_tb;
     .trace_frag_x(trace_frag_x), .trace_frag_y(trace_frag_y), .trace_frag_z(trace_frag_z), \
     .trace_frag_rgb(trace_frag_rgb), \
     .trace_result_valid(trace_result_valid), .trace_result_pass(trace_result_pass), \
-    .trace_zbuffer_busy(trace_zbuffer_busy)
+    .trace_zbuffer_busy(trace_zbuffer_busy), .trace_zbuffer_stall(trace_zbuffer_stall)
 `ifdef RS_EXTERNAL_MEMORY
   // rastersim_core (or a port with its parameters and ports) with the frame memory outside: the
   // memory model with the profile's latency and back-pressure pattern on its memory port.
@@ -672,10 +672,8 @@ module rastersim_vectors_tb;
         if (trace_setup_stall) setup_stall = setup_stall + 1;
         if (trace_walker_busy) walker_busy = walker_busy + 1;
         if (trace_zbuffer_busy) zbuffer_busy = zbuffer_busy + 1;
-        if (trace_frag_valid && !trace_frag_ready) begin
-          walker_stall = walker_stall + 1;
-          zbuffer_stall = zbuffer_stall + 1;
-        end
+        if (trace_frag_valid && !trace_frag_ready) walker_stall = walker_stall + 1;
+        if (trace_zbuffer_stall) zbuffer_stall = zbuffer_stall + 1;
         busy = trace_setup_busy || trace_walker_busy || trace_zbuffer_busy;
         if (busy) last_busy = cycle;
         // A fragment the memory refuses leaves every unit's busy low but is still to come.

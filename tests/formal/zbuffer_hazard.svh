@@ -1,17 +1,20 @@
-// Included at the end of rtl/zbuffer.sv by scripts/formal.sh (formal runs only). The read-after-
-// write hazard logic, against a history of accepted fragments kept here by age and a shadow depth
-// memory written from that history, with any memory behind the port that keeps its contract
-// (modelled here: the word of a read taken in c, as it is at the end of c, arrives in c + L; the
-// memory may refuse reads in any cycle and clear for any number of cycles):
-//  - a fragment is accepted only if no fragment to the same address was accepted in the last L
-//    cycles (L = cfg_memory_latency), and it is accepted whenever that holds, the memory is cleared
-//    and it takes the read (no needless stall); it is accepted exactly when its read is taken;
-//  - its depth test result comes exactly L cycles after its acceptance, and the writes it makes
+// Included at the end of rtl/zbuffer.sv by scripts/formal.sh (formal runs only). The input buffer
+// and the read-after-write hazard logic, against a shadow queue of the fragments taken and not yet
+// read, a history of the reads kept here by age and a shadow depth memory written from that
+// history, with any memory behind the port that keeps its contract (modelled here: the word of a
+// read taken in c, as it is at the end of c, arrives in c + L; the memory may refuse reads in any
+// cycle and clear for any number of cycles):
+//  - a fragment is taken exactly when fewer than two are held; reads go out in the order taken,
+//    each with its fragment's address;
+//  - the oldest held fragment is read only if no fragment to the same address was read in the
+//    last L cycles (L = cfg_memory_latency), and whenever that holds, the memory is cleared and
+//    it takes the read (no needless stall); the stall output says exactly when it waits;
+//  - its depth test result comes exactly L cycles after its read, and the writes it makes
 //    (address, depth, enables) are those of its result;
 //  - the depth it is compared with is the last depth written to its address (or the clear value
 //    when none was): every read sees all earlier writes, without forwarding in the memory.
-// The proof starts in the reset state (all registers zero) with rst low; the configuration is
-// constant and 1 <= L <= MAX_MEMORY_LATENCY.
+// The proof starts with one reset cycle (rst high, no fragment offered) from all registers zero,
+// then rst stays low; the configuration is constant and 1 <= L <= MAX_MEMORY_LATENCY.
   localparam integer F_MAX = MAX_MEMORY_LATENCY;
   localparam integer F_WORDS = WIDTH * HEIGHT;
   reg                f_valid [1:F_MAX];
@@ -28,13 +31,27 @@
   reg [2:0]          f_depth_func;
   wire [Z_BITS-1:0]  f_clear_value = {Z_BITS{1'b0}};  // the memory's clear value
   wire [ADDR_BITS-1:0] f_frag_addr = frag_y * WIDTH + frag_x;
+  // The fragments taken and not yet read, oldest first.
+  reg [1:0]           f_held;
+  reg [ADDR_BITS-1:0] f_held_addr [0:1];
+  reg [Z_BITS-1:0]    f_held_z [0:1];
+  wire f_take = frag_valid && frag_ready;
+  wire f_read_taken = mem_rd_valid && mem_rd_ready;
+  wire [ADDR_BITS-1:0] f_head_addr = f_held_addr[0];
 
   integer f_k;
   reg f_conflict;
   always @* begin
     f_conflict = 1'b0;
     for (f_k = 1; f_k <= F_MAX; f_k = f_k + 1)
-      if (f_k <= cfg_memory_latency && f_valid[f_k] && f_addr[f_k] == f_frag_addr) f_conflict = 1'b1;
+      if (f_k <= cfg_memory_latency && f_valid[f_k] && f_addr[f_k] == f_head_addr) f_conflict = 1'b1;
+  end
+  integer f_j;
+  reg f_in_flight;  // a fragment read in the last L cycles
+  always @* begin
+    f_in_flight = 1'b0;
+    for (f_j = 1; f_j <= F_MAX; f_j = f_j + 1)
+      if (f_j <= cfg_memory_latency && f_valid[f_j]) f_in_flight = 1'b1;
   end
   wire f_done_valid = f_valid[cfg_memory_latency];
   wire [ADDR_BITS-1:0] f_done_addr = f_addr[cfg_memory_latency];
@@ -58,9 +75,21 @@
     f_latency <= cfg_memory_latency;
     f_depth_write <= cfg_depth_write;
     f_depth_func <= cfg_depth_func;
-    f_valid[1] <= frag_valid && frag_ready;
-    f_addr[1] <= f_frag_addr;
-    f_z[1] <= frag_z;
+    f_valid[1] <= f_read_taken;
+    f_addr[1] <= f_head_addr;
+    f_z[1] <= f_held_z[0];
+    if (f_read_taken) begin
+      f_held_addr[0] <= f_held_addr[1];
+      f_held_z[0] <= f_held_z[1];
+    end
+    if (f_take && f_held - {1'b0, f_read_taken} == 2'd0) begin
+      f_held_addr[0] <= f_frag_addr;
+      f_held_z[0] <= frag_z;
+    end else if (f_take) begin
+      f_held_addr[1] <= f_frag_addr;
+      f_held_z[1] <= frag_z;
+    end
+    f_held <= f_held + {1'b0, f_take} - {1'b0, f_read_taken};
     // The memory: a taken read sees the word before this cycle's write.
     f_read[1] <= f_mem_written[mem_rd_addr] ? f_mem[mem_rd_addr] : f_clear_value;
     for (f_k = 2; f_k <= F_MAX; f_k = f_k + 1) begin
@@ -80,7 +109,8 @@
   end
 
   always @* begin
-    assume(!rst);
+    assume(rst == !f_started);
+    if (!f_started) assume(!frag_valid);
     assume(cfg_memory_latency >= 1 && cfg_memory_latency <= MAX_MEMORY_LATENCY);
     assume(frag_x <= WIDTH - 1 && frag_y <= HEIGHT - 1);
     if (f_started) begin
@@ -89,10 +119,12 @@
       assume(mem_rd_depth == f_read[cfg_memory_latency]);
       assume(mem_clear_done);
     end
-    if (frag_valid && frag_ready) assert(!f_conflict);
-    if (frag_valid && mem_clear_done && mem_rd_ready && !f_conflict) assert(frag_ready);
-    assert((frag_valid && frag_ready) == (mem_rd_valid && mem_rd_ready));
-    if (mem_rd_valid) assert(mem_rd_addr == f_frag_addr);
+    assert(f_held <= 2'd2);
+    if (f_started) assert(frag_ready == (f_held < 2'd2));
+    if (mem_rd_valid) assert(f_held != 2'd0 && !f_conflict && mem_rd_addr == f_head_addr);
+    if (f_held != 2'd0 && mem_clear_done && !f_conflict) assert(mem_rd_valid);
+    assert(stall == (f_held != 2'd0 && !f_read_taken));
+    if (f_started) assert(busy == (f_take || f_held != 2'd0 || f_in_flight));
     assert(result_valid == f_done_valid);
     if (f_done_valid) begin
       assert(result_pass == f_pass);

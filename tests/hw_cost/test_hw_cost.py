@@ -62,13 +62,13 @@ class HwCost(unittest.TestCase):
         self.assertIn("reusing", stderr)
         self.assertEqual(again["zbuffer"], clean)
 
-        # A copy of the RTL whose z-buffer leaves can_accept undriven.
+        # A copy of the RTL whose z-buffer leaves issue (a read goes out) undriven.
         rtl = os.path.join(self.work, "rtl")
         shutil.copytree(os.path.join(ROOT, "rtl"), rtl)
         path = os.path.join(rtl, "zbuffer.sv")
         with open(path) as f:
             text = f.read()
-        broken = text.replace("wire can_accept = mem_clear_done && !hazard;", "wire can_accept;")
+        broken = text.replace("wire issue = mem_rd_valid && mem_rd_ready;", "wire issue;")
         self.assertNotEqual(broken, text)
         with open(path, "w") as f:
             f.write(broken)
@@ -76,7 +76,7 @@ class HwCost(unittest.TestCase):
         self.assertNotIn("reusing", stderr)
         self.assertGreater(int(rows["zbuffer"]["check_problems"]), 0)
         self.assertTrue(rows["zbuffer"]["note"].startswith("UNRELIABLE"), rows["zbuffer"]["note"])
-        self.assertIn("can_accept", rows["zbuffer"]["note"])
+        self.assertIn("issue", rows["zbuffer"]["note"])
 
     def test_nextpnr_out_of_cells_reads_as_does_not_fit(self):
         log = os.path.join(self.work, "pnr.log")

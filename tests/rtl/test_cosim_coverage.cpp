@@ -135,7 +135,7 @@ TEST(CosimCoverage, PinnedSettingsMakeBinsUnreachable) {
   EXPECT_FALSE(reachable(bins, "depth_always_fail"));
   EXPECT_FALSE(reachable(bins, "memory_back_pressure"));
   EXPECT_TRUE(reachable(bins, "depth_greater_pass"));
-  EXPECT_TRUE(reachable(bins, "walker_hazard_stall_bbox"));
+  EXPECT_TRUE(reachable(bins, "zbuffer_hazard_stall_bbox"));
   EXPECT_TRUE(reachable(bins, "culled"));
 
   p.traversal = Traversal::Span;
@@ -144,9 +144,9 @@ TEST(CosimCoverage, PinnedSettingsMakeBinsUnreachable) {
   p.depth_func = DepthFunc::Less;
   p.depth_clear = 0;
   bins = coverage_bins(p, {"traversal", "memory_latency", "cull", "depth_func", "depth_clear"}, 8);
-  EXPECT_FALSE(reachable(bins, "walker_hazard_stall_bbox"));  // span only
+  EXPECT_FALSE(reachable(bins, "zbuffer_hazard_stall_bbox"));  // span only
   // The next triangle's first fragment can follow the last one's in the next cycle: any latency.
-  EXPECT_TRUE(reachable(bins, "walker_hazard_stall_span"));
+  EXPECT_TRUE(reachable(bins, "zbuffer_hazard_stall_span"));
   EXPECT_FALSE(reachable(bins, "culled"));
   EXPECT_FALSE(reachable(bins, "depth_greater_write_on"));
   EXPECT_FALSE(reachable(bins, "depth_less_pass"));  // nothing is below 0
@@ -158,8 +158,8 @@ TEST(CosimCoverage, PinnedSettingsMakeBinsUnreachable) {
   p.setup_interval = 0;
   p.setup_fifo_depth = 1;
   bins = coverage_bins(p, {"setup_fifo_depth"}, 8);
-  EXPECT_FALSE(reachable(bins, "walker_hazard_stall_bbox"));
-  EXPECT_FALSE(reachable(bins, "walker_hazard_stall_span"));
+  EXPECT_FALSE(reachable(bins, "zbuffer_hazard_stall_bbox"));
+  EXPECT_FALSE(reachable(bins, "zbuffer_hazard_stall_span"));
 }
 
 // The frames of `cosim` at its default count reach every reachable bin on each built geometry.

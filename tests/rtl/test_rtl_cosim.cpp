@@ -1,4 +1,4 @@
-// Model against RTL in lockstep: every fragment (order, x, y, z, colour, pass, accept cycle), every
+// Model against RTL in lockstep: every fragment (order, x, y, z, colour, pass, taken cycle), every
 // triangle record, the final memories and the frame counters must be equal (compare()).
 #include <gtest/gtest.h>
 
@@ -203,7 +203,8 @@ TEST(RtlCycles, WorkedExampleOfTheCycleModel) {
   EXPECT_EQ(r.rtl.triangles[1].setup_accept, setup_cycles);
   EXPECT_EQ(r.rtl.triangles[1].setup_done, 2 * setup_cycles - 1);
   EXPECT_EQ(r.rtl.fragments[1].cycle, 2 * setup_cycles);  // no hazard: long after the write
-  EXPECT_EQ(r.rtl.stats.cycles, r.rtl.fragments[1].cycle + p.memory_latency + 1);
+  // Taken, read in the next cycle, written L cycles later.
+  EXPECT_EQ(r.rtl.stats.cycles, r.rtl.fragments[1].cycle + 1 + p.memory_latency + 1);
 }
 
 // The pipelined unit's worked example (docs/cycle-model.md) on the small screen, setup_interval 4:
@@ -228,9 +229,13 @@ TEST(RtlCycles, PipelinedSetupWorkedExample) {
   EXPECT_EQ(r.rtl.triangles[1].setup_done, 4 + latency);
   // The walker is idle after latency + 1; the record comes one slot after the first one's.
   EXPECT_EQ(r.rtl.triangles[1].walker_load, 4 + latency);
-  // Presented in latency + 5, held by the hazard until L + 1 after the first.
-  EXPECT_EQ(r.rtl.fragments[1].cycle, latency + 1 + p.memory_latency + 1);
-  EXPECT_EQ(r.rtl.stats.cycles, r.rtl.fragments[1].cycle + p.memory_latency + 1);
+  // Offered in latency + 5 and taken at once (the first fragment was read in latency + 2); its
+  // read held by the hazard until L + 1 cycles after the first's, then written L cycles later.
+  EXPECT_EQ(r.rtl.fragments[1].cycle, latency + 5);
+  const int64_t second_read = latency + 2 + p.memory_latency + 1;
+  EXPECT_EQ(r.rtl.stats.zbuffer.stall, second_read - (latency + 6));
+  EXPECT_EQ(r.rtl.stats.walker.stall, 0);
+  EXPECT_EQ(r.rtl.stats.cycles, second_read + p.memory_latency + 1);
 }
 
 // ---- the harness itself can fail ----

@@ -1,6 +1,6 @@
 // The SystemC system (testbench/systemc/: the verilated rastersim_core, the command FIFO and the
 // z-buffer memory model) against the model, the specification: every fragment (order, position,
-// depth, colour, pass, accept cycle), every triangle record and setup record, the final memories
+// depth, colour, pass, taken cycle), every triangle record and setup record, the final memories
 // and every frame counter (rtl::compare), with and without the memory's stall pattern; and the
 // same cycle counts from the SystemC run, the plain verilated run (rastersim_top, on-chip memory)
 // and the model. All frames run in one process: the system is elaborated once and reset per frame.

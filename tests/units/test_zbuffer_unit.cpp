@@ -3,9 +3,10 @@
 // word in exactly c + L (the data lines carry noise in every other cycle), writes land at the end
 // of their cycle, and the read port refuses requests in the seeded stall pattern's cycles. The
 // fragments crowd a few pixels so that read-after-write hazards are frequent; every depth function,
-// depth_write, latency 1..MAX_MEMORY_LATENCY and stall rate comes up. Checked: each fragment's accept
-// cycle and read address, each depth-test result and write (cycle, enables, address, data), the
-// busy and stall counts, and the final memory word by word.
+// depth_write, latency 1..MAX_MEMORY_LATENCY and stall rate comes up. Checked: the cycle each fragment
+// is taken into the input buffer, the cycle and address of its read, each depth-test result and
+// write (cycle, enables, address, data), the busy and stall counts (the walker's stall recomputed
+// from the take cycles), and the final memory word by word.
 #include <gtest/gtest.h>
 
 #include <deque>
@@ -23,11 +24,11 @@ struct TestFragment {
   int x, y;
   uint32_t z;
   uint32_t rgb;
-  int64_t gap;  // cycles the test waits after the previous accept before presenting it
+  int64_t gap;  // cycles the test waits after the previous take before offering it
 };
 
 struct ModelFragment {
-  int64_t accepted;
+  int64_t taken, read;
   bool pass;
 };
 
@@ -66,16 +67,19 @@ void check_zbuffer_unit(const char* config, const Profile& base, int max_latency
       }
     }
 
-    // The model: fragment i is presented the cycle after fragment i - 1 was accepted, plus its gap.
+    // The model: fragment i is offered the cycle after fragment i - 1 was taken, plus its gap.
     ZBuffer model(p);
     std::vector<ModelFragment> want;
-    int64_t previous = -1;
+    int64_t previous = -1, walker_stall = 0;
     for (const TestFragment& f : frags) {
       const uint32_t address = uint32_t(f.y * p.width + f.x);
       model.begin_triangle(std::numeric_limits<int64_t>::min());  // every fragment is checked for hazards
-      const int64_t accepted = model.accept(address, previous + 1 + f.gap);
-      want.push_back({accepted, model.test_and_write(address, f.z, Rgb{uint8_t(f.rgb >> 16), uint8_t(f.rgb >> 8), uint8_t(f.rgb)})});
-      previous = accepted;
+      const int64_t offered = previous + 1 + f.gap;
+      const int64_t taken = model.take(address, offered);
+      const Rgb rgb{uint8_t(f.rgb >> 16), uint8_t(f.rgb >> 8), uint8_t(f.rgb)};
+      want.push_back({taken, model.last_read(), model.test_and_write(address, f.z, rgb)});
+      walker_stall += taken - offered;
+      previous = taken;
     }
     const std::string where_batch =
         std::string(config) + ", seed " + std::to_string(seed) + ", batch " + std::to_string(batch) + " (depth_func " +
@@ -96,10 +100,10 @@ void check_zbuffer_unit(const char* config, const Profile& base, int max_latency
     unit->rst = 0;
     unit->mem_clear_done = 1;  // frame cycle 0 is the next one
 
-    size_t next = 0;
+    size_t next = 0, next_read = 0;
     std::deque<size_t> in_flight;
     int64_t present = frags.empty() ? 0 : frags[0].gap, busy = 0, stall = 0;
-    const int64_t end = want.empty() ? 0 : want.back().accepted + p.memory_latency + 2;
+    const int64_t end = want.empty() ? 0 : want.back().read + p.memory_latency + 2;
     for (int64_t cycle = 0; cycle <= end; ++cycle) {
       const bool presenting = next < frags.size() && cycle >= present;
       unit->frag_valid = presenting;
@@ -115,18 +119,25 @@ void check_zbuffer_unit(const char* config, const Profile& base, int max_latency
       if (data_due) reads.pop_front();
       unit.settle();
       const std::string at = where_batch + ", cycle " + std::to_string(cycle);
-      if (presenting && unit->frag_ready) {
-        const TestFragment& f = frags[next];
-        ASSERT_EQ(cycle, want[next].accepted) << at << ": fragment " << next << " accepted";
-        ASSERT_TRUE(unit->mem_rd_valid) << at << ": fragment " << next << " accepted without a read";
+      if (unit->mem_rd_valid && unit->mem_rd_ready) {
+        ASSERT_LT(next_read, next) << at << ": a read with no fragment taken";
+        const TestFragment& f = frags[next_read];
+        ASSERT_EQ(cycle, want[next_read].read) << at << ": fragment " << next_read << " read";
         ASSERT_EQ(uint32_t(unit->mem_rd_addr), uint32_t(f.y * p.width + f.x)) << at << ": read address";
         reads.emplace_back(cycle + p.memory_latency, uint32_t(f.y * p.width + f.x));
-        in_flight.push_back(next++);
+        in_flight.push_back(next_read++);
+      } else if (next_read < frags.size()) {
+        ASSERT_NE(cycle, want[next_read].read) << at << ": fragment " << next_read << " not read";
+      }
+      if (presenting && unit->frag_ready) {
+        ASSERT_EQ(cycle, want[next].taken) << at << ": fragment " << next << " taken";
+        ++next;
         present = next < frags.size() ? cycle + 1 + frags[next].gap : 0;
       } else if (next < frags.size()) {
-        ASSERT_NE(cycle, want[next].accepted) << at << ": fragment " << next << " not accepted";
+        ASSERT_NE(cycle, want[next].taken) << at << ": fragment " << next << " not taken";
       }
-      if (!in_flight.empty() && want[in_flight.front()].accepted + p.memory_latency == cycle) {
+      ASSERT_LE(next - next_read, 2u) << at << ": more than two fragments held";
+      if (!in_flight.empty() && want[in_flight.front()].read + p.memory_latency == cycle) {
         const size_t i = in_flight.front();
         in_flight.pop_front();
         const TestFragment& f = frags[i];
@@ -148,7 +159,8 @@ void check_zbuffer_unit(const char* config, const Profile& base, int max_latency
         ASSERT_FALSE(unit->mem_wr_depth_en || unit->mem_wr_color_en) << at << ": a write with none due";
       }
       busy += unit->busy;
-      stall += presenting && !unit->frag_ready;
+      stall += unit->stall;
+      walker_stall -= presenting && !unit->frag_ready;
       // Writes land at the end of the cycle.
       if (unit->mem_wr_depth_en) depth[unit->mem_wr_addr] = uint32_t(unit->mem_wr_depth);
       if (unit->mem_wr_color_en) color[unit->mem_wr_addr] = uint32_t(unit->mem_wr_rgb);
@@ -157,6 +169,7 @@ void check_zbuffer_unit(const char* config, const Profile& base, int max_latency
     ASSERT_EQ(next, frags.size()) << where_batch;
     ASSERT_EQ(busy, model.counters().busy) << where_batch << ": busy cycles";
     ASSERT_EQ(stall, model.counters().stall) << where_batch << ": stall cycles";
+    ASSERT_EQ(walker_stall, 0) << where_batch << ": cycles a fragment was offered and not taken";
     for (size_t a = 0; a < depth.size(); ++a) {
       ASSERT_EQ(depth[a], model.depth()[a]) << where_batch << ": depth word " << a;
       ASSERT_EQ(color[a], model.color()[a]) << where_batch << ": colour word " << a;
