@@ -78,9 +78,9 @@ module zbuffer #(
   reg [RING_BITS-1:0] now_slot_q;     // the slot written at the end of this cycle
   reg [RING-1:0]      now_onehot_q;   // the same, one-hot
   reg [RING-1:0]      live_q;         // live slots but the last cycle's issue
-  reg                 accepted_q;     // the last cycle issued a read: its slot is live from now on
+  reg                 issued_q;       // the last cycle issued a read: its slot is live from now on
   reg [RING-1:0]      last_onehot_q;  // the slot written in the last cycle, one-hot
-  wire [RING-1:0] live = live_q | (accepted_q ? last_onehot_q : {RING{1'b0}});
+  wire [RING-1:0] live = live_q | (issued_q ? last_onehot_q : {RING{1'b0}});
   reg [PIXEL_BITS-1:0] ring_pixel_q [0:RING-1];
   reg [DATA_BITS-1:0] ring_data_q [0:RING-1];
 
@@ -127,7 +127,7 @@ module zbuffer #(
 
   // Hazard: a live slot with the head's pixel, from flip-flops only (the slot issued in the last
   // cycle held the fragment ahead of the head).
-  wire hazard = |(live_q & match_q[head_q]) || (accepted_q && ahead_q[head_q]);
+  wire hazard = |(live_q & match_q[head_q]) || (issued_q && ahead_q[head_q]);
   wire in_flight = |live;
 
   // The read request does not depend on mem_rd_ready; the head is issued with it.
@@ -141,14 +141,14 @@ module zbuffer #(
   // The fragment in its data cycle r+L: slot done_slot (done_onehot_q), live until the end of this
   // cycle; its word is on mem_rd_depth. Its data was read from the RAM and its live bit taken in
   // the cycle before (slot next_done_slot then), or, at L = 1, it is the fragment issued in that
-  // cycle (latest_q, accepted_q).
+  // cycle (latest_q, issued_q).
   wire [RING_BITS-1:0] done_slot = slot_of_age(now_slot_q, cfg_memory_latency);
   wire [RING_BITS-1:0] next_done_slot = done_slot + 1'b1;  // the same age one cycle on
   reg  [RING-1:0]      done_onehot_q;
   wire [RING-1:0]      next_done_onehot = {done_onehot_q[RING-2:0], done_onehot_q[RING-1]};
   reg                  done_live_q;  // at L >= 2 the issue of the last cycle is not the done slot's
   wire                 latency_one = cfg_memory_latency == LATENCY_BITS'(1);
-  wire                 done_valid = latency_one ? accepted_q : done_live_q;
+  wire                 done_valid = latency_one ? issued_q : done_live_q;
   reg  [DATA_BITS-1:0] ram_read_q, latest_q;
   wire [DATA_BITS-1:0] done_data = latency_one ? latest_q : ram_read_q;
   wire [ADDR_BITS-1:0] done_addr = done_data[Z_BITS + 24 +: ADDR_BITS];
@@ -180,7 +180,7 @@ module zbuffer #(
       now_slot_q <= {RING_BITS{1'b0}};
       now_onehot_q <= {{(RING-1){1'b0}}, 1'b1};
       live_q <= {RING{1'b0}};
-      accepted_q <= 1'b0;
+      issued_q <= 1'b0;
       done_onehot_q <= {{(RING-1){1'b0}}, 1'b1} << done_slot;
       done_live_q <= 1'b0;
       count_q <= 2'd0;
@@ -190,11 +190,11 @@ module zbuffer #(
       now_slot_q <= now_slot_q + 1'b1;
       now_onehot_q <= {now_onehot_q[RING-2:0], now_onehot_q[RING-1]};
       // The done slot retires; the slot written now (the same one at L = RING) takes the issue,
-      // one cycle later through accepted_q.
+      // one cycle later through issued_q.
       live_q <= live & ~done_onehot_q;
       done_onehot_q <= next_done_onehot;
       done_live_q <= |(live & next_done_onehot);
-      accepted_q <= issue;
+      issued_q <= issue;
       count_q <= count_q + {1'b0, take} - {1'b0, issue};
       head_q <= head_q ^ issue;
       tail_q <= tail_q ^ take;

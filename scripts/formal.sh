@@ -37,7 +37,7 @@ done <<'TABLE'
 z_adder_recurrence|plane_register|plane_register_recurrence.svh|REG_BITS 6 GUARD_BITS 2 OUT_BITS 3|-tempinduct|s/value_q <= value_q + step_x_q;/value_q <= value_q + step_y_q;/
 walker_edges|scanline_walker|scanline_walker_inputs.svh scanline_walker_edges.svh|WIDTH 2 HEIGHT 2 SUBPIXEL_BITS 1|-seq 5|s/frag_x >= span_start_q && frag_x <= x_end_q/frag_x > span_start_q \&\& frag_x <= x_end_q/
 walker_bounds|scanline_walker|scanline_walker_inputs.svh scanline_walker_bounds.svh|WIDTH 4 HEIGHT 3 SUBPIXEL_BITS 1|-seq 14|s/({X_BITS{hi_pick_3}} \& src_x1)/({X_BITS{hi_pick_3}} \& (src_x1 + 1'b1))/
-zbuffer_hazard|zbuffer|zbuffer_hazard.svh|WIDTH 2 HEIGHT 2 Z_BITS 2 MAX_MEMORY_LATENCY 4|-seq 10|s/(accepted_q \&\& ahead_q\[head_q\])/1'b0/
+zbuffer_hazard|zbuffer|zbuffer_hazard.svh|WIDTH 2 HEIGHT 2 Z_BITS 2 MAX_MEMORY_LATENCY 4|-seq 10|s/(issued_q \&\& ahead_q\[head_q\])/1'b0/
 TABLE
 
 work="$(mktemp -d)"

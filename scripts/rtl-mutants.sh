@@ -95,7 +95,7 @@ from[hazard_address_bit]='frag_ahead : ring_pixel_q[k] == frag_pixel;'
 to[hazard_address_bit]='frag_ahead : ring_pixel_q[k][PIXEL_BITS-1:1] == frag_pixel[PIXEL_BITS-1:1];'  # the compare ignores bit 0 of x
 from[ring_read_slot]='ram_read_q <= ring_data_q[next_done_slot];'
 to[ring_read_slot]='ram_read_q <= ring_data_q[done_slot];'  # the in-flight RAM read a cycle late
-from[hazard_last_read]=' || (accepted_q && ahead_q[head_q]);'
+from[hazard_last_read]=' || (issued_q && ahead_q[head_q]);'
 to[hazard_last_read]=';'  # the fragment read in the last cycle not compared with the head
 from[hazard_taken_slot]='frag_match[k] = now_onehot_q[k] ? frag_ahead : ring_pixel_q[k] == frag_pixel;'
 to[hazard_taken_slot]='frag_match[k] = ring_pixel_q[k] == frag_pixel;'  # a fragment taken as the head is read: the slot's old pixel
