@@ -8,6 +8,8 @@ set(RASTERSIM_RTL_SOURCES
   ${RASTERSIM_RTL_DIR}/rastersim_top.sv
   ${RASTERSIM_RTL_DIR}/triangle_setup.sv
   ${RASTERSIM_RTL_DIR}/setup_fifo.sv
+  ${RASTERSIM_RTL_DIR}/span_bounds.sv
+  ${RASTERSIM_RTL_DIR}/scanline_walker_entry.sv
   ${RASTERSIM_RTL_DIR}/scanline_walker.sv
   ${RASTERSIM_RTL_DIR}/z_adder.sv
   ${RASTERSIM_RTL_DIR}/plane_register.sv

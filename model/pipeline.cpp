@@ -76,10 +76,10 @@ void Pipeline::submit(const SnappedTriangle& tri) {
     last_busy_ = std::max(last_busy_, record.setup_done);
   } else {
     ++stats_.triangles_drawn;
-    // The record leaves the output register at once (to the walker or into the FIFO); the walker
-    // takes it once it is valid and the records before it are taken, as early as in the cycle of
+    // The record goes into the record FIFO (as the walker's entry) and is at its head in the next
+    // cycle; the walker takes it once the records before it are taken, as early as in the cycle of
     // the previous triangle's last candidate.
-    record.walker_load = std::max(record.setup_done, walker_free_);
+    record.walker_load = std::max(record.setup_done + 1, walker_free_);
     walker_idle_load_ = record.walker_load > walker_free_;
     credit_release_[size_t(drawn_++ % int64_t(credit_release_.size()))] = record.walker_load;
     zbuffer_.begin_triangle(record.walker_load);  // the walker presents fragments after loading

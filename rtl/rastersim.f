@@ -8,7 +8,9 @@ plane_register.sv
 rastersim_core.sv
 rastersim_top.sv
 scanline_walker.sv
+scanline_walker_entry.sv
 setup_fifo.sv
+span_bounds.sv
 triangle_setup.sv
 z_adder.sv
 zbuffer.sv

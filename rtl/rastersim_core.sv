@@ -175,19 +175,27 @@ module rastersim_core #(
     .out_valid(setup_valid),
     .out_record(setup_record));
 
-  // Record FIFO: the output register's record goes to the walker directly when no earlier record
-  // waits and the walker takes it in that cycle, else into the FIFO (the credits leave it room).
+  // Record FIFO: every record goes in, as the walker's entry (scanline_walker_entry: its state at
+  // the load) and the Z adder's planes; it is at the head from the next cycle (the credits leave it
+  // room).
+  localparam integer ENTRY_BITS = rs_entry_lsb(20, WIDTH, HEIGHT, SUBPIXEL_BITS);
+  localparam integer PLANE_BITS = RECORD_BITS - WALKER_RECORD_BITS;
+  wire [ENTRY_BITS-1:0] setup_entry;
+  scanline_walker_entry #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS)) walker_entry (
+    .record(setup_record[WALKER_RECORD_BITS-1:0]), .entry(setup_entry));
   wire fifo_empty;
-  wire [RECORD_BITS-1:0] fifo_head;
+  wire [ENTRY_BITS+PLANE_BITS-1:0] fifo_head;
   wire walker_ready;
-  wire record_valid = !fifo_empty || setup_valid;
-  setup_fifo #(.RECORD_BITS(RECORD_BITS), .ENTRIES(MAX_SETUP_FIFO_DEPTH)) record_fifo (
-    .clk(clk), .rst(rst), .push(setup_valid && !(fifo_empty && walker_ready)), .push_data(setup_record),
+  setup_fifo #(.RECORD_BITS(ENTRY_BITS + PLANE_BITS), .ENTRIES(MAX_SETUP_FIFO_DEPTH)) record_fifo (
+    .clk(clk), .rst(rst), .push(setup_valid), .push_data({setup_record[RECORD_BITS-1:WALKER_RECORD_BITS], setup_entry}),
     .pop(!fifo_empty && walker_ready), .empty(fifo_empty), .head(fifo_head));
-  assign trace_walker_load = record_valid && walker_ready;
+  assign trace_walker_load = !fifo_empty && walker_ready;
+  // A plane field of the record at LSB is at PLANES_AT + LSB of the head (the walker part's place
+  // holds the entry).
+  localparam integer PLANES_AT = ENTRY_BITS - WALKER_RECORD_BITS;
 
-  // The record the walker sees. Readable from C++ (public_flat_rd) so that the co-simulation
-  // compares the setup unit's outputs field by field when the walker takes them.
+  // The setup unit's record. Readable from C++ (public_flat_rd) so that the co-simulation
+  // compares the setup unit's outputs field by field in setup_done.
   wire [X_BITS-1:0] rec_x0 /*verilator public_flat_rd*/;
   wire [X_BITS-1:0] rec_x1 /*verilator public_flat_rd*/;
   wire [Y_BITS-1:0] rec_y0 /*verilator public_flat_rd*/;
@@ -208,7 +216,7 @@ module rastersim_core #(
   wire [23:0]      rec_flat_rgb /*verilator public_flat_rd*/;
   wire [LEFT_BITS-1:0] rec_left_start /*verilator public_flat_rd*/;
   wire [LEFT_BITS-1:0] rec_left_step /*verilator public_flat_rd*/;
-  wire [RECORD_BITS-1:0] rec = fifo_empty ? setup_record : fifo_head;
+  wire [RECORD_BITS-1:0] rec = setup_record;
   assign rec_x0 = rec[LSB_X0 +: X_BITS];
   assign rec_x1 = rec[LSB_X1 +: X_BITS];
   assign rec_y0 = rec[LSB_Y0 +: Y_BITS];
@@ -241,8 +249,8 @@ module rastersim_core #(
 
   scanline_walker #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS)) walker (
     .clk(clk), .rst(rst), .cfg_traversal(traversal_q),
-    .in_valid(record_valid), .in_ready(walker_ready),
-    .in_record(rec[WALKER_RECORD_BITS-1:0]),
+    .in_valid(!fifo_empty), .in_ready(walker_ready),
+    .in_entry(fifo_head[ENTRY_BITS-1:0]),
     .adder_load(adder_load), .adder_step_x(adder_step_x), .adder_next_row(adder_next_row),
     .adder_row_enter(adder_row_enter), .adder_enter_left(adder_enter_left), .adder_enter_slot(adder_enter_slot),
     .adder_left_carry(adder_left_carry),
@@ -253,9 +261,11 @@ module rastersim_core #(
     .clk(clk), .cfg_shading(shading_q), .load(adder_load), .step_x(adder_step_x),
     .next_row(adder_next_row), .row_enter(adder_row_enter), .enter_left(adder_enter_left),
     .enter_slot(adder_enter_slot), .left_carry(adder_left_carry),
-    .depth_start(rec_depth_start), .depth_step_x(rec_depth_step_x), .depth_step_y(rec_depth_step_y),
-    .color_start(rec_color_start), .color_step_x(rec_color_step_x), .color_step_y(rec_color_step_y),
-    .flat_rgb(rec_flat_rgb), .left_start(rec_left_start), .left_step(rec_left_step), .depth(frag_z), .rgb(frag_rgb));
+    .depth_start(fifo_head[PLANES_AT + LSB_DEPTH_START +: Z_REG_BITS]), .depth_step_x(fifo_head[PLANES_AT + LSB_DEPTH_STEP_X +: Z_REG_BITS]),
+    .depth_step_y(fifo_head[PLANES_AT + LSB_DEPTH_STEP_Y +: Z_REG_BITS]), .color_start(fifo_head[PLANES_AT + LSB_COLOR_START +: 3*COLOR_REG_BITS]),
+    .color_step_x(fifo_head[PLANES_AT + LSB_COLOR_STEP_X +: 3*COLOR_REG_BITS]), .color_step_y(fifo_head[PLANES_AT + LSB_COLOR_STEP_Y +: 3*COLOR_REG_BITS]),
+    .flat_rgb(fifo_head[PLANES_AT + LSB_FLAT_RGB +: 24]), .left_start(fifo_head[PLANES_AT + LSB_LEFT_START +: LEFT_BITS]),
+    .left_step(fifo_head[PLANES_AT + LSB_LEFT_STEP +: LEFT_BITS]), .depth(frag_z), .rgb(frag_rgb));
 
   zbuffer #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY)) zbuf (
     .clk(clk), .rst(rst), .cfg_depth_func(depth_func_q), .cfg_depth_write(depth_write_q),

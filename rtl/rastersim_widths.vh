@@ -281,3 +281,48 @@ endfunction
 function automatic integer rs_rec_walker_bits(input integer w, input integer h, input integer s);
   rs_rec_walker_bits = rs_rec_lsb(11, w, h, s, 0, 0);
 endfunction
+
+// The walker's entry: its state at a load, which scanline_walker_entry forms from the walker part
+// of a setup record as the record is pushed into the record FIFO (docs/cycle-model.md, "Record
+// FIFO"), so that the walker's load takes registers only. Fields from the least significant bit up:
+//   0 x0 (X_BITS)  1 x1 (X_BITS)  2 y0 (Y_BITS)  3 y1 (Y_BITS)  4 last_offset x1 - x0 (X_BITS)
+//   5 left (3: edge k's step_x > 0)  6 right (3: step_x < 0)
+//   7 step_y (3 x EDGE_STEP_Y_BITS)  8 span_step_quot (3 x EDGE_STEP_Y_BITS)
+//   9 span_step_rem (3 x SPAN_REM_BITS)  10 span_step_rem_less: span_step_rem - d (3 x REM_BITS)
+//  11 edge_row: the edge values at x0 of the second row (3 x EDGE_BITS)
+//  12 quot, 13 rem_less: the span DDA of the second row (3 x EDGE_BITS, 3 x REM_BITS; rem - d)
+//  14 span_start, 15 span_end (X_BITS each), 16 row_empty (1): the first row's span
+//  17 enter_left (1: a left edge bounds the first row's span start), 18 enter_slot (1: its slot)
+//  19 left_carry (2: each left-edge slot's DDA carry into the second row)
+// with d = |step_x| and REM_BITS = SPAN_REM_BITS + 1 (signed: rem - d lies in [-d, -1]).
+/* verilator lint_off UNUSEDPARAM */
+localparam integer RS_ENTRY_X0 = 0, RS_ENTRY_X1 = 1, RS_ENTRY_Y0 = 2, RS_ENTRY_Y1 = 3, RS_ENTRY_LAST_OFFSET = 4,
+                   RS_ENTRY_LEFT = 5, RS_ENTRY_RIGHT = 6, RS_ENTRY_STEP_Y = 7, RS_ENTRY_STEP_QUOT = 8,
+                   RS_ENTRY_STEP_REM = 9, RS_ENTRY_STEP_REM_LESS = 10, RS_ENTRY_EDGE_ROW = 11, RS_ENTRY_QUOT = 12,
+                   RS_ENTRY_REM_LESS = 13, RS_ENTRY_SPAN_START = 14, RS_ENTRY_SPAN_END = 15,
+                   RS_ENTRY_ROW_EMPTY = 16, RS_ENTRY_ENTER_LEFT = 17, RS_ENTRY_ENTER_SLOT = 18,
+                   RS_ENTRY_LEFT_CARRY = 19;
+/* verilator lint_on UNUSEDPARAM */
+
+function automatic integer rs_entry_field_bits(input integer field, input integer w, input integer h, input integer s);
+  case (field)
+    0, 1, 4, 14, 15: rs_entry_field_bits = rs_ubits32(w - 1);
+    2, 3: rs_entry_field_bits = rs_ubits32(h - 1);
+    5, 6: rs_entry_field_bits = 3;
+    7, 8: rs_entry_field_bits = 3 * rs_edge_step_y_bits(w, s);
+    9: rs_entry_field_bits = 3 * rs_span_rem_bits(h, s);
+    10, 13: rs_entry_field_bits = 3 * (rs_span_rem_bits(h, s) + 1);
+    11, 12: rs_entry_field_bits = 3 * rs_edge_bits(w, h, s);
+    19: rs_entry_field_bits = 2;
+    default: rs_entry_field_bits = 1;  // 16, 17, 18
+  endcase
+endfunction
+
+// The field's least significant bit; rs_entry_lsb(20, ...) is the entry's width.
+function automatic integer rs_entry_lsb(input integer field, input integer w, input integer h, input integer s);
+  integer f;
+  begin
+    rs_entry_lsb = 0;
+    for (f = 0; f < field; f = f + 1) rs_entry_lsb = rs_entry_lsb + rs_entry_field_bits(f, w, h, s);
+  end
+endfunction

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Formal proofs of RTL units with stock yosys `sat` (docs/robustness.md). Each proof copies one
-# unit from rtl/ into a temporary folder with its property files from tests/formal/ included at
-# the end of the module, sets small parameters (the RTL is width-generic) and runs `sat`:
+# Formal proofs of RTL units with stock yosys `sat` (docs/robustness.md). Each proof copies rtl/
+# into a temporary folder, includes the unit's property files from tests/formal/ at the end of the
+# module, sets small parameters (the RTL is width-generic) and runs `sat`:
 #   z_adder_recurrence  plane_register: the Z adder's recurrence equals the absolute form
 #                       (temporal induction: any number of steps)
 #   walker_edges        scanline_walker: bbox coverage (from the span DDA) is the edge values' sign
@@ -10,7 +10,7 @@
 #                       (bounded: 14 cycles)
 #   zbuffer_hazard      zbuffer: input buffer order, read-after-write hazard logic, result timing,
 #                       every read sees all earlier writes (bounded: 10 cycles, latencies 1..4)
-# With --mutants, each proof instead runs on a copy of its unit with one deliberate bug (a
+# With --mutants, each proof instead runs with one deliberate bug in its unit or a unit it uses (a
 # sed substitution that must apply) and must FAIL with a counterexample.
 # Usage: scripts/formal.sh [--mutants] [PROOF ...]   exit 0: every proof (or every mutant's
 # failure) as expected; 1 otherwise.
@@ -29,15 +29,17 @@ done
 all=(z_adder_recurrence walker_edges walker_bounds zbuffer_hazard)
 [ ${#proofs[@]} -eq 0 ] && proofs=("${all[@]}")
 
-# Per proof: unit | property files | parameters | sat mode | the mutant's sed substitution.
-declare -A unit includes params mode mutation
-while IFS='|' read -r name u inc par m mut; do
-  unit[$name]=$u includes[$name]=$inc params[$name]=$par mode[$name]=$m mutation[$name]=$mut
+# Per proof: unit | property files | parameters | sat mode | the file its mutant edits | the
+# mutant's sed substitution. The unit is read with every other file of rtl/ (the units it
+# instantiates), so that a mutant may edit any of them.
+declare -A unit includes params mode mutated mutation
+while IFS='|' read -r name u inc par m file mut; do
+  unit[$name]=$u includes[$name]=$inc params[$name]=$par mode[$name]=$m mutated[$name]=$file mutation[$name]=$mut
 done <<'TABLE'
-z_adder_recurrence|plane_register|plane_register_recurrence.svh|REG_BITS 6 GUARD_BITS 2 OUT_BITS 3|-tempinduct|s/value_q <= value_q + step_x_q;/value_q <= value_q + step_y_q;/
-walker_edges|scanline_walker|scanline_walker_inputs.svh scanline_walker_edges.svh|WIDTH 2 HEIGHT 2 SUBPIXEL_BITS 1|-seq 5|s/frag_x >= span_start_q && frag_x <= x_end_q/frag_x > span_start_q \&\& frag_x <= x_end_q/
-walker_bounds|scanline_walker|scanline_walker_inputs.svh scanline_walker_bounds.svh|WIDTH 4 HEIGHT 3 SUBPIXEL_BITS 1|-seq 14|s/({X_BITS{hi_pick_3}} \& src_x1)/({X_BITS{hi_pick_3}} \& (src_x1 + 1'b1))/
-zbuffer_hazard|zbuffer|zbuffer_hazard.svh|WIDTH 2 HEIGHT 2 Z_BITS 2 MAX_MEMORY_LATENCY 4|-seq 10|s/(issued_q \&\& ahead_q\[head_q\])/1'b0/
+z_adder_recurrence|plane_register|plane_register_recurrence.svh|REG_BITS 6 GUARD_BITS 2 OUT_BITS 3|-tempinduct|plane_register|s/value_q <= value_q + step_x_q;/value_q <= value_q + step_y_q;/
+walker_edges|scanline_walker|scanline_walker_inputs.svh scanline_walker_edges.svh|WIDTH 2 HEIGHT 2 SUBPIXEL_BITS 1|-seq 5|scanline_walker|s/frag_x + 1'b1 >= span_start_q/frag_x + 1'b1 > span_start_q/
+walker_bounds|scanline_walker|scanline_walker_inputs.svh scanline_walker_bounds.svh|WIDTH 4 HEIGHT 3 SUBPIXEL_BITS 1|-seq 14|span_bounds|s/({X_BITS{hi_pick_3}} \& x1)/({X_BITS{hi_pick_3}} \& (x1 + 1'b1))/
+zbuffer_hazard|zbuffer|zbuffer_hazard.svh|WIDTH 2 HEIGHT 2 Z_BITS 2 MAX_MEMORY_LATENCY 4|-seq 10|zbuffer|s/(issued_q \&\& ahead_q\[head_q\])/1'b0/
 TABLE
 
 work="$(mktemp -d)"
@@ -48,16 +50,20 @@ for proof in "${proofs[@]}"; do
   top="${unit[$proof]}"
   dir="$work/$proof"
   mkdir -p "$dir"
-  source_file="$root/rtl/$top.sv"
+  cp "$root"/rtl/*.sv "$dir/"
   if [ $mutants -eq 1 ]; then
-    sed "${mutation[$proof]}" "$source_file" > "$dir/mutant.sv"
-    if cmp -s "$source_file" "$dir/mutant.sv"; then
-      echo "formal.sh: the mutation of $proof no longer applies to rtl/$top.sv" >&2
+    edited="$dir/${mutated[$proof]}.sv"
+    cp "$edited" "$dir/original.sv.txt"
+    sed -i "${mutation[$proof]}" "$edited"
+    if cmp -s "$dir/original.sv.txt" "$edited"; then
+      echo "formal.sh: the mutation of $proof no longer applies to rtl/${mutated[$proof]}.sv" >&2
       status=1
       continue
     fi
-    source_file="$dir/mutant.sv"
   fi
+  source_file="$dir/$top.sv"
+  cp "$source_file" "$dir/unit.sv.txt"
+  source_file="$dir/unit.sv.txt"
   # The unit with `include lines for its properties before its last endmodule.
   lines=""
   for f in ${includes[$proof]}; do lines+="\`include \"$f\""$'\n'; done
@@ -67,7 +73,7 @@ for proof in "${proofs[@]}"; do
   set -- ${params[$proof]}
   while [ $# -gt 0 ]; do chparam+=" -chparam $1 $2"; shift 2; done
   # -defer: elaborate at the small parameters only (the defaults build 640 x 480 memories).
-  script="read_verilog -defer -sv -formal -mem2reg -I$root/rtl -I$root/tests/formal $dir/$top.sv;"
+  script="read_verilog -defer -sv -formal -mem2reg -I$root/rtl -I$root/tests/formal $dir/*.sv;"
   script+=" hierarchy -top $top$chparam; prep -top $top -flatten; async2sync; dffunmap;"
   script+=" sat ${mode[$proof]} -prove-asserts -set-assumes -set-init-zero -show-public -verify $top"
   start=$(date +%s)
@@ -85,9 +91,9 @@ for proof in "${proofs[@]}"; do
     fi
   else
     if [ $failed_proof -eq 1 ]; then
-      echo "formal: $proof mutant caught ($top: ${mutation[$proof]}, ${seconds} s)"
+      echo "formal: $proof mutant caught (${mutated[$proof]}: ${mutation[$proof]}, ${seconds} s)"
     else
-      echo "formal: $proof mutant NOT caught ($top: ${mutation[$proof]}, ${seconds} s)"
+      echo "formal: $proof mutant NOT caught (${mutated[$proof]}: ${mutation[$proof]}, ${seconds} s)"
       tail -20 "$dir/yosys.log"
       status=1
     fi

@@ -38,7 +38,8 @@ RTL = os.path.join(ROOT, "rtl")  # --rtl-dir
 UNITS = {
     "plane_register": "one plane register at the depth plane's widths",
     "triangle_setup": "setup unit",
-    "scanline_walker": "scanline walker",
+    "scanline_walker_entry": "the walker's entry stage before the record FIFO (first row's span, second row's DDA)",
+    "scanline_walker": "scanline walker (registers' side; its entry comes through the record FIFO)",
     "z_adder": "Z adder (depth and colour plane registers)",
     "zbuffer": "z-buffer control and in-flight ring; frame memory outside (memory port)",
     "zbuffer_memory": "frame memory on chip (depth/colour words; written bitmaps; read-back)",

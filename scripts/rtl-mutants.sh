@@ -12,7 +12,8 @@ shift
 mutants=("$@")
 [ ${#mutants[@]} -eq 0 ] && mutants=(bbox_coverage walker_backpressure walker_no_overlap walker_first_row_span
                                      walker_empty_row walker_dda_carry walker_record_carry walker_lower_bound_order
-                                     walker_bounds_cross walker_last_offset
+                                     walker_bounds_cross walker_last_offset entry_quot_carry entry_left_carry_1
+                                     walker_covered_first entry_covered_first
                                      z_adder_first_row z_adder_carry z_adder_slot_carry
                                      z_adder_slot_step walker_enter_slot walker_left_carry_1 hazard_stall
                                      hazard_window_short hazard_address_bit ring_read_slot hazard_last_read
@@ -26,8 +27,8 @@ mutants=("$@")
 declare -A file from to params check
 max_latency=8
 file[bbox_coverage]=scanline_walker.sv
-from[bbox_coverage]='frag_x >= span_start_q && frag_x <= x_end_q'
-to[bbox_coverage]='frag_x >= span_start_q && frag_x < x_end_q'  # bbox: each row's last covered pixel dropped
+from[bbox_coverage]='frag_x + 1'"'"'b1 <= x_end_q;'
+to[bbox_coverage]='frag_x + 1'"'"'b1 < x_end_q;'  # bbox: each row's last covered pixel (after its first) dropped
 file[walker_backpressure]=scanline_walker.sv
 from[walker_backpressure]='wire advance = walking_q && (frag_ready || !frag_valid);'
 to[walker_backpressure]='wire advance = walking_q;'  # the walker ignores the z-buffer's back-pressure
@@ -39,28 +40,41 @@ from[walker_no_overlap]='assign in_ready = !walking_q || last;'
 to[walker_no_overlap]='assign in_ready = !walking_q;'  # the next record waits for a cycle of its own
 params[walker_no_overlap]="-GSETUP_INTERVAL=4"  # records waiting in the FIFO: loads overlap
 file[walker_first_row_span]=scanline_walker.sv
-from[walker_first_row_span]='assign src_quot[g] = use_record ? in_span_quot[g*EDGE_BITS +: EDGE_BITS] : quot_q[g];'
-to[walker_first_row_span]='assign src_quot[g] = quot_q[g];'  # the first row's span from the last triangle's DDA
+from[walker_first_row_span]='x_end_q <= in_entry[LSB_SPAN_END +: X_BITS];'
+to[walker_first_row_span]='x_end_q <= span_end;'  # the first row's span end from the last triangle's DDA
 file[walker_empty_row]=scanline_walker.sv
 from[walker_empty_row]='row_empty_q <= !span_nonempty;'
 to[walker_empty_row]='row_empty_q <= 1'"'"'b0;'  # an empty row presents a fragment
 # The span's one-level compares and the DDA's carry.
 file[walker_dda_carry]=scanline_walker.sv
-from[walker_dda_carry]='wire registers_carry = !registers_rem_sum[REM_BITS-1];'
-to[walker_dda_carry]='wire registers_carry = !registers_rem_sum[REM_BITS-1] && |registers_rem_sum;'  # no carry when rem + step_rem == d
-file[walker_record_carry]=scanline_walker.sv
-from[walker_record_carry]='in_minus_d_less << 1, {2{!in_step_x_negative}}'
-to[walker_record_carry]='in_minus_d_less << 1, {1'"'"'b0, !in_step_x_negative}'  # the first row's remainder after a carry one too high
-file[walker_lower_bound_order]=scanline_walker.sv
+from[walker_dda_carry]='assign dda_carry[g] = !rem_sum[REM_BITS-1];'
+to[walker_dda_carry]='assign dda_carry[g] = !rem_sum[REM_BITS-1] && |rem_sum;'  # no carry when rem + step_rem == d
+file[walker_record_carry]=scanline_walker_entry.sv
+from[walker_record_carry]='minus_d_less << 1, {2{!step_x_negative}}'
+to[walker_record_carry]='minus_d_less << 1, {1'"'"'b0, !step_x_negative}'  # the second row's remainder after a carry one too high
+file[walker_lower_bound_order]=span_bounds.sv
 from[walker_lower_bound_order]='(lo_small[0] && lo_small[1] && low[0] <= low[1])'
 to[walker_lower_bound_order]='(lo_small[0] && lo_small[1] && low[0] >= low[1])'  # the smaller of two left-edge bounds starts the span
-file[walker_bounds_cross]=scanline_walker.sv
+file[walker_bounds_cross]=span_bounds.sv
 from[walker_bounds_cross]='hi_none[h] || !sum[X_BITS+1]'
 to[walker_bounds_cross]='hi_none[h] || 1'"'"'b1'  # a left bound past a right one does not empty the row
-file[walker_last_offset]=scanline_walker.sv
-from[walker_last_offset]='nonnegative_sum3(in_x1_wide, in_minus_x0_less_1, in_minus_hi_less_1'
-to[walker_last_offset]='nonnegative_sum3(in_x1_wide + 1'"'"'b1, in_minus_x0_less_1, in_minus_hi_less_1'  # the first row's right bound may lie one past the box
+file[walker_last_offset]=scanline_walker_entry.sv
+from[walker_last_offset]='sum3_offset(x1_wide, minus_x0_less_1, ~{2'"'"'b00'
+to[walker_last_offset]='sum3_offset(x1_wide + 1'"'"'b1, minus_x0_less_1, ~{2'"'"'b00'  # the first row's right bound may lie one past the box
 # (one short instead, hi < x1 - x0, is an equivalent mutant: at hi = x1 - x0 both ends are x1)
+# The entry stage's second row and the walker's bbox coverage a candidate ahead.
+file[entry_quot_carry]=scanline_walker_entry.sv
+from[entry_quot_carry]='!(left[g] || right[g]) ? quot_k : dda_carry[g] ? quot_carried : quot_sum;'
+to[entry_quot_carry]='!(left[g] || right[g]) ? quot_k : quot_sum;'  # the second row's quotient ignores the first step's carry
+file[entry_left_carry_1]=scanline_walker_entry.sv
+from[entry_left_carry_1]='wire [1:0] left_carry = {left[0] && left[1] ? dda_carry[1] : dda_carry[2],'
+to[entry_left_carry_1]='wire [1:0] left_carry = {dda_carry[2],'  # the first row's slot 1 always takes edge 2's carry
+file[walker_covered_first]=scanline_walker.sv
+from[walker_covered_first]='covered_q <= span_nonempty && lo_from_x0;'
+to[walker_covered_first]='covered_q <= span_nonempty;'  # bbox: x0 covered on every later non-empty row
+file[entry_covered_first]=scanline_walker.sv
+from[entry_covered_first]='covered_q <= !in_entry[LSB_ROW_EMPTY] && !in_entry[LSB_ENTER_LEFT];'
+to[entry_covered_first]='covered_q <= !in_entry[LSB_ROW_EMPTY];'  # bbox: x0 covered on a non-empty first row
 file[z_adder_first_row]=plane_register.sv
 from[z_adder_first_row]='value_q <= enter_left ? record_left[enter_slot] : start;'
 to[z_adder_first_row]='value_q <= start;'  # the first row's planes not moved to its span start
@@ -74,11 +88,12 @@ to[z_adder_slot_carry]='assign entered[j] = along_q[j];'  # a carried edge's spa
 file[z_adder_slot_step]=plane_register.sv
 from[z_adder_slot_step]='along_q[k] <= along_q[k] + (carry_q[k] ? along_step_carry_q[k] : along_step_q[k]);'
 to[z_adder_slot_step]='along_q[k] <= along_q[k] + along_step_q[k];'  # a slot ignores its edge's DDA carry
-for m in walker_enter_slot walker_left_carry_1; do file[$m]=scanline_walker.sv; done
-from[walker_enter_slot]='assign adder_enter_slot = (lo_pick_1 && src_left[0]) || (lo_pick_2 && (src_left[0] || src_left[1]));'
-to[walker_enter_slot]='assign adder_enter_slot = lo_pick_1 || lo_pick_2;'  # edge 1 or 2 taken as slot 1 even when it is the first left edge
-from[walker_left_carry_1]='assign adder_left_carry[1] = src_left[0] && src_left[1] ? dda_carry[1] : dda_carry[2];'
-to[walker_left_carry_1]='assign adder_left_carry[1] = dda_carry[2];'  # slot 1 always takes edge 2's carry
+file[walker_enter_slot]=span_bounds.sv
+from[walker_enter_slot]='assign enter_slot = (lo_pick_1 && left[0]) || (lo_pick_2 && (left[0] || left[1]));'
+to[walker_enter_slot]='assign enter_slot = lo_pick_1 || lo_pick_2;'  # edge 1 or 2 taken as slot 1 even when it is the first left edge
+file[walker_left_carry_1]=scanline_walker.sv
+from[walker_left_carry_1]='assign adder_left_carry = mid_walk_q ? {left_q[0] && left_q[1] ? dda_carry[1] : dda_carry[2],'
+to[walker_left_carry_1]='assign adder_left_carry = mid_walk_q ? {dda_carry[2],'  # slot 1 always takes edge 2's carry
 file[hazard_stall]=zbuffer.sv
 from[hazard_stall]='assign mem_rd_valid = head_valid && mem_clear_done && !hazard;'
 to[hazard_stall]='assign mem_rd_valid = head_valid && mem_clear_done;'  # read-after-write stall removed

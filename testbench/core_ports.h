@@ -174,7 +174,7 @@ class TraceObserver {
   size_t next_triangle() const { return next_; }
 
   // Observes cycle `cycle`. `read_record()` returns the setup record on the rec_* wires (called in
-  // the cycle the walker takes it). Returns false when the RTL broke the protocol (out.note says how).
+  // the cycle the record is in the setup unit's output register, setup_done). Returns false when the RTL broke the protocol (out.note says how).
   template <class ReadRecord>
   bool observe(int64_t cycle, const TraceSample& s, ReadRecord&& read_record) {
     FrameStats& stats = out_.stats;
@@ -204,6 +204,7 @@ class TraceObserver {
     }
     if (s.setup_done && !in_setup_.empty()) {
       out_.triangles[size_t(in_setup_.front())].setup_done = cycle;
+      out_.setups[size_t(in_setup_.front())] = read_record();
       waiting_.push_back(in_setup_.front());
       in_setup_.pop_front();
     }
@@ -244,7 +245,6 @@ class TraceObserver {
       in_walker_ = waiting_.front();
       waiting_.pop_front();
       out_.triangles[size_t(in_walker_)].walker_load = cycle;
-      out_.setups[size_t(in_walker_)] = read_record();
     }
     if (s.walker_candidate) ++stats.candidates;
     stats.setup.busy += s.setup_busy;

@@ -128,7 +128,7 @@ CoverageCounts frame_coverage(const Profile& p, const std::vector<SnappedTriangl
     }
     hits[kGuardBandDrawn] += outside;
     hits[kGuardBandLimit] += at_limit;
-    if (seen_drawn && record.walker_load == record.setup_done && record.walker_load > previous_walker_end)
+    if (seen_drawn && record.walker_load == record.setup_done + 1 && record.walker_load > previous_walker_end)
       ++hits[kFifoEmpty];
     seen_drawn = true;
     previous_walker_end = record.walker_end;

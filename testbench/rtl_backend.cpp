@@ -186,7 +186,8 @@ Divergence divergence(int64_t triangle, const std::string& unit, const std::stri
 template <class T>
 bool differs(const T& a, const T& b) { return !(a == b); }
 
-// The setup record, field by field (setup_record.h), as the walker takes it in cycle `cycle`.
+// The setup record, field by field (setup_record.h), in the setup unit's output register in cycle
+// `cycle` (setup_done).
 // Flat shading leaves the colour planes zero on both sides, so every field is compared.
 Divergence compare_setup(int64_t t, const SetupResult& m, const SetupResult& r, int64_t cycle) {
   static const std::vector<SetupRecordField> fields = setup_record_fields(derive_widths(Profile{}), true);
@@ -224,12 +225,12 @@ Divergence compare(const RtlResult& model, const RtlResult& rtl) {
       return divergence(t, "triangle_setup", "status", to_string(m.status), to_string(r.status), m.setup_accept + 1);
     if (m.setup_done != r.setup_done)
       return divergence(t, "triangle_setup", "setup_done", to_string(m.setup_done), to_string(r.setup_done), m.setup_done);
-    if (m.walker_load != r.walker_load)
-      return divergence(t, "scanline_walker", "walker_load", to_string(m.walker_load), to_string(r.walker_load), m.walker_load);
     if (m.status == SetupStatus::Drawn && i < model.setups.size() && i < rtl.setups.size()) {
-      const Divergence d = compare_setup(t, model.setups[i], rtl.setups[i], m.walker_load);
+      const Divergence d = compare_setup(t, model.setups[i], rtl.setups[i], m.setup_done);
       if (d.found) return d;
     }
+    if (m.walker_load != r.walker_load)
+      return divergence(t, "scanline_walker", "walker_load", to_string(m.walker_load), to_string(r.walker_load), m.walker_load);
     for (int64_t n = 0;; ++n) {
       const bool has_m = next_model < model.fragments.size() && model.fragments[next_model].tri == t;
       const bool has_r = next_rtl < rtl.fragments.size() && rtl.fragments[next_rtl].tri == t;

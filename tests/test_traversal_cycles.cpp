@@ -225,7 +225,7 @@ TEST_P(CycleModel, OneTriangleCostsWhatTheRulesSay) {
     ASSERT_EQ(r.status, SetupStatus::Drawn);
     const int64_t setup_cycles = timing.drawn_latency + 1;  // accept .. output register
     EXPECT_EQ(r.setup_done, setup_cycles - 1);
-    EXPECT_EQ(r.walker_load, r.setup_done);
+    EXPECT_EQ(r.walker_load, r.setup_done + 1);  // at the record FIFO's head
     // The walker was idle: its load is a cycle of its own.
     const int64_t walk = expected_walk_cycles(t, p);
     EXPECT_EQ(r.walker_end - r.walker_load, walk);
@@ -322,7 +322,7 @@ TEST_P(CycleModel, HandOffChainPipelinedSetup) {
           credits.push_back({accept + 1, accept + 1});
           continue;
         }
-        const int64_t load = std::max(done, walker_end_prev);
+        const int64_t load = std::max(done + 1, walker_end_prev);  // at the FIFO's head after done
         ASSERT_EQ(r.walker_load, load);
         ASSERT_EQ(r.walker_end, load + expected_walk_cycles(t, p));
         walker_end_prev = r.walker_end;
@@ -381,7 +381,7 @@ TEST_P(CycleModel, HandOffChainOverAScene) {
         continue;
       }
       ASSERT_EQ(r.setup_done, accept + setup_cycles - 1);
-      const int64_t load = std::max(r.setup_done, walker_end_prev);
+      const int64_t load = std::max(r.setup_done + 1, walker_end_prev);  // at the FIFO's head after setup_done
       ASSERT_EQ(r.walker_load, load);
       const int64_t walk = expected_walk_cycles(t, p);
       ASSERT_EQ(r.walker_end, load + walk);

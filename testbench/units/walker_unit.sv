@@ -1,5 +1,5 @@
-// The walker and the Z adder as rastersim_core joins them, alone: the record comes from the test
-// (packed as rs_rec_lsb lays it out), frag_ready is the test's script. Verilated for the unit test
+// The walker (with its entry stage) and the Z adder as rastersim_core joins them, alone: the record
+// comes from the test (packed as rs_rec_lsb lays it out), frag_ready is the test's script. Verilated for the unit test
 // of the walk against the model's (tests/units/test_walker_unit.cpp).
 module walker_unit #(
   parameter integer WIDTH = 64,
@@ -39,10 +39,14 @@ module walker_unit #(
   wire adder_step_x, adder_next_row, adder_row_enter, adder_enter_left, adder_enter_slot;
   wire [1:0] adder_left_carry;
 
+  // The walker's entry formed from the record in the cycle the walker takes it (rastersim_core
+  // forms it as the record enters the record FIFO, a cycle or more before).
+  wire [rs_entry_lsb(20, WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] entry;
+  scanline_walker_entry #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS)) walker_entry (
+    .record(in_record[rs_rec_walker_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0]), .entry(entry));
   scanline_walker #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS)) walker (
     .clk(clk), .rst(rst), .cfg_traversal(cfg_traversal),
-    .in_valid(in_valid), .in_ready(in_ready),
-    .in_record(in_record[rs_rec_walker_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0]),
+    .in_valid(in_valid), .in_ready(in_ready), .in_entry(entry),
     .adder_load(load), .adder_step_x(adder_step_x), .adder_next_row(adder_next_row),
     .adder_row_enter(adder_row_enter), .adder_enter_left(adder_enter_left), .adder_enter_slot(adder_enter_slot),
     .adder_left_carry(adder_left_carry),

@@ -177,7 +177,7 @@ std::vector<VectorFile> vector_files(const Layouts& l) {
   return {
       {"commands.hex", &l.commands, "input: one triangle command per line, in submission order"},
       {"triangles.hex", &l.triangles, "expected: one transaction record per triangle (decision and cycles)"},
-      {"setup.hex", &l.setup, "expected: the setup -> walker record of every drawn triangle, in order"},
+      {"setup.hex", &l.setup, "expected: the setup record of every drawn triangle (in setup_done), in order"},
       {"fragments.hex", &l.fragments, "expected: every fragment the z-buffer takes, in order"},
       {"depth.hex", &l.depth, "expected: the final depth memory, one word per pixel"},
       {"color.hex", &l.color, "expected: the final colour memory, one word per pixel"},

@@ -26,7 +26,7 @@
 //   +cycle_bound=N    abandon the frame after N cycles (default 4 CYCLES + 1000)
 //
 // Compile-time options:
-//   RS_NO_SETUP_RECORD  a port without the setup -> walker record wires (RS_RECORD_PATH.rec_*):
+//   RS_NO_SETUP_RECORD  a port without the setup unit's record wires (RS_RECORD_PATH.rec_*):
 //                       setup.hex is skipped ("N passed, M failed, K skipped")
 //   RS_RECORD_PATH      where the record wires are (default dut.core; dut with RS_EXTERNAL_MEMORY)
 //   RS_EXTERNAL_MEMORY  the package tests rastersim_core with rastersim_memory_model.v on its memory
@@ -287,7 +287,7 @@ module rastersim_vectors_tb;
     end
   endtask
 
-  // The record the walker takes, in the setup.hex layout (field order of docs/vectors.md).
+  // The record the setup unit makes, in the setup.hex layout (field order of docs/vectors.md).
   reg [SETUP_BITS-1:0] record_word;
   integer record_field;
   task put_record_field;
@@ -619,20 +619,21 @@ module rastersim_vectors_tb;
         end
         if (trace_setup_done && n_done < n_drawn && n_done < DRAWN_SLOTS) begin
           seen_done[drawn_tri[n_done]] = cycle;
+          // The record, in the setup unit's output register in setup_done.
+          if (seen_setup_count < DRAWN_SLOTS) begin
+`ifndef RS_NO_SETUP_RECORD
+            observe_record(drawn_tri[n_done]);
+            seen_setups[seen_setup_count] = record_word;
+`endif
+            seen_setup_tri[seen_setup_count] = drawn_tri[n_done];
+          end
+          seen_setup_count = seen_setup_count + 1;
           n_done = n_done + 1;
         end
         if (trace_walker_load && n_loaded < n_done) begin
           in_setup = drawn_tri[n_loaded];
           n_loaded = n_loaded + 1;
           seen_load[in_setup] = cycle;
-          if (seen_setup_count < DRAWN_SLOTS) begin
-`ifndef RS_NO_SETUP_RECORD
-            observe_record(in_setup);
-            seen_setups[seen_setup_count] = record_word;
-`endif
-            seen_setup_tri[seen_setup_count] = in_setup;
-          end
-          seen_setup_count = seen_setup_count + 1;
         end
         if (trace_frag_valid && trace_frag_ready) begin
           if (seen_fragment_count < OBSERVED_SLOTS) begin
@@ -820,20 +821,20 @@ module rastersim_vectors_tb;
     end
     context_text = "";
 
-    // Setup records, in the order the walker took them.
+    // Setup records, in the order the setup unit made them.
     for (d = 0; d < DRAWN; d = d + 1) begin
 `ifdef RS_NO_SETUP_RECORD
       skipped = skipped + 1;
 `else
       t = field_of(F_SETUP, setups[d], 0);
-      begin_vector(t >= 0 && t < TRIANGLES ? earliest(field_of(F_TRIANGLES, triangles[t], T_LOAD),
-                                            seen_setup_tri[d] >= 0 ? seen_load[seen_setup_tri[d]] : -1)
+      begin_vector(t >= 0 && t < TRIANGLES ? earliest(field_of(F_TRIANGLES, triangles[t], T_DONE),
+                                            seen_setup_tri[d] >= 0 ? seen_done[seen_setup_tri[d]] : -1)
                                  : NO_CYCLE, 1'b0);
       if (setups[d] !== seen_setups[d]) begin
         if (d < seen_setup_count)
           $sformat(context_text, " (triangle %0d)", t);
         else
-          $sformat(context_text, " (triangle %0d; the walker took only %0d records)", t, seen_setup_count);
+          $sformat(context_text, " (triangle %0d; the setup unit made only %0d records)", t, seen_setup_count);
         for (k = 0; k < SETUP_FIELDS; k = k + 1)
           compare("setup.hex", d, setup_field_name(k), field_of(F_SETUP, setups[d], k), field_of(F_SETUP, seen_setups[d], k));
       end
@@ -842,7 +843,7 @@ module rastersim_vectors_tb;
 `endif
     end
     context_text = "";
-    if (seen_setup_count > DRAWN) unexpected(NO_CYCLE - 1, "setup.hex", "the walker took more setup records than expected");
+    if (seen_setup_count > DRAWN) unexpected(NO_CYCLE - 1, "setup.hex", "the setup unit made more records than expected");
 
     // The final memories: a word at a pixel where a fragment differed follows from that (functional).
     for (a = 0; a < WORDS; a = a + 1) begin

@@ -43,14 +43,14 @@
     if (load) begin
       for (f_r = 0; f_r < 3; f_r = f_r + 1) begin : record_dda
         reg signed [F_WIDE-1:0] sx, d, start, step_y, quot, rem, step_quot, step_rem;
-        sx = $signed(in_edge_step_x[f_r*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS]);
+        sx = $signed(f_rec_edge_step_x[f_r*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS]);
         d = sx < 0 ? -sx : sx;
-        start = $signed(in_edge_start[f_r*EDGE_BITS +: EDGE_BITS]);
-        step_y = $signed(in_edge_step_y[f_r*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]);
-        quot = $signed(in_span_quot[f_r*EDGE_BITS +: EDGE_BITS]);
-        rem = $signed({1'b0, in_span_rem[f_r*SPAN_REM_BITS +: SPAN_REM_BITS]});
-        step_quot = $signed(in_span_step_quot[f_r*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]);
-        step_rem = $signed({1'b0, in_span_step_rem[f_r*SPAN_REM_BITS +: SPAN_REM_BITS]});
+        start = $signed(f_rec_edge_start[f_r*EDGE_BITS +: EDGE_BITS]);
+        step_y = $signed(f_rec_edge_step_y[f_r*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]);
+        quot = $signed(f_rec_span_quot[f_r*EDGE_BITS +: EDGE_BITS]);
+        rem = $signed({1'b0, f_rec_span_rem[f_r*SPAN_REM_BITS +: SPAN_REM_BITS]});
+        step_quot = $signed(f_rec_span_step_quot[f_r*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]);
+        step_rem = $signed({1'b0, f_rec_span_step_rem[f_r*SPAN_REM_BITS +: SPAN_REM_BITS]});
         if (sx == 0) assume(quot == 0 && rem == 0 && step_quot == 0 && step_rem == 0);
         else assume(start == times_small(d[EDGE_STEP_X_BITS:0], quot) + rem && rem < d
                     && step_y == times_small(d[EDGE_STEP_X_BITS:0], step_quot) + step_rem && step_rem < d);
@@ -60,14 +60,14 @@
   // Every edge value of the box fits (they are linear: the four corners suffice), assumed once, at
   // the load, of the record (f_* hold it from the next cycle on).
   function automatic signed [F_WIDE-1:0] record_at(input integer k, input [X_BITS-1:0] x, input [Y_BITS-1:0] y);
-    record_at = edge_at($signed(in_edge_start[k*EDGE_BITS +: EDGE_BITS]),
-                        $signed(in_edge_step_x[k*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS]),
-                        $signed(in_edge_step_y[k*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]), in_x0, in_y0, x, y);
+    record_at = edge_at($signed(f_rec_edge_start[k*EDGE_BITS +: EDGE_BITS]),
+                        $signed(f_rec_edge_step_x[k*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS]),
+                        $signed(f_rec_edge_step_y[k*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]), f_rec_x0, f_rec_y0, x, y);
   endfunction
   genvar f_g;
   for (f_g = 0; f_g < 3; f_g = f_g + 1) begin : f_fit
-    always @* if (load) assume(fits_edge_bits(record_at(f_g, in_x0, in_y0)) && fits_edge_bits(record_at(f_g, in_x1, in_y0))
-                               && fits_edge_bits(record_at(f_g, in_x0, in_y1)) && fits_edge_bits(record_at(f_g, in_x1, in_y1)));
+    always @* if (load) assume(fits_edge_bits(record_at(f_g, f_rec_x0, f_rec_y0)) && fits_edge_bits(record_at(f_g, f_rec_x1, f_rec_y0))
+                               && fits_edge_bits(record_at(f_g, f_rec_x0, f_rec_y1)) && fits_edge_bits(record_at(f_g, f_rec_x1, f_rec_y1)));
   end
 
   wire signed [F_WIDE-1:0] f_at_pixel [0:2];

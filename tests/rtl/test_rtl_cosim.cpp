@@ -198,11 +198,14 @@ TEST(RtlCycles, WorkedExampleOfTheCycleModel) {
   const int setup_cycles = 1 + 369 + 2 * w.delta_bits + 6 * w.coord_bits + 18 * (w.edge_bits + 3) + 12 * p.z_bits +
                            12 * w.guard_bits + 11 * p.subpixel_bits + 16 * product_bits;
   ASSERT_EQ(r.rtl.fragments.size(), 2u);
-  EXPECT_EQ(r.rtl.triangles[0].walker_load, setup_cycles - 1);
-  EXPECT_EQ(r.rtl.fragments[0].cycle, setup_cycles);  // load, pixel (no row cycle)
-  EXPECT_EQ(r.rtl.triangles[1].setup_accept, setup_cycles);
-  EXPECT_EQ(r.rtl.triangles[1].setup_done, 2 * setup_cycles - 1);
-  EXPECT_EQ(r.rtl.fragments[1].cycle, 2 * setup_cycles);  // no hazard: long after the write
+  EXPECT_EQ(r.rtl.triangles[0].setup_done, setup_cycles - 1);
+  EXPECT_EQ(r.rtl.triangles[0].walker_load, setup_cycles);  // at the record FIFO's head
+  EXPECT_EQ(r.rtl.fragments[0].cycle, setup_cycles + 1);  // load, pixel (no row cycle)
+  // The one credit is held through the load and free in the next cycle.
+  EXPECT_EQ(r.rtl.triangles[1].setup_accept, setup_cycles + 1);
+  EXPECT_EQ(r.rtl.triangles[1].setup_done, 2 * setup_cycles);
+  EXPECT_EQ(r.rtl.triangles[1].walker_load, 2 * setup_cycles + 1);
+  EXPECT_EQ(r.rtl.fragments[1].cycle, 2 * setup_cycles + 2);  // no hazard: long after the write
   // Taken, read in the next cycle, written L cycles later.
   EXPECT_EQ(r.rtl.stats.cycles, r.rtl.fragments[1].cycle + 1 + p.memory_latency + 1);
 }
@@ -224,16 +227,17 @@ TEST(RtlCycles, PipelinedSetupWorkedExample) {
                                (std::min(w.z_reg_bits, w.edge_bits) + 15) / 16);
   ASSERT_EQ(r.rtl.fragments.size(), 2u);
   EXPECT_EQ(r.rtl.triangles[0].setup_done, latency);
-  EXPECT_EQ(r.rtl.fragments[0].cycle, latency + 1);  // load, pixel (no row cycle)
+  EXPECT_EQ(r.rtl.triangles[0].walker_load, latency + 1);  // at the record FIFO's head
+  EXPECT_EQ(r.rtl.fragments[0].cycle, latency + 2);  // load, pixel (no row cycle)
   EXPECT_EQ(r.rtl.triangles[1].setup_accept, 4);
   EXPECT_EQ(r.rtl.triangles[1].setup_done, 4 + latency);
-  // The walker is idle after latency + 1; the record comes one slot after the first one's.
-  EXPECT_EQ(r.rtl.triangles[1].walker_load, 4 + latency);
-  // Offered in latency + 5 and taken at once (the first fragment was read in latency + 2); its
+  // The walker is idle after latency + 2; the record comes one slot after the first one's.
+  EXPECT_EQ(r.rtl.triangles[1].walker_load, 5 + latency);
+  // Offered in latency + 6 and taken at once (the first fragment was read in latency + 3); its
   // read held by the hazard until L + 1 cycles after the first's, then written L cycles later.
-  EXPECT_EQ(r.rtl.fragments[1].cycle, latency + 5);
-  const int64_t second_read = latency + 2 + p.memory_latency + 1;
-  EXPECT_EQ(r.rtl.stats.zbuffer.stall, second_read - (latency + 6));
+  EXPECT_EQ(r.rtl.fragments[1].cycle, latency + 6);
+  const int64_t second_read = latency + 3 + p.memory_latency + 1;
+  EXPECT_EQ(r.rtl.stats.zbuffer.stall, second_read - (latency + 7));
   EXPECT_EQ(r.rtl.stats.walker.stall, 0);
   EXPECT_EQ(r.rtl.stats.cycles, second_read + p.memory_latency + 1);
 }
@@ -258,7 +262,7 @@ TEST(RtlCompare, ReportsTheFirstDivergenceAsASentence) {
   EXPECT_EQ(d.actual, std::to_string(f.z));
   EXPECT_NE(d.sentence.find("triangle " + std::to_string(f.tri)), std::string::npos) << d.sentence;
 
-  // A setup field: reported by the setup unit in the cycle the walker took the record.
+  // A setup field: reported by the setup unit in the cycle its record was in the output register.
   size_t drawn = 0;
   while (drawn < r.rtl.triangles.size() && r.rtl.triangles[drawn].status != SetupStatus::Drawn) ++drawn;
   ASSERT_LT(drawn, r.rtl.triangles.size());
@@ -268,7 +272,7 @@ TEST(RtlCompare, ReportsTheFirstDivergenceAsASentence) {
   EXPECT_EQ(s.unit, "triangle_setup");
   EXPECT_EQ(s.field, "record depth_step_x");
   EXPECT_EQ(s.triangle, int64_t(drawn));
-  EXPECT_EQ(s.cycle, r.model.triangles[drawn].walker_load);
+  EXPECT_EQ(s.cycle, r.model.triangles[drawn].setup_done);
 
   RtlResult late = r.rtl;
   late.stats.cycles += 1;

@@ -45,7 +45,7 @@ localparam integer TRIANGLES = 11;  // commands.hex, triangles.hex
 localparam integer DRAWN = 11;  // setup.hex
 localparam integer FRAGMENTS = 284;  // fragments.hex
 localparam integer WORDS = 192;  // depth.hex, color.hex: WIDTH * HEIGHT
-localparam integer CYCLES = 639;  // the frame's cycles (frame.hex)
+localparam integer CYCLES = 640;  // the frame's cycles (frame.hex)
 
 // Word layouts: each field's slot (lowest bit, slot bits), own width and signedness.
 localparam integer MAX_WORD_BITS = 1016;

@@ -45,7 +45,7 @@ localparam integer TRIANGLES = 146;  // commands.hex, triangles.hex
 localparam integer DRAWN = 106;  // setup.hex
 localparam integer FRAGMENTS = 8103;  // fragments.hex
 localparam integer WORDS = 1536;  // depth.hex, color.hex: WIDTH * HEIGHT
-localparam integer CYCLES = 8341;  // the frame's cycles (frame.hex)
+localparam integer CYCLES = 8342;  // the frame's cycles (frame.hex)
 
 // Word layouts: each field's slot (lowest bit, slot bits), own width and signedness.
 localparam integer MAX_WORD_BITS = 1168;
