@@ -5,7 +5,8 @@
 # bitstream with the package's build_selftest_hx8k.sh (yosys, nextpnr-ice40 seed 1, icepack) and
 # fails unless it fits the device and its Fmax is at least MIN_MHZ (the documented figure).
 # Usage: scripts/selftest-hx8k.sh [RASTERSIM] [MIN_MHZ]   (defaults: build/rastersim, 52)
-# (Measured 58.1 MHz; 56.5 before session 16's walker changes, 54.2 for an equivalent netlist:
+# (Measured 56.6 MHz with the walker's entry stage, 54.2 with the z-buffer's input buffer before it,
+# 58.1 before that; 56.5 before session 16's walker changes, 54.2 for an equivalent netlist:
 # netlists that differ only in names and source paths move nextpnr's placement by about 2 MHz,
 # hence the margin below the figure in docs/performance.md.)
 set -euo pipefail
