@@ -122,14 +122,22 @@ module triangle_setup #(
   wire culled = (cfg_cull == RS_CULL_BACK && !front_facing) || (cfg_cull == RS_CULL_FRONT && front_facing);
   wire swap = area2[AREA_BITS-1];  // order the vertices so that area2 > 0
 
-  wire signed [COORD_BITS-1:0] x_min01 = vx_q[0] < vx_q[1] ? vx_q[0] : vx_q[1];
-  wire signed [COORD_BITS-1:0] x_max01 = vx_q[0] > vx_q[1] ? vx_q[0] : vx_q[1];
-  wire signed [COORD_BITS-1:0] y_min01 = vy_q[0] < vy_q[1] ? vy_q[0] : vy_q[1];
-  wire signed [COORD_BITS-1:0] y_max01 = vy_q[0] > vy_q[1] ? vy_q[0] : vy_q[1];
-  wire signed [COORD_BITS-1:0] x_min_c = x_min01 < vx_q[2] ? x_min01 : vx_q[2];
-  wire signed [COORD_BITS-1:0] x_max_c = x_max01 > vx_q[2] ? x_max01 : vx_q[2];
-  wire signed [COORD_BITS-1:0] y_min_c = y_min01 < vy_q[2] ? y_min01 : vy_q[2];
-  wire signed [COORD_BITS-1:0] y_max_c = y_max01 > vy_q[2] ? y_max01 : vy_q[2];
+  // The least of three from its three pairwise compares side by side (none waits for another);
+  // the greatest is the least of the negated order (`greatest` set).
+  function automatic signed [COORD_BITS-1:0] extreme3(input signed [COORD_BITS-1:0] a, input signed [COORD_BITS-1:0] b,
+                                                       input signed [COORD_BITS-1:0] c, input greatest);
+    reg a_b, a_c, b_c;  // the first is at least as extreme as the second
+    begin
+      a_b = greatest ? a >= b : a <= b;
+      a_c = greatest ? a >= c : a <= c;
+      b_c = greatest ? b >= c : b <= c;
+      extreme3 = a_b && a_c ? a : !a_b && b_c ? b : c;
+    end
+  endfunction
+  wire signed [COORD_BITS-1:0] x_min_c = extreme3(vx_q[0], vx_q[1], vx_q[2], 1'b0);
+  wire signed [COORD_BITS-1:0] x_max_c = extreme3(vx_q[0], vx_q[1], vx_q[2], 1'b1);
+  wire signed [COORD_BITS-1:0] y_min_c = extreme3(vy_q[0], vy_q[1], vy_q[2], 1'b0);
+  wire signed [COORD_BITS-1:0] y_max_c = extreme3(vy_q[0], vy_q[1], vy_q[2], 1'b1);
   wire signed [BB-1:0] x_min = $signed({{(BB-COORD_BITS){x_min_c[COORD_BITS-1]}}, x_min_c});
   wire signed [BB-1:0] x_max = $signed({{(BB-COORD_BITS){x_max_c[COORD_BITS-1]}}, x_max_c});
   wire signed [BB-1:0] y_min = $signed({{(BB-COORD_BITS){y_min_c[COORD_BITS-1]}}, y_min_c});
@@ -153,12 +161,11 @@ module triangle_setup #(
   // Offscreen: the box's centre columns or rows all lie beyond the screen. Otherwise the clipped
   // box is empty only when the whole-grid one is: no pixel centre in the box.
   wire offscreen = bx1_raw < 0 || by1_raw < 0 || bx0_raw > X_LAST_B || by0_raw > Y_LAST_B;
-  wire no_centre = bx0 > bx1 || by0 > by1;
   // The box's decision as the status takes it: the pipelined unit's FRONT cycle uses the
-  // combinational box; the serial unit computes the box in two registered steps (the extremes,
-  // then the clipped box), which takes that chain off its critical path and moves no cycle: its
-  // vertices are loaded 2 DELTA_BITS + 2 cycles before DECIDE, and the box does not change when
-  // DECIDE swaps two vertices.
+  // combinational box; the serial unit computes the box in three registered steps (the extremes,
+  // the clipped box and offscreen, then no_centre from the clipped box), which takes that chain
+  // off its critical path and moves no cycle: its vertices are loaded 2 DELTA_BITS + 2 cycles
+  // before DECIDE, and the box does not change when DECIDE swaps two vertices.
   wire box_offscreen, box_no_centre;
 
   wire [2:0] status = area2 == 0 ? RS_STATUS_DEGENERATE : culled ? RS_STATUS_CULLED
@@ -209,11 +216,12 @@ module triangle_setup #(
     reg [5:0] op_q;
     reg [SB-1:0] left_q;            // steps left in the operation
     reg [SB-1:0] data_left_q;       // dividend bits left before the appended zeros
+    reg data_left_nonzero_q;        // data_left_q != 0, kept beside it (off the trial's path)
     reg [1:0] term_q;               // which product of the sum takes this step
     reg sign_q;                     // the dividend is negative: divide ~n, invert the quotient
     reg signed [ACC_BITS-1:0] acc_q;
     reg [AREA_BITS-1:0] rem_q;             // restoring remainder, < |divisor| <= 2^(AREA_BITS-1)
-    reg [MB-1:0] mq_q [0:2];        // multipliers, consumed from bit 0
+    reg [MB-1:0] mq_q [0:2];        // multipliers, consumed from bit 0, the current term's in mq_q[0]
     reg signed [AREA_BITS-1:0] area_q;     // twice the signed area (the plane divisor)
     // The record's computed fields (the others come from the vertex registers).
     reg signed [EDGE_BITS-1:0] start_q [0:2];
@@ -248,6 +256,17 @@ module triangle_setup #(
         end
       end
     end
+    // The top-left rule's bias per edge, registered beside the deltas so that no step waits for
+    // their compares: the cycle after the vertices are loaded from the deltas (nothing reads it
+    // before DECIDE), and in the swap from the deltas as they turn round (-dy > 0 is dy < 0).
+    // Interior to the right (dy < 0) is a left edge; horizontal with interior below is top.
+    reg [2:0] bias_q;
+    integer e;
+    always @(posedge clk) begin
+      for (e = 0; e < 3; e = e + 1)
+        bias_q[e] <= swap_vertices ? !(ndy_q[2 - e] < 0 || (ndy_q[2 - e] == 0 && dx_q[2 - e] < 0))
+                                   : !(ndy_q[e] > 0 || (ndy_q[e] == 0 && dx_q[e] > 0));
+    end
     wire signed [DELTA_BITS-1:0] dx [0:2];
     wire signed [DELTA_BITS-1:0] ndy [0:2];
     wire [2:0] bias;                // 1 unless the edge is top or left
@@ -255,8 +274,7 @@ module triangle_setup #(
     for (k = 0; k < 3; k = k + 1) begin : deltas
       assign dx[k] = dx_q[k];
       assign ndy[k] = ndy_q[k];
-      // Interior to the right (dy < 0) is a left edge; horizontal with interior below is top.
-      assign bias[k] = !(ndy[k] > 0 || (ndy[k] == 0 && dx[k] > 0));
+      assign bias[k] = bias_q[k];
       assign out_edge_step_x[k*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS] = EDGE_STEP_X_BITS'({ndy[k], {S{1'b0}}});
       assign out_edge_step_y[k*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS] = EDGE_STEP_Y_BITS'({dx[k], {S{1'b0}}});
     end
@@ -311,31 +329,52 @@ module triangle_setup #(
                         : {SB{1'b0}};
     wire [1:0] last_term = is_plane ? 2'd2 : 2'd1;
     wire signed_multiplier = is_area || is_edge;
-    wire last_bit = left_q <= SB'(last_term) + 1'b1;
 
     // ---- Multiply step: HI += +-(bit ? B : 0) (+ the edge's bias as carry for start numerators) ----
-    wire [1:0] weight_k = is_area ? (term_q == 2'd0 ? 2'd0 : 2'd2)
-                        : is_edge ? edge_k
-                        : (term_q == 2'd2 ? 2'd0 : term_q + 1'b1);  // numerators: v_t e_(t+1)
+    // The multiplicand B (and the start numerators' bias) of the next step's term, registered
+    // (multiplicand_q, start_bias_q), so that the sum does not wait for the term's selection: the
+    // next term is 0 after an operation's load cycle and after its last term, else the one after.
+    wire [1:0] term_next = (active_q && load_q) || term_q == last_term ? 2'd0 : term_q + 1'b1;
+    wire [1:0] weight_next = is_area ? (term_next == 2'd0 ? 2'd0 : 2'd2)
+                           : is_edge ? edge_k
+                           : (term_next == 2'd2 ? 2'd0 : term_next + 1'b1);  // numerators: v_t e_(t+1)
     wire use_start = is_plane && plane_c == 2'd0;
-    wire use_ndy = (is_edge && term_q == 2'd1) || (is_plane && plane_c == 2'd1);
-    wire signed [H-1:0] multiplicand = use_start ? H'(start_q[weight_k])
-                                     : use_ndy ? H'(ndy[weight_k]) : H'(dx[weight_k]);
-    wire bit_now = mq_q[term_q][0];
-    wire subtract = bit_now && ((is_area && term_q == 2'd1) ^ (signed_multiplier && last_bit));
-    wire signed [H-1:0] addend = bit_now ? multiplicand : {H{1'b0}};
+    wire use_ndy_next = (is_edge && term_next == 2'd1) || (is_plane && plane_c == 2'd1);
+    // Whether the next step subtracts B when its bit is set (negate_q): the area's second term, and
+    // the signed multipliers' (area, edge: two terms per bit) sign bit, their last two steps.
+    wire [SB-1:0] left_next = active_q && load_q ? steps : left_q - 1'b1;
+    reg signed [H-1:0] multiplicand_q;
+    reg start_bias_q, negate_q;
+    always @(posedge clk) begin
+      multiplicand_q <= use_start ? H'(start_q[weight_next]) : use_ndy_next ? H'(ndy[weight_next]) : H'(dx[weight_next]);
+      start_bias_q <= use_start && bias[weight_next];
+      negate_q <= (is_area && term_next == 2'd1) ^ (signed_multiplier && left_next <= SB'(2));
+    end
+    wire bit_now = mq_q[0][0];
+    wire subtract = bit_now && negate_q;
+    wire signed [H-1:0] addend = bit_now ? multiplicand_q : {H{1'b0}};
     wire signed [H-1:0] hi = acc_q[ACC_BITS-1 -: H];
     wire signed [H-1:0] sum = hi + (subtract ? ~addend : addend)
-                              + H'(subtract || (bit_now && use_start && bias[weight_k]));
+                              + H'(subtract || (bit_now && start_bias_q));
 
     // ---- Divide step: {rem, next bit} - |divisor|, or the remainder correction rem - |divisor| ----
+    // -|divisor| (as ~|d| + 1: minus_divisor_q and its carry) and whether the next step is the
+    // span's remainder correction, registered a cycle ahead (the divisor is constant through an
+    // operation; the steps follow its load cycle), so that the trial's operands are registers.
     wire signed [AREA_BITS:0] divisor = is_span ? (AREA_BITS+1)'($signed({ndy[span_k], {S{1'b0}}})) : (AREA_BITS+1)'(area_q);
     wire divisor_nonzero = !is_span || ndy[span_k] != 0;
-    wire correction = is_span && left_q == SB'(1);
-    wire next_bit = (data_left_q != 0 && acc_q[ACC_BITS-1]) ^ sign_q;
+    reg [AREA_BITS:0] minus_divisor_q;
+    reg minus_divisor_carry_q, correction_q;
+    always @(posedge clk) begin
+      minus_divisor_q <= divisor[AREA_BITS] ? divisor : ~divisor;
+      minus_divisor_carry_q <= !divisor[AREA_BITS];
+      correction_q <= is_span && left_next == SB'(1);
+    end
+    wire correction = correction_q;
+    wire next_bit = (data_left_nonzero_q && acc_q[ACC_BITS-1]) ^ sign_q;
     wire [AREA_BITS-1:0] shifted = {rem_q[AREA_BITS-2:0], next_bit};
-    wire [AREA_BITS:0] trial = {1'b0, correction ? rem_q : shifted}
-                        + (divisor[AREA_BITS] ? divisor : ~divisor) + (AREA_BITS+1)'(!divisor[AREA_BITS]);
+    wire [AREA_BITS:0] trial = {1'b0, correction ? rem_q : shifted} + minus_divisor_q
+                             + (AREA_BITS+1)'(minus_divisor_carry_q);
     wire fits = !trial[AREA_BITS];
     wire quotient_bit = (fits && divisor_nonzero) ^ sign_q;
 
@@ -343,10 +382,12 @@ module triangle_setup #(
     // PB steps acc = 2 acc +- (bit ? step_x : 0), the quotient's bits most significant first (the
     // first, its sign bit, subtracts), then acc = base - acc (the colour planes in the low bits).
     // Left edges have edge_step_x = ndy 2^S > 0; slot 0 is the first in edge order, slot 1 the second.
-    wire [2:0] left_edge;
-    for (k = 0; k < 3; k = k + 1) begin : left_edges
-      assign left_edge[k] = ndy[k] > 0;
+    // Registered beside the deltas as the bias is (the PRODUCT operations come long after DECIDE).
+    reg [2:0] left_edge_q;
+    always @(posedge clk) begin
+      for (e = 0; e < 3; e = e + 1) left_edge_q[e] <= swap_vertices ? ndy_q[2 - e] < 0 : ndy_q[e] > 0;
     end
+    wire [2:0] left_edge = left_edge_q;
     wire product_slot = product_n[1];
     wire [1:0] product_p = product_n[3:2];
     wire product_step_field = product_n[0];  // the step (else the start)
@@ -356,21 +397,45 @@ module triangle_setup #(
                                    : (left_edge[0] && left_edge[1]) || (left_edge[0] && left_edge[2]) || (left_edge[1] && left_edge[2]);
     wire [PB-1:0] product_multiplier = !slot_used ? {PB{1'b0}}
         : product_step_field ? PB'($signed(span_step_quot_q[slot_edge])) : PB'($signed(span_quot_q[slot_edge]));
-    wire [Z_REG_BITS-1:0] product_step_x = product_p == 2'd0 ? depth_q[1]
-                                         : Z_REG_BITS'($signed(color_q[3 * (product_p - 2'd1) + 1]));
-    wire [Z_REG_BITS-1:0] product_base = product_p == 2'd0 ? depth_q[product_step_field ? 2 : 0]
-        : Z_REG_BITS'($signed(color_q[3 * (product_p - 2'd1) + (product_step_field ? 2 : 0)]));
+    // Plane p's step x and its start (or step y): depth_q[0..2], colour c = p - 1 at color_q[3c ..
+    // 3c + 2], sign-extended; constant indices, so that each is one 4-way choice.
+    wire [Z_REG_BITS-1:0] plane_field [0:11];  // 3p + (0 start, 1 step x, 2 step y)
+    for (k = 0; k < 12; k = k + 1) begin : plane_fields
+      if (k < 3) begin : depth
+        assign plane_field[k] = depth_q[k];
+      end else begin : colour
+        assign plane_field[k] = Z_REG_BITS'($signed(color_q[k - 3]));
+      end
+    end
+    wire [Z_REG_BITS-1:0] product_step_x = product_p == 2'd0 ? plane_field[1] : product_p == 2'd1 ? plane_field[4]
+                                         : product_p == 2'd2 ? plane_field[7] : plane_field[10];
+    wire [Z_REG_BITS-1:0] product_base = product_step_field
+        ? (product_p == 2'd0 ? plane_field[2] : product_p == 2'd1 ? plane_field[5] : product_p == 2'd2 ? plane_field[8] : plane_field[11])
+        : (product_p == 2'd0 ? plane_field[0] : product_p == 2'd1 ? plane_field[3] : product_p == 2'd2 ? plane_field[6] : plane_field[9]);
     reg [Z_REG_BITS-1:0] product_acc_q;
     reg [PB-1:0] product_bits_q;  // the multiplier, consumed from the top
     // The operation's multiplicand and base, taken in its load cycle: the plane selection is then
     // off the accumulator's path.
     reg [Z_REG_BITS-1:0] product_step_x_q, product_base_q;
-    wire product_first = left_q == SB'(PB + 1);
-    wire product_last = left_q == SB'(1);
-    wire [Z_REG_BITS-1:0] product_addend = product_bits_q[PB-1] ? product_step_x_q : {Z_REG_BITS{1'b0}};
+    // The first (sign) and the last (base - acc) steps, registered a cycle ahead from left_next.
+    reg product_first_q, product_last_q;
+    always @(posedge clk) begin
+      product_first_q <= left_next == SB'(PB + 1);
+      product_last_q <= left_next == SB'(1);
+    end
+    wire product_first = product_first_q;
+    wire product_last = product_last_q;
+    // The next step's addend (bit ? step_x : 0) as it is added, registered a cycle ahead: inverted
+    // on the first (sign) step, which subtracts (with a carry in).
+    wire product_next_bit = active_q && load_q ? product_multiplier[PB-1] : product_bits_q[PB-2];
+    wire [Z_REG_BITS-1:0] product_next_step_x = active_q && load_q ? product_step_x : product_step_x_q;
+    wire [Z_REG_BITS-1:0] product_next_addend = product_next_bit ? product_next_step_x : {Z_REG_BITS{1'b0}};
+    reg [Z_REG_BITS-1:0] product_addend_q;
+    always @(posedge clk) product_addend_q <= left_next == SB'(PB + 1) ? ~product_next_addend : product_next_addend;
     wire [Z_REG_BITS-1:0] product_doubled = {product_acc_q[Z_REG_BITS-2:0], 1'b0};
 
-    // ---- The box, in two registered steps (the vertices change only at accept and swap) ----
+    // ---- The box, in three registered steps (the vertices change only at accept and swap): the
+    // extremes, the clipped box and offscreen, then no_centre from the clipped box ----
     reg signed [BB-1:0] x_min_q, x_max_q, y_min_q, y_max_q;
     always @(posedge clk) begin
       x_min_q <= x_min;
@@ -383,16 +448,15 @@ module triangle_setup #(
     assign box_y_min = y_min_q;
     assign box_y_max = y_max_q;
     reg signed [BB-1:0] box_x0_q, box_y0_q;  // the first candidate (its centre feeds the edge operations)
-    reg [X_BITS-1:0] box_x1_q;               // the last candidate column and row (the record's)
-    reg [Y_BITS-1:0] box_y1_q;
+    reg signed [BB-1:0] box_x1_q, box_y1_q;  // the last candidate column and row (the record's low bits)
     reg box_offscreen_q, box_no_centre_q;
     always @(posedge clk) begin
       box_x0_q <= bx0;
-      box_x1_q <= bx1[X_BITS-1:0];
+      box_x1_q <= bx1;
       box_y0_q <= by0;
-      box_y1_q <= by1[Y_BITS-1:0];
+      box_y1_q <= by1;
       box_offscreen_q <= offscreen;
-      box_no_centre_q <= no_centre;
+      box_no_centre_q <= box_x0_q > box_x1_q || box_y0_q > box_y1_q;
     end
     wire signed [BB-1:0] box_x0 = box_x0_q;
     wire signed [BB-1:0] box_y0 = box_y0_q;
@@ -479,19 +543,29 @@ module triangle_setup #(
           acc_q <= divisor_nonzero ? {span_dividend, {MB{1'b0}}} : {ACC_BITS{1'b0}};
           sign_q <= divisor_nonzero && span_dividend[H-1];
           data_left_q <= SB'(H);
+          data_left_nonzero_q <= 1'b1;
         end else if (is_plane && !plane_div) begin
           acc_q <= {ACC_BITS{1'b0}};
           for (t = 0; t < 3; t = t + 1) mq_q[t] <= MB'(value[t]);
         end else if (is_plane) begin
           sign_q <= acc_q[ACC_BITS-1];
           data_left_q <= SB'(H) + plane_bits;
+          data_left_nonzero_q <= 1'b1;
         end
       end else if (active_q && is_mul) begin
         left_q <= left_q - 1'b1;
+        // The terms' multipliers rotate, so that the next term's is in mq_q[0] (no selection before
+        // the sum); the one just used goes to the back a bit further on.
+        mq_q[0] <= mq_q[1];
+        if (last_term == 2'd2) begin
+          mq_q[1] <= mq_q[2];
+          mq_q[2] <= mq_q[0] >> 1;
+        end else begin
+          mq_q[1] <= mq_q[0] >> 1;
+        end
         if (term_q == last_term) begin
           term_q <= 2'd0;
           acc_q <= {sum[H-1], sum, acc_q[MB-1:1]};
-          for (t = 0; t < 3; t = t + 1) mq_q[t] <= mq_q[t] >> 1;
         end else begin
           term_q <= term_q + 1'b1;
           acc_q[ACC_BITS-1 -: H] <= sum;
@@ -503,7 +577,10 @@ module triangle_setup #(
         if (correction) begin
           if (sign_q) rem_q <= ~trial[AREA_BITS-1:0];  // |d| - 1 - r: the remainder of n from that of ~n
         end else begin
-          if (data_left_q != 0) data_left_q <= data_left_q - 1'b1;
+          if (data_left_nonzero_q) begin
+            data_left_q <= data_left_q - 1'b1;
+            data_left_nonzero_q <= data_left_q != SB'(1);
+          end
           rem_q <= fits ? trial[AREA_BITS-1:0] : shifted;
           acc_q <= {acc_q[ACC_BITS-2:0], quotient_bit};
         end
@@ -519,7 +596,7 @@ module triangle_setup #(
         product_base_q <= product_base;
       end else if (active_q && is_product) begin
         if (product_last) product_acc_q <= product_base_q - product_acc_q;
-        else product_acc_q <= product_first ? product_doubled - product_addend : product_doubled + product_addend;
+        else product_acc_q <= product_doubled + product_addend_q + Z_REG_BITS'(product_first);
         product_bits_q <= {product_bits_q[PB-2:0], 1'b0};
       end
     end
@@ -564,9 +641,9 @@ module triangle_setup #(
     assign out_depth_step_x = depth_q[1];
     assign out_depth_step_y = depth_q[2];
     assign out_x0 = box_x0[X_BITS-1:0];
-    assign out_x1 = box_x1_q;
+    assign out_x1 = box_x1_q[X_BITS-1:0];
     assign out_y0 = box_y0[Y_BITS-1:0];
-    assign out_y1 = box_y1_q;
+    assign out_y1 = box_y1_q[Y_BITS-1:0];
     assign out_flat_rgb = vrgb_q[0];
   end else begin : pipelined
     // ---- FRONT: the area's two products (delta_bits x delta_bits), the only ones in one cycle ----
@@ -609,7 +686,7 @@ module triangle_setup #(
     assign box_y_min = y_min;
     assign box_y_max = y_max;
     assign box_offscreen = offscreen;
-    assign box_no_centre = no_centre;
+    assign box_no_centre = bx0 > bx1 || by0 > by1;
     wire signed [BB-1:0] centre_x = (bx0 <<< S) + HALF_B;
     wire signed [BB-1:0] centre_y = (by0 <<< S) + HALF_B;
     /* verilator lint_on UNUSEDSIGNAL */

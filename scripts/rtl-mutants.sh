@@ -132,7 +132,7 @@ from[serial_remainder_correction]='if (sign_q) rem_q <= ~trial[AREA_BITS-1:0];'
 to[serial_remainder_correction]='if (1'"'"'b0) rem_q <= ~trial[AREA_BITS-1:0];'  # the span remainder correction step missing
 from[serial_multiplier_bits]=': is_edge ? SB'"'"'(2 * (COORD_BITS + 1))'
 to[serial_multiplier_bits]=': is_edge ? SB'"'"'(2 * COORD_BITS)'  # the edge products one multiplier bit short
-from[serial_bias_carry]='+ H'"'"'(subtract || (bit_now && use_start && bias[weight_k]));'
+from[serial_bias_carry]='+ H'"'"'(subtract || (bit_now && start_bias_q));'
 to[serial_bias_carry]='+ H'"'"'(subtract);'  # the start numerators use the biased edge values
 from[serial_swap_deltas]='dx_q[d] <= -dx_q[2 - d];'
 to[serial_swap_deltas]='dx_q[d] <= dx_q[2 - d];'  # the swapped edges keep their x direction
