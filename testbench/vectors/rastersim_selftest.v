@@ -40,24 +40,30 @@ module rastersim_selftest (
     $readmemh("selftest.hex", expected_crc, 0, 1);
   end
   reg [COUNT_BITS-1:0] next_command;
+  reg [COUNT_BITS-1:0] command_plus_1_q;  // next_command + 1
+  reg more_after_q;                       // next_command + 1 < TRIANGLES
   reg cmd_valid_q;  // next_command < TRIANGLES
   reg [COMMAND_BITS-1:0] command_q;  // the ROM word of next_command (a synchronous read)
   wire cmd_valid = cmd_valid_q;
   wire cmd_ready, frame_ready;
   wire accept = cmd_valid && cmd_ready;
-  // The next cycle's count, validity and ROM address for both outcomes of the handshake, formed
-  // from registers: the handshake only selects (no compare or increment behind the core's ready).
-  wire [COUNT_BITS-1:0] command_plus_1 = next_command + {{(COUNT_BITS-1){1'b0}}, 1'b1};
-  wire more_after = command_plus_1 < TRIANGLES;
+  // The next cycle's count, validity and ROM address for both outcomes of the handshake, kept in
+  // registers a command ahead: the handshake only selects (no compare or increment behind the
+  // core's ready, nor before the ROM's address).
+  wire [COUNT_BITS-1:0] command_plus_2 = command_plus_1_q + {{(COUNT_BITS-1){1'b0}}, 1'b1};
   wire [COUNT_BITS-1:0] address_stay = cmd_valid_q ? next_command : {COUNT_BITS{1'b0}};
-  wire [COUNT_BITS-1:0] address_move = more_after ? command_plus_1 : {COUNT_BITS{1'b0}};
+  wire [COUNT_BITS-1:0] address_move = more_after_q ? command_plus_1_q : {COUNT_BITS{1'b0}};
   always @(posedge clk) begin
     if (rst) begin
       next_command <= {COUNT_BITS{1'b0}};
+      command_plus_1_q <= {{(COUNT_BITS-1){1'b0}}, 1'b1};
+      more_after_q <= TRIANGLES > 1;
       cmd_valid_q <= TRIANGLES > 0;
     end else if (accept) begin
-      next_command <= command_plus_1;
-      cmd_valid_q <= more_after;
+      next_command <= command_plus_1_q;
+      command_plus_1_q <= command_plus_2;
+      more_after_q <= command_plus_2 < TRIANGLES;
+      cmd_valid_q <= more_after_q;
     end
     command_q <= commands[accept ? address_move : address_stay];
   end
