@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -114,29 +115,38 @@ int64_t field_bits(const Wide& value, int lo, int width, bool is_signed) {
   return field_bits(v, 0, width, is_signed);
 }
 
-// Calls `read(value)` with the value of rastersim_core's record wire `name` (rec_*).
-template <class Core, class Read>
-int64_t read_record_wire(const Core& t, const std::string& name, Read&& read) {
-  if (name == "rec_x0") return read(t.rec_x0);
-  if (name == "rec_x1") return read(t.rec_x1);
-  if (name == "rec_y0") return read(t.rec_y0);
-  if (name == "rec_y1") return read(t.rec_y1);
-  if (name == "rec_edge_start") return read(t.rec_edge_start);
-  if (name == "rec_edge_step_x") return read(t.rec_edge_step_x);
-  if (name == "rec_edge_step_y") return read(t.rec_edge_step_y);
-  if (name == "rec_span_quot") return read(t.rec_span_quot);
-  if (name == "rec_span_rem") return read(t.rec_span_rem);
-  if (name == "rec_span_step_quot") return read(t.rec_span_step_quot);
-  if (name == "rec_span_step_rem") return read(t.rec_span_step_rem);
-  if (name == "rec_depth_start") return read(t.rec_depth_start);
-  if (name == "rec_depth_step_x") return read(t.rec_depth_step_x);
-  if (name == "rec_depth_step_y") return read(t.rec_depth_step_y);
-  if (name == "rec_color_start") return read(t.rec_color_start);
-  if (name == "rec_color_step_x") return read(t.rec_color_step_x);
-  if (name == "rec_color_step_y") return read(t.rec_color_step_y);
-  if (name == "rec_flat_rgb") return read(t.rec_flat_rgb);
-  if (name == "rec_left_start") return read(t.rec_left_start);
-  if (name == "rec_left_step") return read(t.rec_left_step);
+// Reads field `f` of the setup record from its rec_* wire of rastersim_core: bound to the wire's
+// member once, so that a record is read without looking its wires up by name.
+template <class Core>
+std::function<int64_t(const Core&)> record_field_reader(const SetupRecordField& f) {
+  auto bound = [&f](auto member) -> std::function<int64_t(const Core&)> {
+    return [member, lo = f.wire_lo < 0 ? 0 : f.wire_lo, bits = f.bits, is_signed = f.is_signed](const Core& t) {
+      const auto& value = t.*member;
+      if constexpr (std::is_integral_v<std::decay_t<decltype(value)>>) return field_bits(uint64_t(value), lo, bits, is_signed);
+      else return field_bits(value, lo, bits, is_signed);
+    };
+  };
+  const std::string& name = f.wire;
+  if (name == "rec_x0") return bound(&Core::rec_x0);
+  if (name == "rec_x1") return bound(&Core::rec_x1);
+  if (name == "rec_y0") return bound(&Core::rec_y0);
+  if (name == "rec_y1") return bound(&Core::rec_y1);
+  if (name == "rec_edge_start") return bound(&Core::rec_edge_start);
+  if (name == "rec_edge_step_x") return bound(&Core::rec_edge_step_x);
+  if (name == "rec_edge_step_y") return bound(&Core::rec_edge_step_y);
+  if (name == "rec_span_quot") return bound(&Core::rec_span_quot);
+  if (name == "rec_span_rem") return bound(&Core::rec_span_rem);
+  if (name == "rec_span_step_quot") return bound(&Core::rec_span_step_quot);
+  if (name == "rec_span_step_rem") return bound(&Core::rec_span_step_rem);
+  if (name == "rec_depth_start") return bound(&Core::rec_depth_start);
+  if (name == "rec_depth_step_x") return bound(&Core::rec_depth_step_x);
+  if (name == "rec_depth_step_y") return bound(&Core::rec_depth_step_y);
+  if (name == "rec_color_start") return bound(&Core::rec_color_start);
+  if (name == "rec_color_step_x") return bound(&Core::rec_color_step_x);
+  if (name == "rec_color_step_y") return bound(&Core::rec_color_step_y);
+  if (name == "rec_flat_rgb") return bound(&Core::rec_flat_rgb);
+  if (name == "rec_left_start") return bound(&Core::rec_left_start);
+  if (name == "rec_left_step") return bound(&Core::rec_left_step);
   throw std::logic_error("rastersim_core has no record wire " + name);
 }
 
@@ -145,19 +155,20 @@ int64_t read_record_wire(const Core& t, const std::string& name, Read&& read) {
 // the profile it was built for.
 template <class Core>
 SetupResult read_setup_record(const Core& t, bool gouraud) {
+  using Reader = std::pair<const SetupRecordField*, std::function<int64_t(const Core&)>>;
   static const Widths widths = derive_widths(int(Core::P_WIDTH), int(Core::P_HEIGHT), int(Core::P_SUBPIXEL_BITS),
                                              int(Core::P_Z_BITS), int(Core::P_Z_GUARD_BITS));
   static const std::vector<SetupRecordField> all = setup_record_fields(widths, true);
   static const std::vector<SetupRecordField> flat = setup_record_fields(widths, false);
+  auto readers = [](const std::vector<SetupRecordField>& fields) {
+    std::vector<Reader> r;
+    for (const SetupRecordField& f : fields) r.emplace_back(&f, record_field_reader<Core>(f));
+    return r;
+  };
+  static const std::vector<Reader> all_readers = readers(all), flat_readers = readers(flat);
   SetupResult r;
   r.status = SetupStatus::Drawn;
-  for (const SetupRecordField& f : gouraud ? all : flat) {
-    f.set(r, read_record_wire(t, f.wire, [&f](const auto& value) {
-      const int lo = f.wire_lo < 0 ? 0 : f.wire_lo;
-      if constexpr (std::is_integral_v<std::decay_t<decltype(value)>>) return field_bits(uint64_t(value), lo, f.bits, f.is_signed);
-      else return field_bits(value, lo, f.bits, f.is_signed);
-    }));
-  }
+  for (const auto& [field, read] : gouraud ? all_readers : flat_readers) field->set(r, read(t));
   return r;
 }
 
