@@ -384,8 +384,10 @@ module triangle_setup #(
     // Left edges have edge_step_x = ndy 2^S > 0; slot 0 is the first in edge order, slot 1 the second.
     // Registered beside the deltas as the bias is (the PRODUCT operations come long after DECIDE).
     reg [2:0] left_edge_q;
+    integer edge_index;
     always @(posedge clk) begin
-      for (e = 0; e < 3; e = e + 1) left_edge_q[e] <= swap_vertices ? ndy_q[2 - e] < 0 : ndy_q[e] > 0;
+      for (edge_index = 0; edge_index < 3; edge_index = edge_index + 1)
+        left_edge_q[edge_index] <= swap_vertices ? ndy_q[2 - edge_index] < 0 : ndy_q[edge_index] > 0;
     end
     wire [2:0] left_edge = left_edge_q;
     wire product_slot = product_n[1];
@@ -418,9 +420,10 @@ module triangle_setup #(
     // off the accumulator's path.
     reg [Z_REG_BITS-1:0] product_step_x_q, product_base_q;
     // The first (sign) and the last (base - acc) steps, registered a cycle ahead from left_next.
+    wire product_next_first = left_next == SB'(PB + 1);
     reg product_first_q, product_last_q;
     always @(posedge clk) begin
-      product_first_q <= left_next == SB'(PB + 1);
+      product_first_q <= product_next_first;
       product_last_q <= left_next == SB'(1);
     end
     wire product_first = product_first_q;
@@ -431,7 +434,7 @@ module triangle_setup #(
     wire [Z_REG_BITS-1:0] product_next_step_x = active_q && load_q ? product_step_x : product_step_x_q;
     wire [Z_REG_BITS-1:0] product_next_addend = product_next_bit ? product_next_step_x : {Z_REG_BITS{1'b0}};
     reg [Z_REG_BITS-1:0] product_addend_q;
-    always @(posedge clk) product_addend_q <= left_next == SB'(PB + 1) ? ~product_next_addend : product_next_addend;
+    always @(posedge clk) product_addend_q <= product_next_first ? ~product_next_addend : product_next_addend;
     wire [Z_REG_BITS-1:0] product_doubled = {product_acc_q[Z_REG_BITS-2:0], 1'b0};
 
     // ---- The box, in three registered steps (the vertices change only at accept and swap): the
