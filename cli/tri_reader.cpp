@@ -1,5 +1,6 @@
 #include "tri_reader.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,9 @@ namespace {
 const char* const kCoordinateNames[9] = {"x0", "y0", "z0", "x1", "y1", "z1", "x2", "y2", "z2"};
 const char* const kFlatColorNames[3] = {"r", "g", "b"};
 const char* const kVertexColorNames[9] = {"r0", "g0", "b0", "r1", "g1", "b1", "r2", "g2", "b2"};
+const char* const kTextureNames[9] = {"u0", "v0", "w0", "u1", "v1", "w1", "u2", "v2", "w2"};
+// Starts a line's texture section (format version 2): nine numbers u v w per vertex.
+const char* const kTextureKeyword = "uvw";
 
 // A token as an error message shows it: bytes that would not print (a NUL cut the message) as \xNN.
 std::string shown(const std::string& token) {
@@ -121,8 +125,28 @@ std::string parse_channel(const std::string& token, const char* field, uint8_t& 
   return "";
 }
 
+// Parses a line's texture section, the tokens after "uvw".
+std::string parse_texture(const std::vector<std::string>& tokens, ScreenTriangle& tri) {
+  if (tokens.size() != 9)
+    return std::string("expected 9 numbers 'u0 v0 w0 u1 v1 w1 u2 v2 w2' after '") + kTextureKeyword +
+           "', but there are " + std::to_string(tokens.size());
+  for (int i = 0; i < 9; ++i) {
+    ScreenVertex& v = tri.v[i / 3];
+    std::string error = parse_real(tokens[size_t(i)], kTextureNames[i], i % 3 == 0 ? v.u : i % 3 == 1 ? v.v : v.w);
+    if (!error.empty()) return error;
+  }
+  tri.textured = true;
+  return "";
+}
+
 // Parses one triangle line; returns an error sentence or an empty string.
-std::string parse_triangle(const std::vector<std::string>& tokens, ScreenTriangle& tri) {
+std::string parse_triangle(std::vector<std::string> tokens, ScreenTriangle& tri) {
+  const auto keyword = std::find(tokens.begin(), tokens.end(), kTextureKeyword);
+  if (keyword != tokens.end()) {
+    std::string error = parse_texture(std::vector<std::string>(keyword + 1, tokens.end()), tri);
+    if (!error.empty()) return error;
+    tokens.erase(keyword, tokens.end());
+  }
   const size_t n = tokens.size();
   if (n != 9 && n != 12 && n != 18)
     return "expected 9 numbers 'x0 y0 z0 x1 y1 z1 x2 y2 z2', optionally followed by 3 colour values "
@@ -215,6 +239,14 @@ void write_tri(std::ostream& out, const std::vector<ScreenTriangle>& triangles, 
         std::snprintf(buffer, sizeof buffer, " %d %d %d", c.r, c.g, c.b);
         text += buffer;
       }
+    }
+    if (tri.textured) {
+      text += std::string(" ") + kTextureKeyword;
+      for (const ScreenVertex& v : tri.v)
+        for (double value : {v.u, v.v, v.w}) {
+          std::snprintf(buffer, sizeof buffer, " %.17g", value);
+          text += buffer;
+        }
     }
     out << text << '\n';
   }

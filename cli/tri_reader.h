@@ -1,7 +1,8 @@
 // The .tri screen-space triangle list (docs/formats.md): reader and writer.
 // One triangle a line: x0 y0 z0 x1 y1 z1 x2 y2 z2 (pixels, y down; depth in [0, 1]), optionally
 // followed by r g b (flat, integers 0..255) or r0 g0 b0 r1 g1 b1 r2 g2 b2 (per vertex). No colour:
-// white. '#' starts a comment, blank lines are ignored.
+// white. Then optionally (version 2) `uvw u0 v0 w0 u1 v1 w1 u2 v2 w2`: the vertices' texture
+// coordinates and clip-space w. '#' starts a comment, blank lines are ignored.
 #pragma once
 
 #include <istream>
@@ -23,7 +24,8 @@ std::vector<ScreenTriangle> read_tri(std::istream& in, const std::string& file_n
 std::vector<ScreenTriangle> read_tri_file(const std::string& path, const Profile& profile);
 
 // Writes triangles so that read_tri gives back bit-identical doubles (%.17g) and colours: no colour
-// when all vertices are white, r g b when they share one colour, nine values otherwise.
+// when all vertices are white, r g b when they share one colour, nine values otherwise; the uvw
+// section for a textured triangle.
 // Each line of `comment` (may be empty) is written first as a '#' comment.
 void write_tri(std::ostream& out, const std::vector<ScreenTriangle>& triangles, const std::string& comment = "");
 

@@ -41,6 +41,8 @@ ClipVertex intersect(const ClipVertex& in, double in_value, const ClipVertex& ou
   r.position = {lerp(in.position.x, out.position.x), lerp(in.position.y, out.position.y),
                 lerp(in.position.z, out.position.z), lerp(in.position.w, out.position.w)};
   r.color = {lerp(in.color.x, out.color.x), lerp(in.color.y, out.color.y), lerp(in.color.z, out.color.z)};
+  r.u = lerp(in.u, out.u);
+  r.v = lerp(in.v, out.v);
   r.source = -1;
   return r;
 }
@@ -140,6 +142,9 @@ ScreenVertex Clipper::to_screen(const ClipVertex& v) const {
   r.y = s.y;
   r.z = std::clamp(s.z, 0.0, 1.0);  // a vertex clipped at near or far may round a hair outside
   r.color = {to_channel(v.color.x), to_channel(v.color.y), to_channel(v.color.z)};
+  r.u = v.u;
+  r.v = v.v;
+  r.w = p.w;
   return r;
 }
 

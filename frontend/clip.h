@@ -16,6 +16,7 @@ struct ClipVertex {
   Vec4 position;         // clip space
   Vec3 color;            // 0..255 per channel, not yet rounded
   int64_t source = -1;   // the caller's vertex id; -1 for a vertex made by clipping
+  double u = 0, v = 0;   // texture coordinate (affine in clip space, so clipping interpolates it)
 };
 
 // Where each corner of an output triangle came from: a ClipVertex::source, -1 if made by clipping.
@@ -36,7 +37,9 @@ class Clipper {
 
   // Clips the triangle, maps the pieces to the screen and appends them to `out` (the clipped
   // polygon triangulated with its winding: a fan, or ear clipping where snapping to the profile's
-  // subpixel grid would make a fan fold over); the corner sources to `sources` when given.
+  // subpixel grid would make a fan fold over); the corner sources to `sources` when given. Each
+  // screen vertex carries its texture coordinate and clip-space w; the caller marks the triangles
+  // textured.
   // A triangle wholly outside one side of the visible screen frustum (|x| <= w, |y| <= w) produces
   // nothing, since it cannot cover a pixel centre. Nor does a triangle with a non-finite coordinate.
   void clip(const ClipVertex (&triangle)[3], std::vector<ScreenTriangle>& out,

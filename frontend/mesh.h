@@ -17,6 +17,11 @@ struct Mesh {
   // Per vertex: the index of the source position it copies (the OBJ `v` line order, 0-based; for a
   // generated surface the vertex itself). Vertices that share a source have bit-identical positions.
   std::vector<uint32_t> position_ids;
+  // Per vertex: the texture coordinate (u, v), (0, 0) the texture's bottom-left corner; empty when
+  // the mesh has none.
+  std::vector<std::array<double, 2>> texcoords;
+
+  bool textured() const { return !texcoords.empty(); }
 
   uint32_t add_vertex(const Vec3& position, const Vec3& normal, uint32_t position_id) {
     positions.push_back(position);

@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "model/input_error.h"
+#include "model/triangle.h"
 #include "model/text_file.h"
 
 namespace rastersim::frontend {
@@ -130,6 +131,7 @@ class PreScan {
     } else if (keyword == "vt") {
       if (values < 1 || values > 3) fail(line, "a texture coordinate 'vt' takes 1 to 3 values, found " + std::to_string(values));
       for (size_t k = 1; k < tokens.size(); ++k) number(tokens[k], line);
+      texcoords_.push_back({number(tokens[1], line), values >= 2 ? number(tokens[2], line) : 0.0});
       ++counts_.vt;
     } else if (keyword == "f" || keyword == "l" || keyword == "p") {
       const size_t minimum = keyword == "f" ? 3 : keyword == "l" ? 2 : 1;
@@ -175,6 +177,8 @@ class PreScan {
 
   const std::vector<Vec3>& positions() const { return positions_; }
   const std::vector<int>& position_lines() const { return position_lines_; }
+  // (u, v) of every vt line in order, read with the correctly rounded parser; v = 0 when absent.
+  const std::vector<std::array<double, 2>>& texcoords() const { return texcoords_; }
   [[noreturn]] void fail(int line, const std::string& problem) const { throw InputError(file_, line, problem); }
 
  private:
@@ -219,6 +223,7 @@ class PreScan {
   long faces_ = 0;
   std::vector<Vec3> positions_;
   std::vector<int> position_lines_;
+  std::vector<std::array<double, 2>> texcoords_;
   std::vector<PendingCheck> pending_;
 };
 
@@ -267,9 +272,9 @@ Mesh parse_obj_mesh(const std::string& text, const std::string& file_name) {
                                                 std::to_string(got[k]));
   }
 
-  // Fan every face; remember the corners' normal indices.
+  // Fan every face; remember the corners' normal and texture coordinate indices.
   struct Corner {
-    int v, vn;
+    int v, vn, vt;
   };
   std::vector<std::array<Corner, 3>> corners;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
@@ -277,7 +282,7 @@ Mesh parse_obj_mesh(const std::string& text, const std::string& file_name) {
     for (unsigned char count : shape.mesh.num_face_vertices) {
       const auto at = [&](size_t k) {
         const tinyobj::index_t& i = shape.mesh.indices[offset + k];
-        return Corner{i.vertex_index, i.normal_index};
+        return Corner{i.vertex_index, i.normal_index, i.texcoord_index};
       };
       for (size_t k = 1; k + 1 < count; ++k) corners.push_back({at(0), at(k), at(k + 1)});
       offset += count;
@@ -287,18 +292,28 @@ Mesh parse_obj_mesh(const std::string& text, const std::string& file_name) {
   for (const auto& c : corners) by_position.push_back({uint32_t(c[0].v), uint32_t(c[1].v), uint32_t(c[2].v)});
   const std::vector<Vec3> computed = area_weighted_normals(positions, by_position);
 
+  // Texture coordinates are kept when every face corner has one and each lies inside the texture
+  // sampler's range; otherwise the mesh has none (as an OBJ without vt).
+  const std::vector<std::array<double, 2>>& texcoords = scan.texcoords();
+  const bool textured = std::all_of(corners.begin(), corners.end(), [&](const auto& c) {
+    return std::all_of(c.begin(), c.end(), [&](const Corner& k) {
+      return k.vt >= 0 && std::fabs(texcoords[size_t(k.vt)][0]) < kMaxTextureCoordinate &&
+             std::fabs(texcoords[size_t(k.vt)][1]) < kMaxTextureCoordinate;
+    });
+  });
   Mesh mesh;
-  std::map<std::pair<int, int>, uint32_t> vertex_of;  // (v, vn or -1) -> mesh vertex
+  std::map<std::array<int, 3>, uint32_t> vertex_of;  // (v, vn or -1, vt or -1) -> mesh vertex
   for (const auto& c : corners) {
     std::array<uint32_t, 3> t{};
     for (int k = 0; k < 3; ++k) {
-      const auto key = std::make_pair(c[k].v, c[k].vn);
+      const std::array<int, 3> key = {c[k].v, c[k].vn, textured ? c[k].vt : -1};
       auto it = vertex_of.find(key);
       if (it == vertex_of.end()) {
         const Vec3 normal = c[k].vn >= 0 ? normalize(Vec3{attrib.normals[3 * c[k].vn], attrib.normals[3 * c[k].vn + 1],
                                                           attrib.normals[3 * c[k].vn + 2]})
                                          : computed[c[k].v];
         it = vertex_of.emplace(key, mesh.add_vertex(positions[c[k].v], normal, uint32_t(c[k].v))).first;
+        if (textured) mesh.texcoords.push_back(texcoords[size_t(c[k].vt)]);
       }
       t[k] = it->second;
     }

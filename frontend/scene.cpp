@@ -57,7 +57,10 @@ std::vector<ScreenTriangle> render_scene(const Scene& scene, const Camera& camer
       const auto& triangle = mesh.triangles[triangle_index];
       const uint32_t corner[3] = {triangle[0], mirrored ? triangle[2] : triangle[1], mirrored ? triangle[1] : triangle[2]};
       ClipVertex vertices[3];
-      for (int k = 0; k < 3; ++k) vertices[k] = {clip[corner[k]], color[corner[k]], int64_t(corner[k])};
+      for (int k = 0; k < 3; ++k) {
+        vertices[k] = {clip[corner[k]], color[corner[k]], int64_t(corner[k])};
+        if (mesh.textured()) vertices[k].u = mesh.texcoords[corner[k]][0], vertices[k].v = mesh.texcoords[corner[k]][1];
+      }
       if (material.shading == SurfaceShading::Faceted) {
         const Vec3& a = world[corner[0]];
         const Vec3& b = world[corner[1]];
@@ -73,6 +76,7 @@ std::vector<ScreenTriangle> render_scene(const Scene& scene, const Camera& camer
         trace->triangle.resize(out.size(), triangle_index);
       }
       for (size_t t = before; t < out.size(); ++t) {
+        out[t].textured = mesh.textured();
         const std::string problem = check_screen_triangle(out[t], profile);
         if (!problem.empty()) throw std::logic_error("front end produced an unacceptable triangle: " + problem);
       }

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <system_error>
+#include <utility>
 
 #include "fixed.h"
 
@@ -56,6 +57,14 @@ std::string check_screen_triangle(const ScreenTriangle& tri, const Profile& p) {
     if (!(v.y >= -p.height && v.y < 2.0 * p.height))
       return who + "y " + exact_text(v.y) + " is outside the guard band [" + std::to_string(-p.height) +
              ", " + std::to_string(2 * p.height) + ")";
+    if (!tri.textured) continue;
+    if (!std::isfinite(v.u) || !std::isfinite(v.v) || !std::isfinite(v.w))
+      return who + "has a texture coordinate or w that is not a finite number";
+    for (const auto& [name, value] : {std::make_pair("u ", v.u), std::make_pair("v ", v.v)})
+      if (!(std::fabs(value) < kMaxTextureCoordinate))
+        return who + "texture coordinate " + name + exact_text(value) + " is outside (-" +
+               exact_text(kMaxTextureCoordinate) + ", " + exact_text(kMaxTextureCoordinate) + ")";
+    if (!(v.w > 0)) return who + "w " + exact_text(v.w) + " is not positive";
   }
   return "";
 }

@@ -18,10 +18,19 @@ struct ScreenVertex {
   double x = 0, y = 0;  // pixels, y down
   double z = 0;         // [0, 1], 0 is near
   Rgb color;
+  // Texture coordinate, (0, 0) the texture's bottom-left corner and (1, 1) its top-right one, and
+  // the clip-space w of the vertex (> 0; 1 without a perspective projection). Meaningful when the
+  // triangle is textured (docs/design/texturing.md).
+  double u = 0, v = 0, w = 1;
 };
+
+// |u| and |v| of a textured vertex stay below this: the texture sampler's coordinates are s8.20
+// (model/texture_sampler.h).
+constexpr double kMaxTextureCoordinate = 128;
 
 struct ScreenTriangle {
   ScreenVertex v[3];
+  bool textured = false;  // the vertices' u, v and w are given (an OBJ with vt, a .tri uvw section)
 };
 
 struct SnappedVertex {
@@ -36,7 +45,8 @@ struct SnappedTriangle {
 
 // Why a screen triangle is not acceptable to the setup unit, or an empty string.
 // Checks: finite numbers, z in [0, 1], and every coordinate inside the guard band x in [-W, 2W),
-// y in [-H, 2H) (docs/formats.md); snapped, that is within [-W*2^S, 2W*2^S].
+// y in [-H, 2H) (docs/formats.md); snapped, that is within [-W*2^S, 2W*2^S]. A textured triangle's
+// u and v lie in (-128, 128) and its w is positive.
 std::string check_screen_triangle(const ScreenTriangle& tri, const Profile& profile);
 
 // Snaps a checked triangle to the fixed-point grid of docs/arithmetic.md section 1.

@@ -9,12 +9,15 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "cli_test_support.h"
+#include "tri_reader.h"
 
 namespace rastersim::cli_test {
 namespace {
@@ -386,6 +389,38 @@ TEST(CliRender, DumpedTrianglesOfA3dInputRenderIdentically) {
   EXPECT_GT(sa["fragments"].get<int64_t>(), 0);
   EXPECT_EQ(sa, sb);
   EXPECT_EQ(read_text(dir.path("a.csv")), read_text(dir.path("b.csv")));
+}
+
+// An OBJ's texture coordinates reach the screen triangles: --dump-tri writes each triangle's u, v
+// and clip-space w (the .tri uvw section), a cube's corners at 0 or 1, w its distance along the
+// view direction (between the nearest and farthest corner from the eye).
+TEST(CliRender, DumpedTrianglesCarryAnObjsTextureCoordinates) {
+  ScratchDir dir;
+  dir.write("cube.obj",
+            "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+            "f 1/1 4/2 3/3 2/4\nf 5/1 6/2 7/3 8/4\nf 1/1 2/2 6/3 5/4\nf 2/1 3/2 7/3 6/4\nf 3/1 4/2 8/3 7/4\nf 4/1 1/2 5/3 8/4\n");
+  const RunResult r = run_rastersim(dir, {"render", "cube.obj", "--eye", "3,2,4", "--fov", "50", "--dump-tri", "cube.tri",
+                                          "--width", "96", "--height", "64"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  Profile profile;
+  profile.width = 96;
+  profile.height = 64;
+  const std::vector<ScreenTriangle> triangles = read_tri_file(dir.path("cube.tri"), profile);
+  ASSERT_EQ(triangles.size(), 12u);  // nothing clipped
+  const double eye_distance = std::sqrt(9.0 + 4.0 + 16.0);
+  for (const ScreenTriangle& t : triangles) {
+    EXPECT_TRUE(t.textured);
+    std::set<std::pair<double, double>> corners;
+    for (const ScreenVertex& v : t.v) {
+      EXPECT_TRUE(v.u == 0 || v.u == 1) << v.u;
+      EXPECT_TRUE(v.v == 0 || v.v == 1) << v.v;
+      corners.insert({v.u, v.v});
+      EXPECT_GT(v.w, eye_distance - std::sqrt(3.0) - 1e-9);
+      EXPECT_LT(v.w, eye_distance + std::sqrt(3.0) + 1e-9);
+    }
+    EXPECT_EQ(corners.size(), 3u);  // three different corners of the face's texture square
+  }
 }
 
 #ifdef RASTERSIM_HAVE_RTL

@@ -101,6 +101,32 @@ TEST(TriReader, SkipsAByteOrderMark) {
   EXPECT_EQ(tris[0].v[0].x, 10.0);
 }
 
+TEST(TriReader, ReadsTheTextureSectionAfterAnyColours) {
+  const auto tris = read_text(
+      "1 2 0 3 4 0 5 6 1 uvw 0.5 -0.25 1 127.5 0 2 -127.5 3 1e-300\n"
+      "1 2 0 3 4 0 5 6 1 9 8 7 uvw 0 0 1 1 0 1 0 1 1\n"
+      "1 2 0 3 4 0 5 6 1 1 2 3 4 5 6 7 8 9 uvw 0 0 1 1 0 1 0 1 1\n"
+      "1 2 0 3 4 0 5 6 1\n");
+  ASSERT_EQ(tris.size(), 4u);
+  EXPECT_TRUE(tris[0].textured);
+  EXPECT_EQ(tris[0].v[0].u, 0.5);
+  EXPECT_EQ(tris[0].v[0].v, -0.25);
+  EXPECT_EQ(tris[0].v[0].w, 1.0);
+  EXPECT_EQ(tris[0].v[1].u, 127.5);
+  EXPECT_EQ(tris[0].v[1].w, 2.0);
+  EXPECT_EQ(tris[0].v[2].u, -127.5);
+  EXPECT_EQ(tris[0].v[2].v, 3.0);
+  EXPECT_EQ(tris[0].v[2].w, 1e-300);
+  EXPECT_EQ(tris[0].v[2].color, (Rgb{255, 255, 255}));
+  EXPECT_TRUE(tris[1].textured);
+  EXPECT_EQ(tris[1].v[2].color, (Rgb{9, 8, 7}));
+  EXPECT_EQ(tris[1].v[1].u, 1.0);
+  EXPECT_TRUE(tris[2].textured);
+  EXPECT_EQ(tris[2].v[2].color, (Rgb{7, 8, 9}));
+  EXPECT_EQ(tris[2].v[2].v, 1.0);
+  EXPECT_FALSE(tris[3].textured);  // version 1 lines read as before
+}
+
 TEST(TriReader, EmptyInputHasNoTriangles) {
   EXPECT_TRUE(read_text("").empty());
   EXPECT_TRUE(read_text("# nothing\n\n").empty());
@@ -161,7 +187,21 @@ INSTANTIATE_TEST_SUITE_P(
         // Shown as written: it printed as -32.000000, which reads as inside the guard band.
         BadLine{"JustBelowGuardBand", "0 0 0.5 10 0 0.5 -32.00000001 10 0.5", "third vertex x -32.00000001 is outside"},
         // A NUL byte shown, not the end of the message.
-        BadLine{"NulInToken", std::string("0 0 0.5 1") + '\0' + "0 0 0.5 0 10 0.5", "x1 '1\\x000' is not a number"}),
+        BadLine{"NulInToken", std::string("0 0 0.5 1") + '\0' + "0 0 0.5 0 10 0.5", "x1 '1\\x000' is not a number"},
+        // The texture section (format version 2).
+        BadLine{"TextureTruncated", "0 0 0.5 10 0 0.5 0 10 0.5 uvw 0 0 1 1 0 1 0 1",
+                "expected 9 numbers 'u0 v0 w0 u1 v1 w1 u2 v2 w2' after 'uvw', but there are 8"},
+        BadLine{"TwoTextureSections", "0 0 0.5 10 0 0.5 0 10 0.5 uvw 0 0 1 1 0 1 0 1 1 uvw 0 0 1 1 0 1 0 1 1",
+                "after 'uvw', but there are 19"},
+        BadLine{"TextureWithoutPositions", "uvw 0 0 1 1 0 1 0 1 1", "the line has 0 values"},
+        BadLine{"TextureWord", "0 0 0.5 10 0 0.5 0 10 0.5 uvw 0 0 one 1 0 1 0 1 1", "w0 'one' is not a number"},
+        BadLine{"TextureNaN", "0 0 0.5 10 0 0.5 0 10 0.5 1 2 3 uvw 0 0 1 nan 0 1 0 1 1", "u1 'nan' is not a finite number"},
+        BadLine{"TextureOutsideRange", "0 0 0.5 10 0 0.5 0 10 0.5 uvw 0 0 1 1 0 1 0 128 1",
+                "third vertex texture coordinate v 128 is outside (-128, 128)"},
+        BadLine{"TextureBelowRange", "0 0 0.5 10 0 0.5 0 10 0.5 uvw -128 0 1 1 0 1 0 1 1",
+                "first vertex texture coordinate u -128 is outside (-128, 128)"},
+        BadLine{"WZero", "0 0 0.5 10 0 0.5 0 10 0.5 uvw 0 0 0 1 0 1 0 1 1", "first vertex w 0 is not positive"},
+        BadLine{"WNegative", "0 0 0.5 10 0 0.5 0 10 0.5 uvw 0 0 1 1 0 -2 0 1 1", "second vertex w -2 is not positive"}),
     [](const ::testing::TestParamInfo<BadLine>& info) { return info.param.name; });
 
 TEST(TriReader, RandomGarbageIsReadOrRejectedNeverAnythingElse) {
@@ -221,6 +261,14 @@ TEST(TriWriter, RoundTripsBitExactly) {
       v.color = n % 3 == 0 ? Rgb{} : Rgb{uint8_t(rng()), uint8_t(rng()), uint8_t(rng())};
     }
     if (n % 3 == 1) t.v[1].color = t.v[2].color = t.v[0].color;  // flat
+    if (n % 2 == 1) {
+      t.textured = true;
+      for (ScreenVertex& v : t.v) {
+        v.u = -127.9 + unit() * 255.8;
+        v.v = n < 9 ? special[n] : -127.9 + unit() * 255.8;
+        v.w = n < 9 ? special[(n + 1) % 9] + 5e-324 : std::ldexp(unit() + 0.5, int(rng() % 200) - 100);
+      }
+    }
     tris.push_back(t);
   }
   std::ostringstream out;
@@ -236,7 +284,11 @@ TEST(TriWriter, RoundTripsBitExactly) {
       EXPECT_EQ(bits(back[i].v[k].y), bits(tris[i].v[k].y)) << i;
       EXPECT_EQ(bits(back[i].v[k].z), bits(tris[i].v[k].z)) << i;
       EXPECT_EQ(back[i].v[k].color, tris[i].v[k].color) << i;
+      EXPECT_EQ(bits(back[i].v[k].u), bits(tris[i].v[k].u)) << i;
+      EXPECT_EQ(bits(back[i].v[k].v), bits(tris[i].v[k].v)) << i;
+      EXPECT_EQ(bits(back[i].v[k].w), bits(tris[i].v[k].w)) << i;
     }
+    EXPECT_EQ(back[i].textured, tris[i].textured) << i;
   }
 }
 
@@ -246,12 +298,16 @@ TEST(TriWriter, WritesColourOnlyWhenNeeded) {
   for (ScreenVertex& v : flat.v) v.color = Rgb{1, 2, 3};
   ScreenTriangle gouraud = flat;
   gouraud.v[2].color = Rgb{4, 5, 6};
+  ScreenTriangle textured = flat;
+  textured.textured = true;
+  textured.v[0].u = 0.5, textured.v[1].v = -0.25, textured.v[2].w = 2;
   std::ostringstream out;
-  write_tri(out, {white, flat, gouraud});
+  write_tri(out, {white, flat, gouraud, textured});
   EXPECT_EQ(out.str(),
             "0 0 0 1 0 0 0 1 0\n"
             "0 0 0 1 0 0 0 1 0 1 2 3\n"
-            "0 0 0 1 0 0 0 1 0 1 2 3 1 2 3 4 5 6\n");
+            "0 0 0 1 0 0 0 1 0 1 2 3 1 2 3 4 5 6\n"
+            "0 0 0 1 0 0 0 1 0 1 2 3 uvw 0.5 0 1 0 -0.25 1 0 0 2\n");
 }
 
 }  // namespace

@@ -18,6 +18,7 @@ struct OnTriangle {
   double k[3];
   Vec4 point;
   Vec3 color;
+  double u, v;
 };
 bool solve(const ClipVertex (&t)[3], double X, double Y, OnTriangle& out) {
   double e[3], f[3];
@@ -35,7 +36,10 @@ bool solve(const ClipVertex (&t)[3], double X, double Y, OnTriangle& out) {
   out.k[0] = a, out.k[1] = b, out.k[2] = 1 - a - b;
   out.point = {0, 0, 0, 0};
   out.color = {};
+  out.u = out.v = 0;
   for (int i = 0; i < 3; ++i) {
+    out.u += out.k[i] * t[i].u;
+    out.v += out.k[i] * t[i].v;
     const Vec4& p = t[i].position;
     out.point = {out.point.x + out.k[i] * p.x, out.point.y + out.k[i] * p.y, out.point.z + out.k[i] * p.z,
                  out.point.w + out.k[i] * p.w};
@@ -63,8 +67,12 @@ std::vector<ScreenTriangle> clip_one(const ClipVertex (&t)[3], const Profile& p,
 }
 
 // Every output vertex is a point of the input triangle with w > 0 inside near/far and the guard
-// band, with the depth and colour of that point; vertices kept from the input are exact.
-void check_vertices(const ClipVertex (&t)[3], const Profile& p) {
+// band, with the depth, colour, texture coordinate and w of that point; vertices kept from the
+// input are exact. (The triangle is given texture coordinates of its own here.)
+void check_vertices(const ClipVertex (&untextured)[3], const Profile& p) {
+  ClipVertex t[3];
+  const double us[3] = {1, -2, 3.5}, vs[3] = {0.5, 4, -1};
+  for (int i = 0; i < 3; ++i) t[i] = untextured[i], t[i].u = us[i], t[i].v = vs[i];
   std::vector<CornerSources> sources;
   const std::vector<ScreenTriangle> out = clip_one(t, p, &sources);
   ASSERT_EQ(out.size(), sources.size());
@@ -82,6 +90,9 @@ void check_vertices(const ClipVertex (&t)[3], const Profile& p) {
         EXPECT_EQ(v.x, s.x);
         EXPECT_EQ(v.y, s.y);
         EXPECT_EQ(v.z, s.z);
+        EXPECT_EQ(v.u, us[sources[i][k]]);
+        EXPECT_EQ(v.v, vs[sources[i][k]]);
+        EXPECT_EQ(v.w, q.w);
         continue;
       }
       OnTriangle o;
@@ -95,6 +106,10 @@ void check_vertices(const ClipVertex (&t)[3], const Profile& p) {
       EXPECT_NEAR(v.color.r, o.color.x, 0.5 + 1e-6);
       EXPECT_NEAR(v.color.g, o.color.y, 0.5 + 1e-6);
       EXPECT_NEAR(v.color.b, o.color.z, 0.5 + 1e-6);
+      // Texture coordinates are affine in clip space: the clip point's barycentric mix.
+      EXPECT_NEAR(v.u, o.u, 1e-7);
+      EXPECT_NEAR(v.v, o.v, 1e-7);
+      EXPECT_NEAR(v.w, o.point.w, 1e-9 * std::max(1.0, std::fabs(o.point.w)));
     }
   }
 }

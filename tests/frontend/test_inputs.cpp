@@ -96,6 +96,37 @@ TEST(FrontendObj, IgnoredStatementsCommentsAndLineEndings) {
   EXPECT_EQ(m.positions[m.triangles[0][2]].x, 0.5);
 }
 
+TEST(FrontendObj, TextureCoordinatesAreKeptPerCorner) {
+  // A quad whose corner 1 has two texture coordinates (a seam): the corner becomes two vertices.
+  const Mesh m = parse_obj_mesh("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.25\nvt -127.5 127.5 0.5\n"
+                                "f 1/1 2/2 3/3\n"
+                                "f 1/5 3/3 4/6\n",
+                                "uv.obj");
+  ASSERT_TRUE(m.textured());
+  ASSERT_EQ(m.texcoords.size(), m.positions.size());
+  ASSERT_EQ(m.positions.size(), 5u);  // 1/1 and 1/5 are two vertices
+  auto uv = [&](size_t t, int k) { return m.texcoords[m.triangles[t][size_t(k)]]; };
+  EXPECT_EQ(uv(0, 0), (std::array<double, 2>{0, 0}));
+  EXPECT_EQ(uv(0, 1), (std::array<double, 2>{1, 0}));
+  EXPECT_EQ(uv(0, 2), (std::array<double, 2>{1, 1}));
+  EXPECT_EQ(uv(1, 0), (std::array<double, 2>{0.25, 0}));  // vt with u alone: v = 0
+  EXPECT_EQ(uv(1, 1), (std::array<double, 2>{1, 1}));
+  EXPECT_EQ(uv(1, 2), (std::array<double, 2>{-127.5, 127.5}));
+  EXPECT_EQ(m.triangles[0][2], m.triangles[1][1]);  // 3/3 twice: one vertex
+}
+
+TEST(FrontendObj, TextureCoordinatesAreDroppedUnlessEveryCornerHasAUsableOne) {
+  const std::string v3 = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n";
+  EXPECT_FALSE(parse_obj_mesh(v3 + "f 1 2 3\n", "none.obj").textured());
+  EXPECT_FALSE(parse_obj_mesh(v3 + "vt 0 0\nf 1/1 2/1 3/1\nf 2 4 3\n", "some.obj").textured());
+  EXPECT_FALSE(parse_obj_mesh(v3 + "vt 0 0\nvt 128 0\nf 1/1 2/2 3/1\n", "range.obj").textured());
+  EXPECT_FALSE(parse_obj_mesh(v3 + "vt 0 0\nvt 0 -128\nf 1/1 2/2 3/1\n", "range.obj").textured());
+  const Mesh kept = parse_obj_mesh(v3 + "vt 0 0\nvt 127.99 -127.99\nf 1/1 2/2 3/1\n", "kept.obj");
+  ASSERT_TRUE(kept.textured());
+  EXPECT_EQ(kept.positions.size(), 3u);
+}
+
 TEST(FrontendObj, ErrorsNameTheLineAndTheProblem) {
   const std::string v3 = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   struct Case {

@@ -21,8 +21,9 @@ bool same_triangle(const ScreenTriangle& a, const ScreenTriangle& b) {
   for (int k = 0; k < 3; ++k) {
     const ScreenVertex &u = a.v[k], &v = b.v[k];
     if (!same_bits(u.x, v.x) || !same_bits(u.y, v.y) || !same_bits(u.z, v.z) || !(u.color == v.color)) return false;
+    if (a.textured && (!same_bits(u.u, v.u) || !same_bits(u.v, v.v) || !same_bits(u.w, v.w))) return false;
   }
-  return true;
+  return a.textured == b.textured;
 }
 
 }  // namespace
