@@ -1,5 +1,6 @@
-// librastersim_images.so: the image writers of OpenImageIO behind a C interface (image_plugin.h),
-// so that rastersim loads OpenImageIO only when a command writes an image.
+// librastersim_images.so: the image writers and the texture reader of OpenImageIO behind a C
+// interface (image_plugin.h), so that rastersim loads OpenImageIO only when a command writes or
+// reads an image.
 #include "image_plugin.h"
 
 #include <OpenImageIO/filesystem.h>
@@ -53,3 +54,35 @@ extern "C" RASTERSIM_IMAGES_API int rastersim_image_encode(const char* path, int
 }
 
 extern "C" RASTERSIM_IMAGES_API void rastersim_image_free(unsigned char* data) { std::free(data); }
+
+extern "C" RASTERSIM_IMAGES_API int rastersim_image_decode_rgb8(const char* path, int max_size, int* width,
+                                                                int* height, unsigned char** pixels, char* error,
+                                                                size_t error_size) {
+  *pixels = nullptr;
+  const std::string shown(path);
+  // The colour as stored: a PNG's colour is not multiplied by its alpha on the way in.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(path, &config);
+  if (!in) {
+    std::string message = OIIO::geterror();
+    if (message.empty()) message = "not an image OpenImageIO can read";
+    return set_error(error, error_size, shown + ": " + message), 1;
+  }
+  const OIIO::ImageSpec spec = in->spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth != 1)
+    return set_error(error, error_size, shown + ": not a two-dimensional image"), 1;
+  *width = spec.width;
+  *height = spec.height;
+  if (spec.width > max_size || spec.height > max_size) return 0;  // not read; the caller names the limit
+  const size_t count = size_t(spec.width) * size_t(spec.height);
+  std::vector<unsigned char> read(count * size_t(spec.nchannels));
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, read.data()))
+    return set_error(error, error_size, shown + ": " + in->geterror()), 1;
+  *pixels = static_cast<unsigned char*>(std::malloc(3 * count));
+  if (!*pixels) return set_error(error, error_size, shown + ": out of memory"), 1;
+  for (size_t i = 0; i < count; ++i)
+    for (int c = 0; c < 3; ++c)
+      (*pixels)[3 * i + size_t(c)] = read[i * size_t(spec.nchannels) + size_t(spec.nchannels >= 3 ? c : 0)];
+  return 0;
+}

@@ -12,4 +12,12 @@ int rastersim_image_writable(const char* path);
 int rastersim_image_encode(const char* path, int width, int height, int channels, int type, const void* pixels,
                            unsigned char** data, size_t* size, char* error, size_t error_size);
 void rastersim_image_free(unsigned char* data);
+// Reads the first subimage of the image file at `path` as 8-bit RGB, top row first, 3 bytes a
+// pixel (one channel: grey, repeated; two: grey and alpha; more: the first three; the colour as
+// stored, not multiplied by alpha), into a buffer from malloc (*pixels; freed with
+// rastersim_image_free). The pixels of an image wider or taller than `max_size` are not read
+// (*pixels null, *width and *height set). 0 on success; otherwise 1 with a message in
+// error[error_size].
+int rastersim_image_decode_rgb8(const char* path, int max_size, int* width, int* height, unsigned char** pixels,
+                                char* error, size_t error_size);
 }

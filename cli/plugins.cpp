@@ -52,6 +52,7 @@ struct Images {
   decltype(&rastersim_image_writable) writable;
   decltype(&rastersim_image_encode) encode;
   decltype(&rastersim_image_free) free;
+  decltype(&rastersim_image_decode_rgb8) decode_rgb8;
 };
 
 const Images& images() {
@@ -59,10 +60,11 @@ const Images& images() {
   static Images table;
   std::call_once(once, [] {
     const char* file = "librastersim_images.so";
-    void* h = load(file, "the image writers (OpenImageIO)");
+    void* h = load(file, "the image module (OpenImageIO)");
     table = {symbol<decltype(table.writable)>(h, "rastersim_image_writable", file),
              symbol<decltype(table.encode)>(h, "rastersim_image_encode", file),
-             symbol<decltype(table.free)>(h, "rastersim_image_free", file)};
+             symbol<decltype(table.free)>(h, "rastersim_image_free", file),
+             symbol<decltype(table.decode_rgb8)>(h, "rastersim_image_decode_rgb8", file)};
   });
   return table;
 }
@@ -81,6 +83,19 @@ std::vector<unsigned char> encode_image(const std::string& path, int width, int 
   std::vector<unsigned char> bytes(data, data + size);
   images().free(data);
   return bytes;
+}
+
+DecodedImage decode_image_rgb8(const std::string& path, int max_size) {
+  DecodedImage image;
+  unsigned char* pixels = nullptr;
+  char error[512];
+  if (images().decode_rgb8(path.c_str(), max_size, &image.width, &image.height, &pixels, error, sizeof error) != 0)
+    throw std::runtime_error(error);
+  if (pixels) {
+    image.rgb.assign(pixels, pixels + 3 * size_t(image.width) * size_t(image.height));
+    images().free(pixels);
+  }
+  return image;
 }
 
 const void* systemc_api(const std::string& library_path, const std::string& abi) {

@@ -18,6 +18,15 @@ bool image_format_writable(const std::string& path);
 std::vector<unsigned char> encode_image(const std::string& path, int width, int height, int channels, PixelType type,
                                         const void* pixels);
 
+// An image file decoded as 8-bit RGB, top row first, 3 bytes a pixel (grey repeated, alpha dropped);
+// `rgb` empty when the image is wider or taller than `max_size` (its pixels are not read). Throws
+// with OpenImageIO's message, which names the file.
+struct DecodedImage {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;
+};
+DecodedImage decode_image_rgb8(const std::string& path, int max_size);
+
 // A SystemC backend library: the built one (librastersim_systemc.so) when library_path is empty,
 // else a module built on demand (testbench/modules.h). Its rastersim_systemc_api() table, as a
 // `const rastersim::systemc::Api*` (testbench/systemc/systemc_backend.h); throws when the library's
