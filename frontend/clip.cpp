@@ -41,8 +41,10 @@ ClipVertex intersect(const ClipVertex& in, double in_value, const ClipVertex& ou
   r.position = {lerp(in.position.x, out.position.x), lerp(in.position.y, out.position.y),
                 lerp(in.position.z, out.position.z), lerp(in.position.w, out.position.w)};
   r.color = {lerp(in.color.x, out.color.x), lerp(in.color.y, out.color.y), lerp(in.color.z, out.color.z)};
-  r.u = lerp(in.u, out.u);
-  r.v = lerp(in.v, out.v);
+  // Kept between the ends: a rounded lerp could step past one, and out of the sampler's range.
+  auto between = [&](double a, double b) { return std::clamp(lerp(a, b), std::min(a, b), std::max(a, b)); };
+  r.u = between(in.u, out.u);
+  r.v = between(in.v, out.v);
   r.source = -1;
   return r;
 }
