@@ -29,12 +29,6 @@ struct Mesh {
     position_ids.push_back(position_id);
     return uint32_t(positions.size() - 1);
   }
-  // The same for a mesh with texture coordinates (every vertex of it has one).
-  uint32_t add_vertex(const Vec3& position, const Vec3& normal, uint32_t position_id,
-                      const std::array<double, 2>& texcoord) {
-    texcoords.push_back(texcoord);
-    return add_vertex(position, normal, position_id);
-  }
 };
 
 // Area-weighted vertex normals: each triangle adds (p1 - p0) x (p2 - p0) (twice its area along its

@@ -312,10 +312,8 @@ Mesh parse_obj_mesh(const std::string& text, const std::string& file_name) {
         const Vec3 normal = c[k].vn >= 0 ? normalize(Vec3{attrib.normals[3 * c[k].vn], attrib.normals[3 * c[k].vn + 1],
                                                           attrib.normals[3 * c[k].vn + 2]})
                                          : computed[c[k].v];
-        const uint32_t vertex =
-            textured ? mesh.add_vertex(positions[c[k].v], normal, uint32_t(c[k].v), texcoords[size_t(c[k].vt)])
-                     : mesh.add_vertex(positions[c[k].v], normal, uint32_t(c[k].v));
-        it = vertex_of.emplace(key, vertex).first;
+        it = vertex_of.emplace(key, mesh.add_vertex(positions[c[k].v], normal, uint32_t(c[k].v))).first;
+        if (textured) mesh.texcoords.push_back(texcoords[size_t(c[k].vt)]);
       }
       t[k] = it->second;
     }

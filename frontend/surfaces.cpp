@@ -36,46 +36,38 @@ class Lathe {
   }
 
   // One piece of the profile on rows j = 0..rows; with wrap_v the row `rows` is row 0 again.
-  // Texture coordinates: u = i / segments around the axis (column `segments` repeats column 0's
-  // position with u = 1), v from 1 on row 0 to 0 on row `rows` (with wrap_v that row repeats row
-  // 0's positions); a column on the axis takes the u of its segment's middle.
   template <typename Sample>
   void add_piece(int rows, bool wrap_v, Sample sample) {
     std::vector<std::vector<uint32_t>> row_vertices;
     std::vector<bool> on_axis;
-    for (int j = 0; j <= rows; ++j) {
-      const bool repeat_row = wrap_v && j == rows;
-      const ProfileSample s = sample(repeat_row ? 0 : j);
+    const int stored_rows = wrap_v ? rows : rows + 1;
+    for (int j = 0; j < stored_rows; ++j) {
+      const ProfileSample s = sample(j);
       std::vector<uint32_t> ids;
       on_axis.push_back(s.rho == 0.0);
-      const double v = 1.0 - double(j) / rows;
-      for (int column = 0; column <= segments_; ++column) {
-        const int i = column % segments_;
+      for (int i = 0; i < segments_; ++i) {
         // On the axis every column is the same point: one position, and per segment the normal of
         // the segment's middle (the apex of a cone keeps its slant).
         const double c = s.rho == 0.0 ? mid_cos_[i] : cos_[i];
         const double sn = s.rho == 0.0 ? mid_sin_[i] : sin_[i];
         const Vec3 position = s.rho == 0.0 ? Vec3{0.0, s.y, 0.0} : Vec3{s.rho * cos_[i], s.y, s.rho * sin_[i]};
         const Vec3 normal = normalize(Vec3{-s.dy * c, s.drho, -s.dy * sn});
-        // A repeated column or row shares the position id of the vertex it repeats.
-        const uint32_t id = repeat_row ? mesh_.position_ids[row_vertices[0][size_t(column)]]
-                            : column == segments_ ? mesh_.position_ids[ids[0]]
-                                                  : uint32_t(mesh_.positions.size());
-        const double u = s.rho == 0.0 ? (i + 0.5) / segments_ : double(column) / segments_;
-        ids.push_back(mesh_.add_vertex(position, normal, id, {u, v}));
+        const uint32_t id = uint32_t(mesh_.positions.size());
+        ids.push_back(mesh_.add_vertex(position, normal, id));
       }
       row_vertices.push_back(ids);
     }
     for (int j = 0; j < rows; ++j) {
-      const auto& r0 = row_vertices[size_t(j)];
-      const auto& r1 = row_vertices[size_t(j) + 1];
+      const int j1 = (j + 1) % stored_rows;
+      const auto& r0 = row_vertices[j];
+      const auto& r1 = row_vertices[j1];
       for (int i = 0; i < segments_; ++i) {
-        const int i1 = i + 1;
+        const int i1 = (i + 1) % segments_;
         // Quad p00 = (i, j), p10 = (i+1, j), p11 = (i+1, j+1), p01 = (i, j+1): the triangles
         // (p00, p10, p11) and (p00, p11, p01) turn counter-clockwise about du x dv.
-        if (on_axis[j] && on_axis[j + 1]) continue;
-        if (!on_axis[j]) mesh_.triangles.push_back({r0[i], r0[i1], on_axis[j + 1] ? r1[i] : r1[i1]});
-        if (!on_axis[j + 1]) mesh_.triangles.push_back({r0[i], r1[i1], r1[i]});
+        if (on_axis[j] && on_axis[j1]) continue;
+        if (!on_axis[j]) mesh_.triangles.push_back({r0[i], r0[i1], on_axis[j1] ? r1[i] : r1[i1]});
+        if (!on_axis[j1]) mesh_.triangles.push_back({r0[i], r1[i1], r1[i]});
       }
     }
   }
@@ -147,9 +139,7 @@ Mesh make_plane(double width, double depth, int divisions_x, int divisions_z) {
     for (int i = 0; i <= divisions_x; ++i) {
       const Vec3 p{lerp(-0.5 * width, 0.5 * width, double(i) / divisions_x), 0.0,
                    lerp(0.5 * depth, -0.5 * depth, double(j) / divisions_z)};
-      // Texture coordinates: u from 0 at -x to 1 at +x, v from 0 at +z to 1 at -z.
-      mesh.add_vertex(p, {0.0, 1.0, 0.0}, uint32_t(mesh.positions.size()),
-                      {double(i) / divisions_x, double(j) / divisions_z});
+      mesh.add_vertex(p, {0.0, 1.0, 0.0}, uint32_t(mesh.positions.size()));
     }
   const auto at = [&](int i, int j) { return uint32_t(j * (divisions_x + 1) + i); };
   for (int j = 0; j < divisions_z; ++j)

@@ -1,9 +1,7 @@
 // Built-in parametric surfaces, tessellated on a (u, v) grid. Every grid vertex is computed once and
-// shared by index between neighbouring quads; a seam's last column (or a torus's last row) repeats
-// the first one's positions bit for bit with the other end of the texture coordinate, and rows
+// shared by index between neighbouring quads (and seams wrap to the first column or row), and rows
 // shared by two pieces of a surface (a cylinder's rim) are computed from the same numbers, so the
-// meshes are watertight bit for bit. Normals: the cross product of the partial derivatives. Every
-// surface has texture coordinates: (u, v) of its grid, each in [0, 1].
+// meshes are watertight bit for bit. Normals: the cross product of the partial derivatives.
 // All are centred on the origin with +y as their axis; docs/frontend.md lists the parameters.
 #pragma once
 

@@ -3,9 +3,7 @@
 // and vertex normals agree with the faces and with the analytic surface.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <map>
-#include <set>
 #include <tuple>
 
 #include "frontend/surfaces.h"
@@ -88,9 +86,7 @@ TEST(FrontendSurfaces, TorusIsClosedOutward) {
     EXPECT_NEAR(length(radial), minor, 1e-12);
     EXPECT_NEAR(dot(normalize(radial), m.normals[v]), 1.0, 1e-12);
   }
-  // Every grid point once, and the seams' last column and row again (with u or v = 1).
-  EXPECT_EQ(m.positions.size(), size_t(21 * 10));
-  EXPECT_EQ(std::set<uint32_t>(m.position_ids.begin(), m.position_ids.end()).size(), size_t(20 * 9));
+  EXPECT_EQ(m.positions.size(), size_t(20 * 9));  // every grid vertex once: both seams wrap
 }
 
 TEST(FrontendSurfaces, CylinderAndConeAreClosedOutward) {
@@ -134,41 +130,6 @@ TEST(FrontendSurfaces, PlaneFacesUpAndSharesGridVertices) {
   EXPECT_EQ(m.positions.back().x, 2);
   EXPECT_EQ(m.positions.front().z, 1);
   EXPECT_EQ(m.positions.back().z, -1);
-}
-
-// Texture coordinates: the sphere's (u, v) are its longitude and latitude (u = 0 and 1 both on the
-// seam, v = 1 at the north pole), the plane's its corners; vertices that share a position id are
-// the same point.
-TEST(FrontendSurfaces, TextureCoordinatesFollowTheGrid) {
-  const double kPi = 3.14159265358979323846;
-  const Mesh sphere = make_sphere(2.0, 12, 6);
-  ASSERT_TRUE(sphere.textured());
-  ASSERT_EQ(sphere.texcoords.size(), sphere.positions.size());
-  bool seam_at_zero = false, seam_at_one = false;
-  for (size_t k = 0; k < sphere.positions.size(); ++k) {
-    const Vec3& p = sphere.positions[k];
-    const double u = sphere.texcoords[k][0], v = sphere.texcoords[k][1];
-    EXPECT_NEAR(p.y, 2.0 * std::cos(kPi * (1 - v)), 1e-12);
-    if (p.x != 0 || p.z != 0) {
-      const double rho = std::hypot(p.x, p.z);
-      EXPECT_NEAR(p.x, rho * std::cos(2 * kPi * u), 1e-12);
-      EXPECT_NEAR(p.z, rho * std::sin(2 * kPi * u), 1e-12);
-      seam_at_zero |= u == 0, seam_at_one |= u == 1;
-    }
-    const Vec3& first = sphere.positions[sphere.position_ids[k]];
-    EXPECT_TRUE(first.x == p.x && first.y == p.y && first.z == p.z) << k;
-  }
-  EXPECT_TRUE(seam_at_zero && seam_at_one);
-  for (const Mesh& m : {make_torus(1, 0.3, 7, 5), make_cylinder(0.5, 1, 6, 2), make_cone(0.5, 1, 6, 2)}) {
-    ASSERT_EQ(m.texcoords.size(), m.positions.size());
-    for (const auto& [u, v] : m.texcoords) EXPECT_TRUE(u >= 0 && u <= 1 && v >= 0 && v <= 1) << u << " " << v;
-  }
-  const Mesh plane = make_plane(4, 2, 3, 5);
-  ASSERT_EQ(plane.texcoords.size(), plane.positions.size());
-  for (size_t k = 0; k < plane.positions.size(); ++k) {
-    EXPECT_DOUBLE_EQ(plane.texcoords[k][0], (plane.positions[k].x + 2) / 4);  // 0 at -x, 1 at +x
-    EXPECT_DOUBLE_EQ(plane.texcoords[k][1], (1 - plane.positions[k].z) / 2);  // 0 at +z, 1 at -z
-  }
 }
 
 TEST(FrontendSurfaces, RegistryBuildsEveryKindWithDefaults) {
