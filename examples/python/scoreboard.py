@@ -13,7 +13,8 @@ import rastersim
 def main(profile_path, tri_path, fragments_path, buffers_path):
     pipeline = rastersim.Pipeline(open(profile_path).read())
     for number, line in enumerate(open(tri_path), 1):
-        values = [float(v) for v in line.split("#")[0].split()]
+        # The positions and colours; a texture section (format version 2: "uvw" and nine numbers) is not used here.
+        values = [float(v) for v in line.split("#")[0].split("uvw")[0].split()]
         if not values:
             continue
         if len(values) not in (9, 12, 18):

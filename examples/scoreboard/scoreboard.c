@@ -26,11 +26,14 @@ static char* read_file(const char* path) {
   return text;
 }
 
-/* A .tri line: 9 numbers, then none, 3 or 9 colour values; '#' starts a comment. Returns the
- * number of values read (0 for a blank line). */
+/* A .tri line: 9 numbers, then none, 3 or 9 colour values; '#' starts a comment, and a texture
+ * section ("uvw" and nine numbers, format version 2) is not used here. Returns the number of
+ * values read (0 for a blank line). */
 static int parse_line(char* line, double values[18]) {
   char* hash = strchr(line, '#');
   if (hash) *hash = '\0';
+  char* texture = strstr(line, "uvw");
+  if (texture) *texture = '\0';
   int count = 0;
   for (char* token = strtok(line, " \t\r\n"); token && count < 18; token = strtok(NULL, " \t\r\n"))
     values[count++] = strtod(token, NULL);

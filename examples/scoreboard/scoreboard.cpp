@@ -3,6 +3,7 @@
 // Usage: scoreboard_cpp PROFILE.json TRIANGLES.tri FRAGMENTS.csv BUFFERS.txt
 #include <rastersim/rastersim.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -34,7 +35,8 @@ int main(int argc, char** argv) {
   fragments << "tri,x,y,z,pass,r,g,b,cycle\n";
   std::string line;
   for (int number = 1; std::getline(tri, line); ++number) {
-    std::istringstream in(line.substr(0, line.find('#')));
+    // Up to a comment or a texture section ("uvw" and nine numbers, format version 2; not used here).
+    std::istringstream in(line.substr(0, std::min(line.find('#'), line.find("uvw"))));
     std::vector<double> v;
     for (double value; in >> value;) v.push_back(value);
     if (v.empty()) continue;

@@ -19,7 +19,7 @@ def read_tri(path):
     """The .tri lines as lists of three (x, y, z, r, g, b) vertices (docs/formats.md)."""
     triangles = []
     for line in open(path):
-        values = [float(v) for v in line.split("#")[0].split()]
+        values = [float(v) for v in line.split("#")[0].split("uvw")[0].split()]  # without a texture section
         if not values:
             continue
         colours = {9: [(255, 255, 255)] * 3, 12: [tuple(values[9:12])] * 3,
