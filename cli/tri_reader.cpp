@@ -125,14 +125,15 @@ std::string parse_channel(const std::string& token, const char* field, uint8_t& 
   return "";
 }
 
-// Parses a line's texture section, the tokens after "uvw".
-std::string parse_texture(const std::vector<std::string>& tokens, ScreenTriangle& tri) {
-  if (tokens.size() != 9)
+// Parses a line's texture section, the tokens [first, last) after "uvw".
+std::string parse_texture(std::vector<std::string>::const_iterator first, std::vector<std::string>::const_iterator last,
+                          ScreenTriangle& tri) {
+  if (last - first != 9)
     return std::string("expected 9 numbers 'u0 v0 w0 u1 v1 w1 u2 v2 w2' after '") + kTextureKeyword +
-           "', but there are " + std::to_string(tokens.size());
+           "', but there are " + std::to_string(last - first);
   for (int i = 0; i < 9; ++i) {
     ScreenVertex& v = tri.v[i / 3];
-    std::string error = parse_real(tokens[size_t(i)], kTextureNames[i], i % 3 == 0 ? v.u : i % 3 == 1 ? v.v : v.w);
+    std::string error = parse_real(first[i], kTextureNames[i], i % 3 == 0 ? v.u : i % 3 == 1 ? v.v : v.w);
     if (!error.empty()) return error;
   }
   tri.textured = true;
@@ -140,14 +141,13 @@ std::string parse_texture(const std::vector<std::string>& tokens, ScreenTriangle
 }
 
 // Parses one triangle line; returns an error sentence or an empty string.
-std::string parse_triangle(std::vector<std::string> tokens, ScreenTriangle& tri) {
+std::string parse_triangle(const std::vector<std::string>& tokens, ScreenTriangle& tri) {
   const auto keyword = std::find(tokens.begin(), tokens.end(), kTextureKeyword);
   if (keyword != tokens.end()) {
-    std::string error = parse_texture(std::vector<std::string>(keyword + 1, tokens.end()), tri);
+    std::string error = parse_texture(keyword + 1, tokens.end(), tri);
     if (!error.empty()) return error;
-    tokens.erase(keyword, tokens.end());
   }
-  const size_t n = tokens.size();
+  const size_t n = size_t(keyword - tokens.begin());  // the values before any texture section
   if (n != 9 && n != 12 && n != 18)
     return "expected 9 numbers 'x0 y0 z0 x1 y1 z1 x2 y2 z2', optionally followed by 3 colour values "
            "'r g b' or 9 'r0 g0 b0 r1 g1 b1 r2 g2 b2', but the line has " +
