@@ -23,6 +23,8 @@ struct Fragment {
   Rgb color;
   bool pass;       // depth test result
   int64_t cycle;   // cycle the z-buffer took it from the walker (docs/cycle-model.md)
+  bool textured = false;  // its triangle is textured: uv holds the divided texture coordinate
+  TextureCoordinate uv;   // s8.20 each (docs/arithmetic.md section 5)
 };
 
 class FragmentSink {
@@ -101,7 +103,11 @@ class Pipeline {
     const bool pass = zbuffer_.test_and_write(address, z, color);
     ++record.fragments;
     record.depth_pass += pass;
-    if (Trace) sink_->on_fragment(Fragment{record.index, x, y, z, color, pass, taken});
+    if (Trace) {
+      Fragment fragment{record.index, x, y, z, color, pass, taken, false, {}};
+      if (adders.textured()) fragment.textured = true, fragment.uv = adders.texture_coordinate();
+      sink_->on_fragment(fragment);
+    }
     return taken;
   }
 

@@ -1,11 +1,13 @@
 #include "triangle.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <system_error>
 #include <utility>
 
 #include "fixed.h"
+#include "widths.h"
 
 namespace rastersim {
 
@@ -27,6 +29,40 @@ uint32_t quantize_depth(double z, int z_bits) {
   const i128 m = i128(std::ldexp(mantissa, 53));   // integer, z = m / 2^(53 - exponent)
   const int k = 53 - exponent;                      // k <= 93
   return uint32_t((2 * m * i128(scale) + (i128(1) << k)) >> (k + 1));
+}
+
+namespace {
+
+// A finite double as m 2^e with the integer |m| < 2^53 (m = 0 for 0).
+struct Dyadic {
+  int64_t m;
+  int e;
+};
+Dyadic dyadic(double v) {
+  int exponent = 0;
+  const double mantissa = std::frexp(v, &exponent);  // v = mantissa 2^exponent, |mantissa| in [0.5, 1)
+  return {int64_t(std::ldexp(mantissa, 53)), exponent - 53};
+}
+
+}  // namespace
+
+int64_t texture_q(double w_min, double w) {
+  // 2^P a 2^ea / (b 2^eb) + 1/2 = (a 2^(P+1+ea-eb) + b) / (2 b); P + 1 + ea - eb >= P + 1 - 15 - 1 > 0
+  // because w <= 2^14 w_min and a, b lie in [2^52, 2^53). The numerator stays below 2^(53+P+3).
+  const Dyadic a = dyadic(w_min), b = dyadic(w);
+  const int shift = kTextureFractionBits + 1 + a.e - b.e;
+  return int64_t(((i128(a.m) << shift) + b.m) / (2 * i128(b.m)));
+}
+
+int64_t texture_scaled(double c, int64_t q) {
+  if (c == 0) return 0;
+  // c q = m q 2^e exactly (|m q| < 2^(53+P+1)); floor(x + 1/2) = (m q + 2^(-e-1)) >> -e when e < 0.
+  const Dyadic d = dyadic(c);
+  const i128 product = i128(d.m) * q;
+  if (d.e >= 0) return int64_t(product << d.e);  // |c| >= 2^52: not a texture coordinate, kept exact
+  const int k = -d.e;
+  if (k > 120) return 0;  // |c q| < 2^(54+P-120) < 1/2
+  return int64_t((product + (i128(1) << (k - 1))) >> k);
 }
 
 namespace {
@@ -66,16 +102,34 @@ std::string check_screen_triangle(const ScreenTriangle& tri, const Profile& p) {
                exact_text(kMaxTextureCoordinate) + ", " + exact_text(kMaxTextureCoordinate) + ")";
     if (!(v.w > 0)) return who + "w " + exact_text(v.w) + " is not positive";
   }
+  if (tri.textured) {
+    // The u, v bound of docs/arithmetic.md section 5 holds up to this ratio.
+    const double w_min = std::min({tri.v[0].w, tri.v[1].w, tri.v[2].w});
+    const double w_max = std::max({tri.v[0].w, tri.v[1].w, tri.v[2].w});
+    if (w_max > std::ldexp(w_min, kMaxTextureWRatioLog2))
+      return "the largest w " + exact_text(w_max) + " is more than " +
+             std::to_string(1 << kMaxTextureWRatioLog2) + " times the smallest, " + exact_text(w_min);
+  }
   return "";
 }
 
-SnappedTriangle snap(const ScreenTriangle& tri, const Profile& p) {
+SnappedTriangle snap(const ScreenTriangle& tri, const Profile& p, bool perspective) {
   SnappedTriangle out;
   for (int k = 0; k < 3; ++k) {
     out.v[k].x = int32_t(snap_coordinate(tri.v[k].x, p.subpixel_bits));
     out.v[k].y = int32_t(snap_coordinate(tri.v[k].y, p.subpixel_bits));
     out.v[k].z = quantize_depth(tri.v[k].z, p.z_bits);
     out.v[k].color = tri.v[k].color;
+  }
+  out.textured = tri.textured;
+  if (tri.textured) {
+    const double w_min = std::min({tri.v[0].w, tri.v[1].w, tri.v[2].w});
+    for (int k = 0; k < 3; ++k) {
+      SnappedVertex& v = out.v[k];
+      v.q = perspective ? texture_q(w_min, tri.v[k].w) : int64_t(1) << kTextureFractionBits;
+      v.s = texture_scaled(tri.v[k].u, v.q);
+      v.t = texture_scaled(tri.v[k].v, v.q);
+    }
   }
   return out;
 }

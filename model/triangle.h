@@ -37,22 +37,31 @@ struct SnappedVertex {
   int32_t x = 0, y = 0;  // subpixels, s(coord_bits-S).S: floor(v * 2^S + 1/2)
   uint32_t z = 0;        // depth, uN: floor(z * (2^N - 1) + 1/2)
   Rgb color;             // u8.0 per channel
+  // Textured only (docs/arithmetic.md section 5), P = kTextureFractionBits:
+  int64_t q = 0;         // 1/w scaled by the triangle's smallest w, u1.P: floor(2^P w_min / w + 1/2)
+  int64_t s = 0, t = 0;  // u/w and v/w in that scale, s8.P: floor(u q + 1/2), floor(v q + 1/2)
 };
 
 struct SnappedTriangle {
   SnappedVertex v[3];
+  bool textured = false;
 };
 
 // Why a screen triangle is not acceptable to the setup unit, or an empty string.
 // Checks: finite numbers, z in [0, 1], and every coordinate inside the guard band x in [-W, 2W),
 // y in [-H, 2H) (docs/formats.md); snapped, that is within [-W*2^S, 2W*2^S]. A textured triangle's
-// u and v lie in (-128, 128) and its w is positive.
+// u and v lie in (-128, 128), its w are positive and the largest is at most 2^14 times the smallest.
 std::string check_screen_triangle(const ScreenTriangle& tri, const Profile& profile);
 
-// Snaps a checked triangle to the fixed-point grid of docs/arithmetic.md section 1.
-SnappedTriangle snap(const ScreenTriangle& tri, const Profile& profile);
+// Snaps a checked triangle to the fixed-point grid of docs/arithmetic.md section 1, and a textured
+// one's texture coordinates as section 5 says (`perspective` false: every w taken as equal).
+SnappedTriangle snap(const ScreenTriangle& tri, const Profile& profile, bool perspective = true);
 
 int64_t snap_coordinate(double v, int subpixel_bits);
 uint32_t quantize_depth(double z, int z_bits);
+// floor(2^P w_min / w + 1/2) and floor(c q + 1/2), exact (no rounding before the last one);
+// 0 < w_min <= w <= 2^14 w_min, |c| < 128, 0 < q <= 2^P.
+int64_t texture_q(double w_min, double w);
+int64_t texture_scaled(double c, int64_t q);
 
 }  // namespace rastersim

@@ -21,9 +21,9 @@ TriangleSetup::TriangleSetup(const Profile& profile) : profile_(profile), widths
 // Plane through the three vertex values, by barycentric weights of the edge functions:
 // P(Q) = (v0 E1(Q) + v1 E2(Q) + v2 E0(Q)) / area2, edge k opposite vertex k+2.
 PlaneSetup TriangleSetup::plane(const i128 value[3], const i128 edge_at_start[3], const int64_t step_x[3],
-                                const int64_t step_y[3], const FloorDivider& by_area2, int reg_bits,
+                                const int64_t step_y[3], const FloorDivider& by_area2, PlaneFormatBits format,
                                 const char* what) const {
-  const int F = widths_.guard_bits;
+  const int F = format.guard_bits;
   auto weighted = [&](auto edge) { return value[0] * edge(1) + value[1] * edge(2) + value[2] * edge(0); };
   const i128 start_num = weighted([&](int k) { return edge_at_start[k]; });
   const i128 step_x_num = weighted([&](int k) { return i128(step_x[k]); });
@@ -31,9 +31,9 @@ PlaneSetup TriangleSetup::plane(const i128 value[3], const i128 edge_at_start[3]
   // num 2^F as a product: a left shift of a negative value is undefined behaviour in C++17.
   auto quotient = [&](i128 num) {
     const i128 dividend = num * (i128(1) << F);
-    if (unsigned_bits(dividend < 0 ? -dividend : dividend) > widths_.divider_bits)
-      throw WidthOverflow(std::string(what) + " dividend exceeds divider_bits");
-    return wrap_signed(by_area2(dividend).quotient, reg_bits);
+    if (unsigned_bits(dividend < 0 ? -dividend : dividend) > format.divider_bits)
+      throw WidthOverflow(std::string(what) + " dividend exceeds its divider width");
+    return wrap_signed(by_area2(dividend).quotient, format.reg_bits);
   };
   PlaneSetup p;
   p.start = quotient(start_num);
@@ -46,7 +46,7 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
   const Widths& w = widths_;
   const int S = profile_.subpixel_bits;
   // Every field of a drawn triangle's record is written below (the colour planes only with Gouraud
-  // shading; otherwise they keep a fresh record's zeros); a rejected one's record is a fresh one with
+  // shading; otherwise they keep a fresh record's zeros; the texture planes zero when untextured); a rejected one's record is a fresh one with
   // what was decided. So the record is not cleared for every triangle.
   auto reject = [&r](SetupStatus status) {
     SetupResult fresh;
@@ -131,14 +131,35 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
   // Planes: depth always, colour for Gouraud shading.
   const i128 z[3] = {v[0].z, v[1].z, v[2].z};
   const FloorDivider by_area(area);
-  r.depth = plane(z, unbiased, step_x, step_y, by_area, w.z_reg_bits, "depth plane");
+  const PlaneFormatBits depth_format{w.guard_bits, w.z_reg_bits, w.divider_bits};
+  const PlaneFormatBits color_format{w.guard_bits, w.color_reg_bits, w.divider_bits};
+  const PlaneFormatBits texture_format{w.texture_guard_bits, w.texture_reg_bits, w.texture_divider_bits};
+  r.depth = plane(z, unbiased, step_x, step_y, by_area, depth_format, "depth plane");
   if (profile_.shading == Shading::Gouraud) {
     const i128 red[3] = {v[0].color.r, v[1].color.r, v[2].color.r};
     const i128 green[3] = {v[0].color.g, v[1].color.g, v[2].color.g};
     const i128 blue[3] = {v[0].color.b, v[1].color.b, v[2].color.b};
-    r.color[0] = plane(red, unbiased, step_x, step_y, by_area, w.color_reg_bits, "red plane");
-    r.color[1] = plane(green, unbiased, step_x, step_y, by_area, w.color_reg_bits, "green plane");
-    r.color[2] = plane(blue, unbiased, step_x, step_y, by_area, w.color_reg_bits, "blue plane");
+    r.color[0] = plane(red, unbiased, step_x, step_y, by_area, color_format, "red plane");
+    r.color[1] = plane(green, unbiased, step_x, step_y, by_area, color_format, "green plane");
+    r.color[2] = plane(blue, unbiased, step_x, step_y, by_area, color_format, "blue plane");
+  }
+  // Texture planes (docs/arithmetic.md section 5); an untextured record keeps them zero.
+  r.textured = input.textured;
+  if (input.textured) {
+    for (const SnappedVertex& vertex : v) {
+      if (vertex.q <= 0 || vertex.q > (int64_t(1) << kTextureFractionBits))
+        throw_width_overflow(vertex.q, kTextureFractionBits + 1, "vertex Q");
+      check_signed(vertex.s, kTextureFractionBits + 9, "vertex S");
+      check_signed(vertex.t, kTextureFractionBits + 9, "vertex T");
+    }
+    const i128 s[3] = {v[0].s, v[1].s, v[2].s};
+    const i128 t[3] = {v[0].t, v[1].t, v[2].t};
+    const i128 q[3] = {v[0].q, v[1].q, v[2].q};
+    r.texture[0] = plane(s, unbiased, step_x, step_y, by_area, texture_format, "S plane");
+    r.texture[1] = plane(t, unbiased, step_x, step_y, by_area, texture_format, "T plane");
+    r.texture[2] = plane(q, unbiased, step_x, step_y, by_area, texture_format, "Q plane");
+  } else {
+    for (PlaneSetup& p : r.texture) p = PlaneSetup{};
   }
 
   // Planes along the left edges (docs/cycle-model.md): slot j takes the j-th edge with step_x > 0.
@@ -158,6 +179,8 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
     r.left[j].depth = along(r.depth, quot, step_quot, w.z_reg_bits);
     if (profile_.shading == Shading::Gouraud)
       for (int c = 0; c < 3; ++c) r.left[j].color[c] = along(r.color[c], quot, step_quot, w.color_reg_bits);
+    for (int c = 0; c < 3; ++c)
+      r.left[j].texture[c] = input.textured ? along(r.texture[c], quot, step_quot, w.texture_reg_bits) : EdgePlane{};
   }
 }
 

@@ -20,7 +20,7 @@ using EdgeStep = Reg<31>;                  // edge step per pixel, s.2S
 using SpanQuotient = Reg<45>;              // floor(E / |edge_step_x|), s.0
 using SpanStepQuotient = Reg<31>;          // floor(edge_step_y / |edge_step_x|), s.0
 using SpanRemainder = Reg<30, false>;      // in [0, |edge_step_x|), u.2S
-using PlaneValue = Reg<57>;                // plane register, s(N+1).F or s9.F, wrapped
+using PlaneValue = Reg<64>;                // plane register, s(N+1).F, s9.F or s9.(P+Ft), wrapped
 constexpr Widths kLargestWidths = derive_widths(4096, 4096, 8, 32, 24);
 static_assert(kLargestWidths.area_bits <= AreaValue::bits);
 static_assert(kLargestWidths.edge_bits <= EdgeValue::bits && kLargestWidths.edge_bits <= SpanQuotient::bits);
@@ -28,6 +28,7 @@ static_assert(kLargestWidths.edge_step_x_bits <= EdgeStep::bits && kLargestWidth
 static_assert(kLargestWidths.edge_step_y_bits <= SpanStepQuotient::bits);
 static_assert(kLargestWidths.span_rem_bits <= SpanRemainder::bits);
 static_assert(kLargestWidths.z_reg_bits <= PlaneValue::bits && kLargestWidths.color_reg_bits <= PlaneValue::bits);
+static_assert(kLargestWidths.texture_reg_bits <= PlaneValue::bits);
 
 enum class SetupStatus : uint8_t {
   Drawn,       // goes on to the walker
@@ -74,6 +75,7 @@ struct EdgePlane {
 struct LeftEdgePlanes {
   EdgePlane depth;
   EdgePlane color[3];  // r, g, b (zero, as their planes, without Gouraud shading)
+  EdgePlane texture[3];  // S, T, Q (zero, as their planes, for an untextured triangle)
 };
 constexpr int kLeftEdgeSlots = 2;
 
@@ -86,6 +88,8 @@ struct SetupResult {
   PlaneSetup depth{};            // s(N+1).F
   PlaneSetup color[3]{};         // r, g, b planes, s9.F (Gouraud)
   Rgb flat_color;                // provoking (first) vertex colour (flat)
+  bool textured = false;         // the texture planes below are set (docs/arithmetic.md section 5)
+  PlaneSetup texture[3]{};       // S = u/w, T = v/w, Q = 1/w planes, s9.(P+Ft)
   LeftEdgePlanes left[kLeftEdgeSlots]{};
 };
 
@@ -102,8 +106,13 @@ class TriangleSetup {
   const Widths& widths() const { return widths_; }
 
  private:
+  // The register format of a plane: fraction bits beyond the vertex values', width, dividend limit.
+  struct PlaneFormatBits {
+    int guard_bits, reg_bits, divider_bits;
+  };
   PlaneSetup plane(const i128 value[3], const i128 edge_at_start[3], const int64_t step_x[3],
-                   const int64_t step_y[3], const FloorDivider& by_area2, int reg_bits, const char* what) const;
+                   const int64_t step_y[3], const FloorDivider& by_area2, PlaneFormatBits format,
+                   const char* what) const;
   Profile profile_;
   Widths widths_;
 };

@@ -8,6 +8,13 @@
 
 namespace rastersim {
 
+// Textured triangles (docs/arithmetic.md section 5): the vertices' Q = 1/w, S = u/w, T = v/w carry
+// P fraction bits, and one triangle's w ratio is at most 2^kMaxTextureWRatioLog2, which with P bounds
+// the divided u, v within 0.0024 texel of a 1024-texel texture. P = 41 makes the largest profile's
+// texture registers exactly 64 bits (docs/widths.md).
+constexpr int kTextureFractionBits = 41;
+constexpr int kMaxTextureWRatioLog2 = 14;
+
 struct Widths {
   // Plane registers: F fraction (guard) bits. Chosen so that the accumulated floor error of the
   // start value and (W-1)+(H-1) steps stays at most half an LSB: 2^F >= 2 (W + H - 1).
@@ -22,6 +29,9 @@ struct Widths {
   int divider_bits;      // widest dividend magnitude; the divider takes this many cycles
   int z_reg_bits;        // depth plane register, s(N+1).F, wraps (modular, see docs/arithmetic.md)
   int color_reg_bits;    // colour plane register, s9.F, wraps
+  int texture_guard_bits;    // Ft, the texture planes' fraction bits beyond P: always the derived F
+  int texture_reg_bits;      // texture plane registers (S, T, Q), s9.(P+Ft), wrap
+  int texture_divider_bits;  // widest texture plane dividend magnitude
   int x_bits;            // pixel x counter, u
   int y_bits;            // pixel y counter, u
   int addr_bits;         // z-buffer word address y * W + x
@@ -58,6 +68,10 @@ constexpr Widths derive_widths(int width, int height, int subpixel_bits, int z_b
   w.divider_bits = unsigned_bits(36 * z_max * WH * (i128(1) << w.guard_bits));
   w.z_reg_bits = z_bits + w.guard_bits + 1;
   w.color_reg_bits = 8 + w.guard_bits + 1;
+  w.texture_guard_bits = derived_guard_bits(width, height);
+  w.texture_reg_bits = kTextureFractionBits + w.texture_guard_bits + 9;
+  w.texture_divider_bits =
+      unsigned_bits(36 * (i128(1) << (kTextureFractionBits + 7)) * WH * (i128(1) << w.texture_guard_bits));
   w.x_bits = unsigned_bits(W - 1);
   w.y_bits = unsigned_bits(H - 1);
   w.addr_bits = unsigned_bits(W * H - 1);
@@ -164,5 +178,7 @@ static_assert(derive_widths(4096, 4096, 8, 32, 0).edge_bits <= 63);
 static_assert(derive_widths(4096, 4096, 8, 32, 0).z_reg_bits <= 63);
 static_assert(derive_widths(4096, 4096, 8, 32, 24).z_reg_bits <= 63);
 static_assert(derive_widths(4096, 4096, 8, 32, 24).divider_bits <= 126);
+static_assert(derive_widths(4096, 4096, 8, 32, 0).texture_reg_bits <= 64);
+static_assert(derive_widths(4096, 4096, 8, 32, 0).texture_divider_bits <= 126);
 
 }  // namespace rastersim

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 
+#include "perspective_divide.h"
 #include "triangle_setup.h"
 
 namespace rastersim {
@@ -60,15 +61,16 @@ class PlaneRegister {
   PlaneFormat format_;
 };
 
-// The unit: the depth register and three colour registers (used for Gouraud shading), stepped
-// together. The model accumulates modulo 2^64 and reduces to the register width when a value is
+// The unit: the depth register and three colour registers (used for Gouraud shading), and for a
+// textured triangle the S, T, Q registers (docs/arithmetic.md section 5), stepped together. The model accumulates modulo 2^64 and reduces to the register width when a value is
 // read: 2^reg_bits divides 2^64, so this equals wrapping at every step, with fewer operations.
 class ZAdder {
  public:
   ZAdder(const Widths& widths, int z_bits, bool gouraud)
       : gouraud_(gouraud),
         depth_format_{widths.z_reg_bits, widths.guard_bits, (int64_t(1) << z_bits) - 1},
-        color_format_{widths.color_reg_bits, widths.guard_bits, 255} {}
+        color_format_{widths.color_reg_bits, widths.guard_bits, 255},
+        texture_format_{widths.texture_reg_bits, widths.texture_guard_bits, 0} {}
 
   void load(const SetupResult& s) {
     const PlaneSetup* planes[kPlanes] = {&s.depth, &s.color[0], &s.color[1], &s.color[2]};
@@ -84,27 +86,41 @@ class ZAdder {
       }
     }
     flat_ = s.flat_color;
+    textured_ = s.textured;
+    if (textured_) texture_.load(s);
   }
   void step_x() {
     for (int k = 0; k < kPlanes; ++k) value_[k] += step_x_[k];
+    if (textured_) texture_.step_x(1);
   }
   // n steps at once: value + n step_x, equal to n additions modulo 2^64 (and so modulo 2^reg_bits).
   void step_x(int64_t n) {
     for (int k = 0; k < kPlanes; ++k) value_[k] += uint64_t(n) * step_x_[k];
+    if (textured_) texture_.step_x(n);
   }
   void next_row() {
     for (int k = 0; k < kPlanes; ++k) value_[k] = row_[k] += step_y_[k];
+    if (textured_) texture_.next_row();
   }
   // Span walker: enter the current row at the bounding box's x0 (slot < 0) or at the span start
   // of the left edge in `slot` (docs/cycle-model.md).
   void enter_span_row(int slot) {
     for (int k = 0; k < kPlanes; ++k) value_[k] = slot < 0 ? row_[k] : along_[slot][k];
+    if (textured_) texture_.enter_span_row(slot);
   }
   // Each left-edge slot to the next row: its edge's quotient moves by span_step_quot, and by one
   // more on the DDA's carry, which moves the span start one pixel left of where `step` took it.
   void step_left_edges(const bool carry[kLeftEdgeSlots]) {
     for (int j = 0; j < kLeftEdgeSlots; ++j)
       for (int k = 0; k < kPlanes; ++k) along_[j][k] += along_step_[j][k] - (carry[j] ? step_x_[k] : 0);
+    if (textured_) texture_.step_left_edges(carry);
+  }
+
+  bool textured() const { return textured_; }
+  // A textured triangle's u, v at the current pixel: the perspective divide of its S, T, Q registers.
+  TextureCoordinate texture_coordinate() const {
+    const uint64_t* v = texture_.value;
+    return perspective_divide(texture_format_.wrap(v[0]), texture_format_.wrap(v[1]), texture_format_.wrap(v[2]));
   }
 
   PlaneRegister depth_register() const { return {value_[0], depth_format_}; }
@@ -135,8 +151,40 @@ class ZAdder {
 
  private:
   static constexpr int kPlanes = 4;  // depth, r, g, b
+  // The S, T, Q registers: the same circuit, kept apart so that an untextured triangle pays nothing.
+  struct TextureRegisters {
+    static constexpr int kCount = 3;
+    uint64_t per_x[kCount] = {}, per_row[kCount] = {}, row[kCount] = {}, value[kCount] = {};
+    uint64_t along[kLeftEdgeSlots][kCount] = {}, along_step[kLeftEdgeSlots][kCount] = {};
+    void load(const SetupResult& s) {
+      for (int k = 0; k < kCount; ++k) {
+        per_x[k] = uint64_t(s.texture[k].step_x);
+        per_row[k] = uint64_t(s.texture[k].step_y);
+        row[k] = value[k] = uint64_t(s.texture[k].start);
+        for (int j = 0; j < kLeftEdgeSlots; ++j) {
+          along[j][k] = uint64_t(s.left[j].texture[k].start);
+          along_step[j][k] = uint64_t(s.left[j].texture[k].step);
+        }
+      }
+    }
+    void step_x(int64_t n) {
+      for (int k = 0; k < kCount; ++k) value[k] += uint64_t(n) * per_x[k];
+    }
+    void next_row() {
+      for (int k = 0; k < kCount; ++k) value[k] = row[k] += per_row[k];
+    }
+    void enter_span_row(int slot) {
+      for (int k = 0; k < kCount; ++k) value[k] = slot < 0 ? row[k] : along[slot][k];
+    }
+    void step_left_edges(const bool carry[kLeftEdgeSlots]) {
+      for (int j = 0; j < kLeftEdgeSlots; ++j)
+        for (int k = 0; k < kCount; ++k) along[j][k] += along_step[j][k] - (carry[j] ? per_x[k] : 0);
+    }
+  };
   bool gouraud_;
-  PlaneFormat depth_format_, color_format_;
+  bool textured_ = false;
+  PlaneFormat depth_format_, color_format_, texture_format_;
+  TextureRegisters texture_;
   Rgb flat_;
   uint64_t step_x_[kPlanes] = {}, step_y_[kPlanes] = {}, row_[kPlanes] = {}, value_[kPlanes] = {};
   // Per left-edge slot: the plane at its edge's span start on the current row, and its step per row.

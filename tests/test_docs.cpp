@@ -170,7 +170,8 @@ TEST(Docs, WidthsTable) {
     derived << "guard " << w.guard_bits << " coord " << w.coord_bits << " delta " << w.delta_bits << " area "
             << w.area_bits << " edge " << w.edge_bits << " divider " << w.divider_bits << " z_reg " << w.z_reg_bits
             << " color_reg " << w.color_reg_bits << " serial_setup "
-            << serial_setup_drawn_latency(w, subpixel_bits, z_bits);
+            << serial_setup_drawn_latency(w, subpixel_bits, z_bits) << " texture_reg " << w.texture_reg_bits
+            << " texture_divider " << w.texture_divider_bits;
     EXPECT_EQ(derived.str(), value);
   }
 }

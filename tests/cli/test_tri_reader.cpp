@@ -103,7 +103,7 @@ TEST(TriReader, SkipsAByteOrderMark) {
 
 TEST(TriReader, ReadsTheTextureSectionAfterAnyColours) {
   const auto tris = read_text(
-      "1 2 0 3 4 0 5 6 1 uvw 0.5 -0.25 1 127.5 0 2 -127.5 3 1e-300\n"
+      "1 2 0 3 4 0 5 6 1 uvw 0.5 -0.25 1 127.5 0 2 -127.5 3 1.25e-4\n"
       "1 2 0 3 4 0 5 6 1 9 8 7 uvw 0 0 1 1 0 1 0 1 1\n"
       "1 2 0 3 4 0 5 6 1 1 2 3 4 5 6 7 8 9 uvw 0 0 1 1 0 1 0 1 1\n"
       "1 2 0 3 4 0 5 6 1\n");
@@ -116,7 +116,7 @@ TEST(TriReader, ReadsTheTextureSectionAfterAnyColours) {
   EXPECT_EQ(tris[0].v[1].w, 2.0);
   EXPECT_EQ(tris[0].v[2].u, -127.5);
   EXPECT_EQ(tris[0].v[2].v, 3.0);
-  EXPECT_EQ(tris[0].v[2].w, 1e-300);
+  EXPECT_EQ(tris[0].v[2].w, 1.25e-4);
   EXPECT_EQ(tris[0].v[2].color, (Rgb{255, 255, 255}));
   EXPECT_TRUE(tris[1].textured);
   EXPECT_EQ(tris[1].v[2].color, (Rgb{9, 8, 7}));
@@ -201,7 +201,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadLine{"TextureBelowRange", "0 0 0.5 10 0 0.5 0 10 0.5 uvw -128 0 1 1 0 1 0 1 1",
                 "first vertex texture coordinate u -128 is outside (-128, 128)"},
         BadLine{"WZero", "0 0 0.5 10 0 0.5 0 10 0.5 uvw 0 0 0 1 0 1 0 1 1", "first vertex w 0 is not positive"},
-        BadLine{"WNegative", "0 0 0.5 10 0 0.5 0 10 0.5 uvw 0 0 1 1 0 -2 0 1 1", "second vertex w -2 is not positive"}),
+        BadLine{"WNegative", "0 0 0.5 10 0 0.5 0 10 0.5 uvw 0 0 1 1 0 -2 0 1 1", "second vertex w -2 is not positive"},
+        BadLine{"WRatio", "0 0 0.5 10 0 0.5 0 10 0.5 uvw 0 0 0.5 1 0 8192.5 0 1 1",
+                "the largest w 8192.5 is more than 16384 times the smallest, 0.5"}),
     [](const ::testing::TestParamInfo<BadLine>& info) { return info.param.name; });
 
 TEST(TriReader, RandomGarbageIsReadOrRejectedNeverAnythingElse) {
@@ -263,10 +265,12 @@ TEST(TriWriter, RoundTripsBitExactly) {
     if (n % 3 == 1) t.v[1].color = t.v[2].color = t.v[0].color;  // flat
     if (n % 2 == 1) {
       t.textured = true;
+      // Any magnitude of w, within a triangle a ratio below 2^14 (3 2^12 at most).
+      const int exponent = int(rng() % 200) - 100;
       for (ScreenVertex& v : t.v) {
         v.u = -127.9 + unit() * 255.8;
         v.v = n < 9 ? special[n] : -127.9 + unit() * 255.8;
-        v.w = n < 9 ? special[(n + 1) % 9] + 5e-324 : std::ldexp(unit() + 0.5, int(rng() % 200) - 100);
+        v.w = n < 9 ? special[(n + 1) % 9] + 5e-324 : std::ldexp(unit() + 0.5, exponent + int(rng() % 13));
       }
     }
     tris.push_back(t);
