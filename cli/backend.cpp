@@ -63,7 +63,8 @@ Backend select_backend(const std::string& name) {
 void ensure_rtl_configuration(const Profile& profile) {
   // No build runs a memory stall pattern (rastersim_top's memory has none): configuration_error
   // says so without a module being built first.
-  if (validate(profile).empty() && profile.memory_stall_percent == 0 && !rtl::has_configuration(profile))
+  if (validate(profile).empty() && profile.memory_stall_percent == 0 && !profile.texture_unit &&
+      !rtl::has_configuration(profile))
     rtl::load_module(module_for(modules::Kind::Rtl, profile));
 }
 #endif
@@ -107,6 +108,7 @@ RenderResult render_triangles(Backend backend, const Profile& profile, const std
     case Backend::Model: {
       Pipeline pipeline(profile);
       pipeline.set_fragment_sink(sink);
+      pipeline.set_texture(options.texture);
       for (size_t i = 0; i < triangles.size(); ++i) {
         pipeline.submit(triangles[i]);
         if (progress) progress(i + 1);

@@ -38,6 +38,7 @@ struct BackendOptions {
   WaveFiles wave_files;
   WaveOptions wave;
   std::string replay_prefix; // cosim: where a divergence's replay files go
+  TextureBinding texture;    // model: what the texture unit samples
 };
 
 struct RenderResult {

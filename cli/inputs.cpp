@@ -50,6 +50,10 @@ std::vector<ScreenTriangle> load_builtin_scene(const std::string& name, const Pr
 
 }  // namespace
 
+std::shared_ptr<const Texture> builtin_scene_texture(const std::string& scene_name) {
+  return is_3d_scene(scene_name) ? frontend::builtin_scene_texture(scene_name) : nullptr;
+}
+
 std::vector<ScreenTriangle> load_input(const std::string& path_or_empty, const std::string& scene_name,
                                        const Profile& profile, const frontend::CameraOptions& camera) {
   if (!path_or_empty.empty() && !scene_name.empty())

@@ -2,11 +2,13 @@
 // the 3D front end's .obj meshes, .json scene files and 3D scenes.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "frontend/frontend.h"
 #include "model/profile.h"
+#include "model/texture_sampler.h"
 #include "model/triangle.h"
 
 namespace rastersim {
@@ -15,6 +17,9 @@ namespace rastersim {
 // path is given): a screen-space scene of this folder, or else a 3D scene of the front end.
 // `camera` applies to 3D inputs. Every triangle returned has passed check_screen_triangle for the profile.
 // Throws InputError for a bad file, an unknown scene or type, or both a path and a scene.
+// The texture a built-in scene's textured objects sample; nullptr for a scene without one.
+std::shared_ptr<const Texture> builtin_scene_texture(const std::string& scene_name);
+
 std::vector<ScreenTriangle> load_input(const std::string& path_or_empty, const std::string& scene_name,
                                        const Profile& profile, const frontend::CameraOptions& camera = {});
 

@@ -361,6 +361,7 @@ nlohmann::ordered_json stats_to_json(const FrameStats& s, const Profile& profile
   auto unit = [](const UnitCounters& u) { return nlohmann::ordered_json{{"busy", u.busy}, {"stall", u.stall}}; };
   j["units"] = {{"setup", unit(s.setup)}, {"walker", unit(s.walker)}, {"z_adder", unit(s.z_adder)},
                 {"zbuffer", unit(s.zbuffer)}};
+  if (profile.texture_unit) j["units"]["texture"] = unit(s.texture);
   j["profile"] = nlohmann::ordered_json::parse(profile_to_json(profile));
   return j;
 }
@@ -387,6 +388,11 @@ void print_summary(std::ostream& out, const FrameStats& s) {
       {"setup", &s.setup}, {"walker", &s.walker}, {"z_adder", &s.z_adder}, {"zbuffer", &s.zbuffer}};
   for (const auto& [name, u] : units) {
     std::snprintf(line, sizeof line, "%-8s %11lld %11lld\n", name, (long long)u->busy, (long long)u->stall);
+    out << line;
+  }
+  if (s.texture.busy > 0) {
+    std::snprintf(line, sizeof line, "%-8s %11lld %11lld\n", "texture", (long long)s.texture.busy,
+                  (long long)s.texture.stall);
     out << line;
   }
 }

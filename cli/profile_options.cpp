@@ -38,6 +38,11 @@ std::string key_help(const std::string& key) {
       {"memory_stall_seed", "seed of the memory's stall pattern, 0..2^31-1"},
       {"setup_fifo_depth", "setup records on their way to the walker (the record FIFO's depth), 1..16"},
       {"setup_interval", "setup initiation interval: 0 (serial, the smallest unit) or 2..64 (pipelined, a triangle every I cycles)"},
+      {"texture_unit", "the texture unit between walker and z-buffer: true or false (texture coordinates ignored)"},
+      {"perspective", "perspective-correct texture coordinates: true, or false (affine)"},
+      {"texture_latency", "texture memory read latency in cycles, 1..64"},
+      {"texture_stall_percent", "texture memory back-pressure: share of cycles refusing reads, 0..90"},
+      {"texture_stall_seed", "seed of the texture memory's stall pattern, 0..2^31-1"},
   };
   auto it = help.find(key);
   return it == help.end() ? "profile key " + key : it->second;

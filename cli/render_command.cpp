@@ -17,6 +17,7 @@
 #include "inputs.h"
 #include "model/input_error.h"
 #include "outputs.h"
+#include "texture_reader.h"
 #include "tri_reader.h"
 
 namespace rastersim {
@@ -81,6 +82,16 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
                   "systemc (the verilated core with a command FIFO and a z-buffer memory model with latency and "
                   "stall pattern, in SystemC)")
       ->check(CLI::IsMember(backend_names()))
+      ->type_name("NAME");
+  cmd->add_option("--texture", o.texture,
+                  "texture image for textured triangles (with the profile's texture_unit; a power of two "
+                  "up to 1024 on each side; default: the built-in scene's)")
+      ->type_name("FILE");
+  cmd->add_option("--texture-filter", o.texture_filter, "nearest or bilinear (default bilinear)")
+      ->check(CLI::IsMember({"nearest", "bilinear"}))
+      ->type_name("NAME");
+  cmd->add_option("--texture-wrap", o.texture_wrap, "repeat or clamp (default repeat)")
+      ->check(CLI::IsMember({"repeat", "clamp"}))
       ->type_name("NAME");
   cmd->add_option("--dump-tri", o.dump_tri_out,
                   "write the screen-space triangles the input produced (before snapping) as a .tri file")
@@ -155,6 +166,9 @@ int run_render(const RenderOptions& o) {
   OutputFiles outputs;
   outputs.protect(o.input);
   outputs.protect(o.profile.profile_file);
+  outputs.protect(o.texture);
+  if (!o.texture.empty() && !profile.texture_unit)
+    throw InputError("--texture needs the profile's texture unit (--texture-unit true)");
   std::string color_temp, depth_temp, fragments_temp, stats_temp;
   if (!o.color_out.empty()) {
     check_image_format(o.color_out, "-o");
@@ -179,6 +193,11 @@ int run_render(const RenderOptions& o) {
   }
 
   const std::vector<ScreenTriangle> screen = load_input(o.input, o.scene, profile, camera_options(o));
+  TextureBinding texture;
+  texture.filter = o.texture_filter == "nearest" ? TextureFilter::Nearest : TextureFilter::Bilinear;
+  texture.wrap = o.texture_wrap == "clamp" ? TextureWrap::Clamp : TextureWrap::Repeat;
+  if (!o.texture.empty()) texture.texture = std::make_shared<const Texture>(read_texture_file(o.texture));
+  else if (o.input.empty()) texture.texture = builtin_scene_texture(o.scene.empty() ? "default" : o.scene);
   std::vector<SnappedTriangle> snapped;
   snapped.reserve(screen.size());
   for (const ScreenTriangle& t : screen) snapped.push_back(snap(t, profile));
@@ -190,6 +209,7 @@ int run_render(const RenderOptions& o) {
   backend_options.seed = o.seed;
   backend_options.wave_files = wave;
   backend_options.wave = o.wave;
+  backend_options.texture = texture;
   backend_options.replay_prefix =
       (std::filesystem::path(o.replay_dir.empty() ? "." : o.replay_dir) / "rastersim-replay").string();
   const RenderResult result = render_triangles(

@@ -28,6 +28,9 @@ struct RenderOptions {
   uint64_t seed = 1;          // rtl/cosim: random power-on state
   WaveOptions wave;           // rtl/cosim: waveform
   std::string replay_dir;  // cosim: where a divergence's replay files go (empty: the working folder)
+  std::string texture;         // texture image for textured triangles (the built-in scene's when empty)
+  std::string texture_filter = "bilinear";
+  std::string texture_wrap = "repeat";
   ProfileOptions profile;
 };
 

@@ -4,7 +4,7 @@
 
 namespace rastersim {
 
-// The walker's output as Pipeline::TracedSink has it, and runs: without a trace, once no hazard can
+// The walker's output as Pipeline::StepSink has it, and runs: without a trace, once no hazard can
 // stall them, a run of fragments is accepted one per cycle: the z-buffer's timing at once, then each
 // fragment's depth test and write in order.
 template <bool Avx512>

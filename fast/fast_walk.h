@@ -2,7 +2,7 @@
 // once no hazard can stall them (ZBuffer::settled, take_run), through the z-buffer's run kernels
 // (fast/run_kernels.h), and with the AVX-512 kernel the whole walk is compiled for AVX-512 with the
 // kernel inlined. A fast path beside the model: the same fragments, buffers, counters and cycles as
-// the traced walk (Pipeline::walk_traced), which tests/test_fast_path.cpp checks.
+// the traced walk (Pipeline::walk_stepwise), which tests/test_fast_path.cpp checks.
 #pragma once
 
 #include <cstdint>

@@ -1,6 +1,7 @@
 // The built-in 3D scenes. Every one is lit by one key light plus ambient and has its own camera
 // (reported as "built-in scene 'NAME'" should a command-line override make it degenerate).
 #include <functional>
+#include <memory>
 
 #include "frontend/frontend.h"
 #include "frontend/scene.h"
@@ -101,6 +102,56 @@ Scene inside_scene() {
   return s;
 }
 
+// A checkerboard of 2^log2_size texels square, `checks` by `checks` squares, light and dark, with
+// a coloured texel row and column along its bottom-left edges (to show the texture's orientation).
+std::shared_ptr<const Texture> checkerboard(int log2_size, int checks) {
+  const int size = 1 << log2_size, check = size / checks;
+  std::vector<uint32_t> texels(size_t(size) * size);
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i) {
+      uint32_t texel = ((i / check + j / check) % 2 == 0) ? 0xE8E4D8 : 0x30343C;
+      if (j == 0) texel = 0xD04030;       // bottom row: red
+      else if (i == 0) texel = 0x3060D0;  // left column: blue
+      texels[texel_address(i, j, log2_size)] = texel;
+    }
+  return std::make_shared<const Texture>(log2_size, log2_size, std::move(texels));
+}
+
+// A long checkerboard floor receding to the horizon, in two triangles per tile of 10 x 10 units,
+// and a textured cube on it: with few, large triangles spanning a w ratio of hundreds, affine
+// texture interpolation (profile perspective false) visibly bends the checks' lines.
+Scene floor_scene() {
+  Scene s;
+  s.lighting = key_light();
+  s.lighting.ambient = {0.45, 0.45, 0.45};
+  Mesh floor = make_plane(40, 200, 4, 20);
+  for (const Vec3& p : floor.positions) floor.texcoords.push_back({(p.x + 20) / 4, (100 - p.z) / 4});
+  s.objects.push_back(object(std::move(floor), {0, 0, -96}, {0, 0, 0}, rgb(255, 255, 255)));
+  // The cube: each face the whole texture once (four vertices of its own), upright on the sides.
+  Mesh cube;
+  const Vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (const Vec3& n : normals) {
+    // Axes a (u) and b (v) across the face with a x b = n: counter-clockwise seen from outside.
+    const bool side = n.y == 0;
+    const Vec3 b = side ? Vec3{0, 1, 0} : cross(n, Vec3{1, 0, 0});
+    const Vec3 a = side ? cross(b, n) : Vec3{1, 0, 0};
+    const uint32_t first = uint32_t(cube.positions.size());
+    const double corners[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (const auto& c : corners) {
+      cube.add_vertex(n * 0.5 + a * (0.5 * c[0]) + b * (0.5 * c[1]), n, uint32_t(cube.positions.size()));
+      cube.texcoords.push_back({(c[0] + 1) / 2, (c[1] + 1) / 2});
+    }
+    cube.triangles.push_back({first, first + 1, first + 2});
+    cube.triangles.push_back({first, first + 2, first + 3});
+  }
+  s.objects.push_back(object(std::move(cube), {1.6, 0.8, -6}, {0, 35, 0}, rgb(255, 235, 200), 1.6));
+  s.texture = checkerboard(8, 4);
+  set_camera(s, "floor", {0, 1.6, 3}, {0, 0.9, -20}, 60);
+  s.camera.values.near = 0.5;
+  s.camera.values.far = 300;
+  return s;
+}
+
 struct Builtin {
   const char* name;
   const char* description;
@@ -115,6 +166,9 @@ const std::vector<Builtin>& builtins() {
       {"closeup", "the default scene from close up: near-plane and guard-band clipping", closeup_scene},
       {"inside", "camera inside a faceted sphere (render with --cull none), a torus in front: heavy clipping",
        inside_scene},
+      {"floor", "checkerboard floor receding to the horizon and a textured cube (profile texture_unit; perspective "
+                "true or false)",
+       floor_scene},
   };
   return list;
 }

@@ -28,4 +28,6 @@ std::vector<ScreenTriangle> builtin_scene(const std::string& name, const Profile
   return render(make_builtin_scene(name), profile, camera, "scene " + name);
 }
 
+std::shared_ptr<const Texture> builtin_scene_texture(const std::string& name) { return make_builtin_scene(name).texture; }
+
 }  // namespace rastersim::frontend

@@ -12,6 +12,7 @@
 // Camera values given here come from the command line and are reported as such.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -19,6 +20,7 @@
 
 #include "frontend/vecmath.h"
 #include "model/profile.h"
+#include "model/texture_sampler.h"
 #include "model/triangle.h"
 
 namespace rastersim::frontend {
@@ -46,5 +48,7 @@ std::vector<std::pair<std::string, std::string>> builtin_scene_list();
 
 // One built-in scene; an unknown name throws InputError.
 std::vector<ScreenTriangle> builtin_scene(const std::string& name, const Profile& profile, const CameraOptions& camera);
+// The texture a built-in scene's textured objects sample, or nullptr (an unknown name throws).
+std::shared_ptr<const Texture> builtin_scene_texture(const std::string& name);
 
 }  // namespace rastersim::frontend

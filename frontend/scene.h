@@ -3,6 +3,7 @@
 // the steps, exposed for tests.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "frontend/clip.h"
 #include "frontend/lighting.h"
 #include "frontend/mesh.h"
+#include "model/texture_sampler.h"
 
 namespace rastersim::frontend {
 
@@ -23,6 +25,7 @@ struct Scene {
   std::vector<SceneObject> objects;
   Lighting lighting = default_lighting();
   CameraSettings camera;
+  std::shared_ptr<const Texture> texture;  // what the textured objects sample (one per scene), or none
 };
 
 // Per output triangle: the object and mesh triangle it came from and the mesh vertex of each

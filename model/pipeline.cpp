@@ -13,12 +13,14 @@ Pipeline::Pipeline(const Profile& profile)
       walker_(profile, setup_.widths()),
       adders_(setup_.widths(), profile.z_bits, profile.shading == Shading::Gouraud),
       zbuffer_(profile),
+      texture_unit_(profile),
       credit_release_(size_t(profile.setup_fifo_depth), -1) {
   avx512_walk_ = FastWalk::avx512_applies(*this);
 }
 
 void Pipeline::reset() {
   zbuffer_.clear();
+  texture_unit_.reset();
   walker_counters_ = {};
   stats_ = {};
   next_index_ = 0;
@@ -30,18 +32,20 @@ void Pipeline::reset() {
   last_busy_ = -1;
 }
 
-// One fragment at a time, each reported to the sink: the specification's walk, which the
+// One fragment at a time, with Trace each reported to the sink: the specification's walk, which the
 // co-simulation compares with the RTL.
-struct Pipeline::TracedSink {
+template <bool Trace>
+struct Pipeline::StepSink {
   Pipeline& p;
   TriangleRecord& record;
   int64_t fragment(int x, int y, const ZAdder& adders, int64_t cycle) {
-    return p.take_fragment<true>(x, y, adders, cycle, record);
+    return p.take_fragment<Trace>(x, y, adders, cycle, record);
   }
 };
 
-int64_t Pipeline::walk_traced(const SetupResult& s, int64_t load_cycle, TriangleRecord& record) {
-  TracedSink sink{*this, record};
+template <bool Trace>
+int64_t Pipeline::walk_stepwise(const SetupResult& s, int64_t load_cycle, TriangleRecord& record) {
+  StepSink<Trace> sink{*this, record};
   return walker_.walk(s, adders_, load_cycle, walker_idle_load_, sink, walker_counters_);
 }
 
@@ -61,7 +65,8 @@ void Pipeline::submit(const SnappedTriangle& tri) {
   record.setup_accept = accept;
   stats_.setup.stall += accept - setup_free_;  // a triangle waits, the FIFO is full
   ++stats_.triangles;
-  record.setup_done = accept + (s.status == SetupStatus::Drawn ? timing_.drawn_latency : timing_.rejected_latency);
+  const int drawn_latency = s.textured ? timing_.textured_drawn_latency : timing_.drawn_latency;
+  record.setup_done = accept + (s.status == SetupStatus::Drawn ? drawn_latency : timing_.rejected_latency);
   setup_free_ = interval > 0 ? accept + interval : record.setup_done + 1;
   // Busy: cycles in which the unit holds a triangle, [accept, setup_done] of each, counted once.
   stats_.setup.busy += std::max<int64_t>(0, record.setup_done - std::max(accept - 1, setup_busy_until_));
@@ -83,11 +88,14 @@ void Pipeline::submit(const SnappedTriangle& tri) {
     walker_idle_load_ = record.walker_load > walker_free_;
     credit_release_[size_t(drawn_++ % int64_t(credit_release_.size()))] = record.walker_load;
     zbuffer_.begin_triangle(record.walker_load);  // the walker presents fragments after loading
-    record.walker_end = sink_ ? walk_traced(s, record.walker_load, record)
-                              : FastWalk::walk(*this, s, record.walker_load, record);
+    // The fast path's runs go straight to the z-buffer: with a texture unit, one at a time.
+    record.walker_end = sink_                    ? walk_stepwise<true>(s, record.walker_load, record)
+                        : profile_.texture_unit ? walk_stepwise<false>(s, record.walker_load, record)
+                                                : FastWalk::walk(*this, s, record.walker_load, record);
     walker_free_ = record.walker_end;
     if (record.fragments > 0) record.last_write = zbuffer_.last_busy_cycle();
-    last_busy_ = std::max({last_busy_, record.setup_done, record.walker_end, zbuffer_.last_busy_cycle()});
+    last_busy_ = std::max({last_busy_, record.setup_done, record.walker_end, zbuffer_.last_busy_cycle(),
+                           texture_unit_.last_busy_cycle()});
   }
   if (log_) log_->push_back(record);
 }
@@ -102,6 +110,7 @@ const FrameStats& Pipeline::stats() {
   stats_.walker = {walker_counters_.busy, walker_counters_.stall};
   stats_.z_adder = stats_.walker;  // the adders step in lockstep with the walker
   stats_.zbuffer = {z.busy, z.stall};
+  stats_.texture = {texture_unit_.counters().busy, texture_unit_.counters().stall};
   return stats_;
 }
 

@@ -8,6 +8,7 @@
 
 #include "profile.h"
 #include "scanline_walker.h"
+#include "texture_unit.h"
 #include "triangle.h"
 #include "triangle_setup.h"
 #include "widths.h"
@@ -22,7 +23,7 @@ struct Fragment {
   uint32_t z;      // depth entering the test, uN
   Rgb color;
   bool pass;       // depth test result
-  int64_t cycle;   // cycle the z-buffer took it from the walker (docs/cycle-model.md)
+  int64_t cycle;   // cycle the z-buffer took it from the walker (or the texture unit; docs/cycle-model.md)
   bool textured = false;  // its triangle is textured: uv holds the divided texture coordinate
   TextureCoordinate uv;   // s8.20 each (docs/arithmetic.md section 5)
 };
@@ -64,6 +65,7 @@ struct FrameStats {
   int64_t depth_fail = 0;
   int64_t cycles = 0;          // first cycle after the last unit's last busy cycle
   UnitCounters setup, walker, z_adder, zbuffer;
+  UnitCounters texture;        // the texture unit's (profile texture_unit; zero without it)
 };
 
 class Pipeline {
@@ -74,6 +76,8 @@ class Pipeline {
   // Optional observers; pass nullptr to detach. Tracing costs nothing when detached.
   void set_fragment_sink(FragmentSink* sink) { sink_ = sink; }
   void set_triangle_log(std::vector<TriangleRecord>* log) { log_ = log; }
+  // What the texture unit samples (with the profile's texture_unit): kept until replaced.
+  void set_texture(TextureBinding binding) { texture_ = std::move(binding); }
 
   // Runs one triangle through every unit. The triangle must have been checked (check_screen_triangle).
   void submit(const SnappedTriangle& tri);
@@ -88,27 +92,41 @@ class Pipeline {
  private:
   // Without a fragment sink the walk takes the fast path (fast/fast_walk.h): the same results.
   friend struct FastWalk;
-  struct TracedSink;
-  int64_t walk_traced(const SetupResult& s, int64_t load_cycle, TriangleRecord& record);
+  template <bool Trace>
+  struct StepSink;
+  // One fragment at a time (no runs): with a fragment sink (Trace), or with a texture unit.
+  template <bool Trace>
+  int64_t walk_stepwise(const SetupResult& s, int64_t load_cycle, TriangleRecord& record);
   bool avx512_walk_ = false;  // the fast path's choice, made once (FastWalk::avx512_applies)
 
-  // The walker's fragment output, wired to the z-buffer's input: the cycle it is taken, its depth
-  // test and write; with Trace, reported to the sink.
+  // The walker's fragment output, wired to the z-buffer's input (through the texture unit when there
+  // is one): the cycle the walker's candidate is taken, the fragment's depth test and write; with
+  // Trace, reported to the sink.
   template <bool Trace>
   int64_t take_fragment(int x, int y, const ZAdder& adders, int64_t cycle, TriangleRecord& record) {
     const uint32_t address = uint32_t(y) * uint32_t(profile_.width) + uint32_t(x);
-    const int64_t taken = zbuffer_.take(address, cycle);
     const uint32_t z = adders.depth();
-    const Rgb color = adders.color();
+    Rgb color = adders.color();
+    const bool textured = adders.textured();
+    TextureCoordinate uv;
+    if (textured) {
+      uv = adders.texture_coordinate();
+      const Texture* texture = texture_.texture.get();
+      color = modulate(texture ? texture->sample(uv.u, uv.v, texture_.filter, texture_.wrap) : Rgb{}, color);
+    }
+    int64_t walker_taken = cycle, offered = cycle;
+    if (profile_.texture_unit) {
+      const TextureUnit::Passage passage = texture_unit_.pass(cycle, textured);
+      walker_taken = passage.taken, offered = passage.offered;
+    }
+    const int64_t taken = zbuffer_.take(address, offered);
+    if (profile_.texture_unit) texture_unit_.left(taken);
+    else walker_taken = taken;
     const bool pass = zbuffer_.test_and_write(address, z, color);
     ++record.fragments;
     record.depth_pass += pass;
-    if (Trace) {
-      Fragment fragment{record.index, x, y, z, color, pass, taken, false, {}};
-      if (adders.textured()) fragment.textured = true, fragment.uv = adders.texture_coordinate();
-      sink_->on_fragment(fragment);
-    }
-    return taken;
+    if (Trace) sink_->on_fragment(Fragment{record.index, x, y, z, color, pass, taken, textured, uv});
+    return walker_taken;
   }
 
   Profile profile_;
@@ -117,6 +135,8 @@ class Pipeline {
   ScanlineWalker walker_;
   ZAdder adders_;
   ZBuffer zbuffer_;
+  TextureUnit texture_unit_;  // used with the profile's texture_unit
+  TextureBinding texture_;
   FragmentSink* sink_ = nullptr;
   std::vector<TriangleRecord>* log_ = nullptr;
   SetupResult last_setup_;

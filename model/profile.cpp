@@ -72,7 +72,8 @@ const std::vector<std::string>& profile_keys() {
   static const std::vector<std::string> keys = {
       "width", "height", "subpixel_bits", "z_bits", "z_guard_bits", "depth_func", "depth_write",
       "depth_clear", "cull", "front_face", "traversal", "shading", "memory_latency",
-      "memory_stall_percent", "memory_stall_seed", "setup_fifo_depth", "setup_interval"};
+      "memory_stall_percent", "memory_stall_seed", "setup_fifo_depth", "setup_interval", "texture_unit",
+      "perspective", "texture_latency", "texture_stall_percent", "texture_stall_seed"};
   return keys;
 }
 
@@ -93,6 +94,9 @@ std::vector<std::string> validate(const Profile& p) {
   range("memory_stall_seed", p.memory_stall_seed, 0, INT32_MAX);
   range("setup_fifo_depth", p.setup_fifo_depth, 1, kMaxSetupFifoDepth);
   if (p.setup_interval != 0) range("setup_interval", p.setup_interval, kMinSetupInterval, kMaxSetupInterval);
+  range("texture_latency", p.texture_latency, 1, 64);
+  range("texture_stall_percent", p.texture_stall_percent, 0, 90);
+  range("texture_stall_seed", p.texture_stall_seed, 0, INT32_MAX);
   if (p.z_bits >= 16 && p.z_bits <= 32 && p.depth_clear >= 0 && p.depth_clear > int64_t(p.depth_max()))
     errors.push_back("depth_clear is " + std::to_string(p.depth_clear) + "; it must be in 0.." +
                      std::to_string(p.depth_max()) + " for z_bits " + std::to_string(p.z_bits));
@@ -134,10 +138,16 @@ std::string set_profile_key(Profile& p, const std::string& key, const std::strin
     p.depth_clear = n;
     return "";
   }
-  if (key == "depth_write") {
-    if (!parse_bool(value, p.depth_write)) return key + " takes true or false, not '" + value + "'";
+  auto boolean = [&](bool& field) -> std::string {
+    if (!parse_bool(value, field)) return key + " takes true or false, not '" + value + "'";
     return "";
-  }
+  };
+  if (key == "depth_write") return boolean(p.depth_write);
+  if (key == "texture_unit") return boolean(p.texture_unit);
+  if (key == "perspective") return boolean(p.perspective);
+  if (key == "texture_latency") return integer(p.texture_latency);
+  if (key == "texture_stall_percent") return integer(p.texture_stall_percent);
+  if (key == "texture_stall_seed") return integer(p.texture_stall_seed);
   if (key == "depth_func") return enumeration(parse_depth_func(value), p.depth_func, choices(kDepthFuncNames));
   if (key == "cull") return enumeration(parse_cull(value), p.cull, choices(kCullNames));
   if (key == "front_face") return enumeration(parse_front_face(value), p.front_face, choices(kFrontFaceNames));
@@ -159,14 +169,16 @@ void load_profile_text(Profile& profile, const std::string& text, const std::str
   auto type_error = [](const std::string& key, const nlohmann::json& v) -> std::string {
     static const std::set<std::string> integers = {"width", "height", "subpixel_bits", "z_bits", "memory_latency",
                                                    "memory_stall_percent", "memory_stall_seed", "setup_fifo_depth",
-                                                   "setup_interval"};
+                                                   "setup_interval", "texture_latency", "texture_stall_percent",
+                                                   "texture_stall_seed"};
     const bool is_integer = v.is_number_integer() || v.is_number_unsigned();
     if (integers.count(key)) return is_integer ? "" : key + " must be a JSON integer, not " + v.dump();
     if (key == "z_guard_bits" || key == "depth_clear") {
       const char* word = key == "z_guard_bits" ? "\"auto\"" : "\"max\"";
       return is_integer || v.is_string() ? "" : key + " must be a JSON integer or " + word + ", not " + v.dump();
     }
-    if (key == "depth_write") return v.is_boolean() ? "" : key + " must be true or false, not " + v.dump();
+    if (key == "depth_write" || key == "texture_unit" || key == "perspective")
+      return v.is_boolean() ? "" : key + " must be true or false, not " + v.dump();
     return v.is_string() ? "" : key + " must be a JSON string, not " + v.dump();
   };
   for (auto it = doc.begin(); it != doc.end(); ++it) {
@@ -214,6 +226,11 @@ std::string profile_to_json(const Profile& p, int indent) {
   j["memory_stall_seed"] = p.memory_stall_seed;
   j["setup_fifo_depth"] = p.setup_fifo_depth;
   j["setup_interval"] = p.setup_interval;
+  j["texture_unit"] = p.texture_unit;
+  j["perspective"] = p.perspective;
+  j["texture_latency"] = p.texture_latency;
+  j["texture_stall_percent"] = p.texture_stall_percent;
+  j["texture_stall_seed"] = p.texture_stall_seed;
   return j.dump(indent);
 }
 

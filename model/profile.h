@@ -45,10 +45,22 @@ struct Profile {
   // shared datapath, about 1,500 cycles per drawn triangle); 2..64 = the pipelined unit, which accepts a
   // triangle every I cycles at best. docs/cycle-model.md.
   int setup_interval = 4;
+  // The texture unit between the walker and the z-buffer (docs/cycle-model.md "Texture unit"): a
+  // build option of the hardware; without it a triangle's texture coordinates are ignored.
+  bool texture_unit = false;
+  bool perspective = true;        // false: texture coordinates interpolated affinely (every w equal)
+  int texture_latency = 2;        // cycles from a texture read request to its texels, 1..64
+  int texture_stall_percent = 0;  // texture memory back-pressure, 0..90, as memory_stall_percent
+  int texture_stall_seed = 1;     // 0..2^31-1
 
   uint32_t depth_max() const { return uint32_t((uint64_t(1) << z_bits) - 1); }
   uint32_t depth_clear_value() const { return depth_clear < 0 ? depth_max() : uint32_t(depth_clear); }
 };
+
+// Why the RTL, SystemC and vector backends refuse a profile with the texture unit: the model has it,
+// the RTL twin does not yet (docs/design/texturing.md, step 4).
+inline constexpr const char* kNoTextureUnitInRtl =
+    "texture_unit: the RTL has no texture unit yet (the model has: --backend model)";
 
 // Every error found, each a sentence naming the key; empty when the profile is valid.
 std::vector<std::string> validate(const Profile& profile);

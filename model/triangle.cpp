@@ -113,7 +113,7 @@ std::string check_screen_triangle(const ScreenTriangle& tri, const Profile& p) {
   return "";
 }
 
-SnappedTriangle snap(const ScreenTriangle& tri, const Profile& p, bool perspective) {
+SnappedTriangle snap(const ScreenTriangle& tri, const Profile& p) {
   SnappedTriangle out;
   for (int k = 0; k < 3; ++k) {
     out.v[k].x = int32_t(snap_coordinate(tri.v[k].x, p.subpixel_bits));
@@ -121,8 +121,9 @@ SnappedTriangle snap(const ScreenTriangle& tri, const Profile& p, bool perspecti
     out.v[k].z = quantize_depth(tri.v[k].z, p.z_bits);
     out.v[k].color = tri.v[k].color;
   }
-  out.textured = tri.textured;
-  if (tri.textured) {
+  out.textured = tri.textured && p.texture_unit;
+  if (out.textured) {
+    const bool perspective = p.perspective;
     const double w_min = std::min({tri.v[0].w, tri.v[1].w, tri.v[2].w});
     for (int k = 0; k < 3; ++k) {
       SnappedVertex& v = out.v[k];

@@ -53,9 +53,10 @@ struct SnappedTriangle {
 // u and v lie in (-128, 128), its w are positive and the largest is at most 2^14 times the smallest.
 std::string check_screen_triangle(const ScreenTriangle& tri, const Profile& profile);
 
-// Snaps a checked triangle to the fixed-point grid of docs/arithmetic.md section 1, and a textured
-// one's texture coordinates as section 5 says (`perspective` false: every w taken as equal).
-SnappedTriangle snap(const ScreenTriangle& tri, const Profile& profile, bool perspective = true);
+// Snaps a checked triangle to the fixed-point grid of docs/arithmetic.md section 1, and with the
+// profile's texture unit a textured one's texture coordinates as section 5 says (without it they
+// are dropped: the hardware has nowhere to put them).
+SnappedTriangle snap(const ScreenTriangle& tri, const Profile& profile);
 
 int64_t snap_coordinate(double v, int subpixel_bits);
 uint32_t quantize_depth(double z, int z_bits);

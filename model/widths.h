@@ -14,6 +14,7 @@ namespace rastersim {
 // texture registers exactly 64 bits (docs/widths.md).
 constexpr int kTextureFractionBits = 41;
 constexpr int kMaxTextureWRatioLog2 = 14;
+constexpr int kTextureVertexBits = kTextureFractionBits + 9;  // m_t: S, T s8.P (Q u1.P with leading zeros)
 
 struct Widths {
   // Plane registers: F fraction (guard) bits. Chosen so that the accumulated floor error of the
@@ -93,6 +94,7 @@ constexpr int kSetupStepsPerCycle = 4;
 
 struct SetupTiming {
   int interval;        // I: cycles between two accepts at best (0: the serial unit)
+  bool texture;        // the units compute the texture planes (profile texture_unit)
   int edge_stages;     // slots of the edge values (shift-add over the coord_bits + 1 bits of rel_x, rel_y)
   int edge_steps;      // shift-add steps per cycle in an edge slot
   int numer_stages;    // slots of the plane numerators (Horner over the vertex values' z_bits bits)
@@ -102,6 +104,7 @@ struct SetupTiming {
   int product_stages;  // slots of the 16 planes along the left edges (setup_product_bits steps)
   int product_steps;   // multiply steps per cycle in a product slot
   int drawn_latency;   // accept -> record in the output register (setup_done - setup_accept)
+  int textured_drawn_latency;  // the same for a textured triangle (differs in the serial unit only)
   int rejected_latency;  // accept -> decision
   int free_after;      // accept -> first cycle the unit may accept again (0: after setup_done)
 };
@@ -136,31 +139,53 @@ constexpr int serial_setup_drawn_latency(const Widths& w, int subpixel_bits, int
   return cycles;
 }
 
-constexpr SetupTiming setup_timing(const Widths& w, int subpixel_bits, int z_bits, int interval) {
+// PBt: the multiplier bits of a texture plane along a left edge, as PB for the texture registers.
+constexpr int setup_texture_product_bits(const Widths& w) {
+  return w.texture_reg_bits < w.edge_bits ? w.texture_reg_bits : w.edge_bits;
+}
+
+// What the S, T, Q planes add to the serial unit's program for a textured triangle: per plane the
+// depth plane's six operations with m_t-bit vertex values and Ft guard bits, then 12 PRODUCT
+// operations (docs/cycle-model.md, "The setup units with the texture unit").
+constexpr int serial_setup_texture_cycles(const Widths& w, int subpixel_bits) {
+  const int H = serial_setup_datapath_bits(w), m = kTextureVertexBits, F = w.texture_guard_bits, S = subpixel_bits;
+  return 3 * (3 * (1 + 3 * m) + (1 + H + m + F) + 2 * (1 + H + m + F + S)) + 12 * (setup_texture_product_bits(w) + 2);
+}
+
+constexpr int max_int(int a, int b) { return a > b ? a : b; }
+
+constexpr SetupTiming setup_timing(const Widths& w, int subpixel_bits, int z_bits, int interval, bool texture = false) {
   SetupTiming t{};
   t.interval = interval;
+  t.texture = texture;
   if (interval == 0) {
     t.rejected_latency = 2 + 2 * w.delta_bits;  // the DECIDE cycle
     t.drawn_latency = serial_setup_drawn_latency(w, subpixel_bits, z_bits);
+    t.textured_drawn_latency = t.drawn_latency + (texture ? serial_setup_texture_cycles(w, subpixel_bits) : 0);
     t.free_after = 0;  // the unit is free after its output (or decision) cycle
     return t;
   }
+  // With the texture planes every slot is sized for them, whatever the triangle.
+  const int numer_bits = texture ? max_int(z_bits, kTextureVertexBits) : z_bits;
+  const int divide_bits = texture ? max_int(w.divider_bits, w.texture_divider_bits) : w.divider_bits;
+  const int product_bits = texture ? max_int(setup_product_bits(w), setup_texture_product_bits(w)) : setup_product_bits(w);
   t.rejected_latency = 1;
   t.edge_stages = ceil_div(w.coord_bits + 1, interval * kSetupStepsPerCycle);
   t.edge_steps = ceil_div(w.coord_bits + 1, interval * t.edge_stages);
-  t.numer_stages = ceil_div(z_bits, interval * kSetupStepsPerCycle);
-  t.numer_steps = ceil_div(z_bits, interval * t.numer_stages);
-  t.divide_stages = ceil_div(w.divider_bits, interval * kSetupStepsPerCycle);
-  t.divide_steps = ceil_div(w.divider_bits, interval * t.divide_stages);
-  t.product_stages = ceil_div(setup_product_bits(w), interval * kSetupStepsPerCycle);
-  t.product_steps = ceil_div(setup_product_bits(w), interval * t.product_stages);
+  t.numer_stages = ceil_div(numer_bits, interval * kSetupStepsPerCycle);
+  t.numer_steps = ceil_div(numer_bits, interval * t.numer_stages);
+  t.divide_stages = ceil_div(divide_bits, interval * kSetupStepsPerCycle);
+  t.divide_steps = ceil_div(divide_bits, interval * t.divide_stages);
+  t.product_stages = ceil_div(product_bits, interval * kSetupStepsPerCycle);
+  t.product_steps = ceil_div(product_bits, interval * t.product_stages);
   t.drawn_latency = interval * (1 + t.edge_stages + t.numer_stages + t.divide_stages + t.product_stages);
+  t.textured_drawn_latency = t.drawn_latency;
   t.free_after = interval;
   return t;
 }
 
 inline SetupTiming setup_timing(const Profile& p) {
-  return setup_timing(derive_widths(p), p.subpixel_bits, p.z_bits, p.setup_interval);
+  return setup_timing(derive_widths(p), p.subpixel_bits, p.z_bits, p.setup_interval, p.texture_unit);
 }
 
 // The docs' worked example and the default profile (docs/cycle-model.md).
@@ -171,6 +196,9 @@ static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 2).drawn_la
 static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 4).drawn_latency == 48);
 static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 16).drawn_latency == 96);
 static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 64).drawn_latency == 320);
+static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 0, true).textured_drawn_latency == 4733);
+static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 0, true).drawn_latency == 2081);
+static_assert(setup_timing(derive_widths(640, 480, 4, 24, 0), 4, 24, 4, true).drawn_latency == 60);
 
 // The largest profile must fit the model's storage: plane registers and edge values in int64_t,
 // dividends in i128.

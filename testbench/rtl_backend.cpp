@@ -92,7 +92,8 @@ int built_max_memory_latency(const Profile& p) {
 std::string configuration_error(const Profile& p) {
   const std::vector<std::string> errors = validate(p);
   if (!errors.empty()) return "invalid profile: " + errors.front();
-  // Whatever the geometry: no build of rastersim_top has a memory stall pattern.
+  // Whatever the geometry: no build of rastersim_top has a texture unit or a memory stall pattern.
+  if (p.texture_unit) return kNoTextureUnitInRtl;
   if (p.memory_stall_percent > 0)
     return "memory_stall_percent " + std::to_string(p.memory_stall_percent) +
            ": rastersim_top's on-chip memory has no back-pressure; the SystemC backend (--backend systemc) "

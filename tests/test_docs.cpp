@@ -117,7 +117,8 @@ void check_timeline(const std::string& block) {
     if (key == "traversal") {
       p.traversal = *parse_traversal(value);
       run();
-    } else if (key == "setup_interval" || key == "setup_fifo_depth") {
+    } else if (key == "setup_interval" || key == "setup_fifo_depth" || key == "texture_unit" ||
+               key == "texture_latency") {
       EXPECT_EQ(set_profile_key(p, key, value), "");
     } else if (key == "divider_bits") EXPECT_EQ(std::to_string(derive_widths(p).divider_bits), value);
     else if (key == "setup_rejected_latency") EXPECT_EQ(std::to_string(setup_timing(p).rejected_latency), value);
@@ -131,6 +132,7 @@ void check_timeline(const std::string& block) {
     } else if (key == "cycles") EXPECT_EQ(std::to_string(stats.cycles), value);
     else if (key == "setup_stall") EXPECT_EQ(std::to_string(stats.setup.stall), value);
     else if (key == "zbuffer_stall") EXPECT_EQ(std::to_string(stats.zbuffer.stall), value);
+    else if (key == "texture_busy") EXPECT_EQ(std::to_string(stats.texture.busy), value);
     else ADD_FAILURE() << "unknown key";
   }
 }
@@ -158,6 +160,7 @@ TEST(Docs, ArithmeticEmptyBoxExample) {
 
 TEST(Docs, CycleModelWorkedExample) { check_timeline("example-timeline"); }
 TEST(Docs, CycleModelPipelinedSetupWorkedExample) { check_timeline("example-timeline-pipelined"); }
+TEST(Docs, CycleModelTextureUnitWorkedExample) { check_timeline("example-timeline-texture"); }
 
 TEST(Docs, WidthsTable) {
   for (const auto& [key, value] : doc_block("widths.md", "example-widths")) {

@@ -123,8 +123,10 @@ std::vector<PixelCoordinate> absolute_coordinates(const SetupResult& r, const Wi
 // Every covered pixel of one triangle: its u, v from the setup's planes (register values in the
 // absolute form the walker's additions equal, docs/arithmetic.md section 3) against the reference.
 void check_triangle(const ScreenTriangle& tri, const Profile& profile, bool perspective, ErrorStats& stats) {
-  const TriangleSetup setup(profile);
-  const SetupResult r = setup.run(snap(tri, profile, perspective));
+  Profile textured = profile;
+  textured.texture_unit = true, textured.perspective = perspective;
+  const TriangleSetup setup(textured);
+  const SetupResult r = setup.run(snap(tri, textured));
   if (r.status != SetupStatus::Drawn) return;
   ASSERT_TRUE(r.textured);
   double w_min = 1, w_max = 1;
@@ -211,7 +213,8 @@ TEST(TexturePlanes, AffineQPlaneIsConstant) {
   tri.v[0] = {10, 10, 0.5, {}, 0.25, 0, 1.0};
   tri.v[1] = {100, 20, 0.5, {}, 1, 0.5, 50.0};
   tri.v[2] = {30, 90, 0.5, {}, 0, 1, 3.0};
-  const SetupResult r = TriangleSetup(profile).run(snap(tri, profile, false));
+  profile.texture_unit = true, profile.perspective = false;
+  const SetupResult r = TriangleSetup(profile).run(snap(tri, profile));
   const int Ft = derive_widths(profile).texture_guard_bits;
   EXPECT_EQ(int64_t(r.texture[2].start), int64_t(1) << (P + Ft));
   EXPECT_EQ(int64_t(r.texture[2].step_x), 0);
@@ -246,6 +249,7 @@ TEST(TexturePlanes, PipelineFragmentsCarryTheAbsoluteFormsCoordinates) {
     Profile profile;
     profile.width = 96, profile.height = 64, profile.traversal = traversal;
     profile.depth_func = DepthFunc::Always;
+    profile.texture_unit = true;
     Pipeline pipeline(profile);
     Collect sink;
     pipeline.set_fragment_sink(&sink);

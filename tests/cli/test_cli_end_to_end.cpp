@@ -423,6 +423,79 @@ TEST(CliRender, DumpedTrianglesCarryAnObjsTextureCoordinates) {
   }
 }
 
+// A texture file is what the texture unit samples: with a one-texel texture of colour c every
+// textured fragment is round(c g / 255) of the colour g it has without a texture; without the
+// profile's texture unit --texture is refused, and a missing file is named, with nothing written.
+TEST(CliRender, TextureFileIsModulatedIntoTheFragments) {
+  ScratchDir dir;
+  dir.write("cube.obj",
+            "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+            "f 1/1 4/2 3/3 2/4\nf 5/1 6/2 7/3 8/4\nf 1/1 2/2 6/3 5/4\nf 2/1 3/2 7/3 6/4\nf 3/1 4/2 8/3 7/4\nf 4/1 1/2 5/3 8/4\n");
+  dir.write("texel.ppm", std::string("P6\n1 1\n255\n") + char(0x80) + char(0xFF) + char(0x10));
+  const std::vector<std::string> common = {"render", "cube.obj", "--eye", "3,2,4", "--fov", "50", "--width", "96",
+                                           "--height", "64", "--texture-unit", "true"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = common;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  RunResult r = run_rastersim(dir, with({"--fragments", "plain.csv"}));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_rastersim(dir, with({"--fragments", "textured.csv", "--texture", "texel.ppm", "--stats", "s.json"}));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(contains(read_text(dir.path("s.json")), "\"texture\"")) << "stats name the texture unit";
+  const Csv plain = read_fragments_csv(dir.path("plain.csv")), textured = read_fragments_csv(dir.path("textured.csv"));
+  ASSERT_EQ(plain.rows.size(), textured.rows.size());
+  ASSERT_GT(plain.rows.size(), 500u);
+  auto rounded = [](int64_t c, int64_t g) { return (2 * c * g + 255) / 510; };
+  for (size_t i = 0; i < plain.rows.size(); ++i) {
+    ASSERT_EQ(textured.rows[i].r, rounded(0x80, plain.rows[i].r)) << i;
+    ASSERT_EQ(textured.rows[i].g, rounded(0xFF, plain.rows[i].g)) << i;
+    ASSERT_EQ(textured.rows[i].b, rounded(0x10, plain.rows[i].b)) << i;
+    ASSERT_EQ(textured.rows[i].cycle, plain.rows[i].cycle) << i;
+  }
+  const std::set<std::string> before = dir.listing();
+  r = run_rastersim(dir, {"render", "cube.obj", "--texture", "texel.ppm", "-o", "x.png"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(contains(r.err, "--texture needs the profile's texture unit")) << r.err;
+  r = run_rastersim(dir, with({"--texture", "missing.png", "-o", "x.png"}));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(contains(r.err, "missing.png")) << r.err;
+  EXPECT_EQ(dir.listing(), before);
+}
+
+// The floor scene: perspective-correct and affine images differ (the affine one bends the checks).
+TEST(CliRender, FloorSceneDiffersWithoutPerspective) {
+  ScratchDir dir;
+  for (const std::string perspective : {"true", "false"}) {
+    const RunResult r = run_rastersim(dir, {"render", "--scene", "floor", "--texture-unit", "true", "--perspective",
+                                            perspective, "--width", "160", "--height", "120", "--fragments",
+                                            perspective + ".csv"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  const Csv a = read_fragments_csv(dir.path("true.csv")), b = read_fragments_csv(dir.path("false.csv"));
+  ASSERT_EQ(a.rows.size(), b.rows.size());
+  size_t differ = 0;
+  for (size_t i = 0; i < a.rows.size(); ++i)
+    differ += a.rows[i].r != b.rows[i].r || a.rows[i].g != b.rows[i].g || a.rows[i].b != b.rows[i].b;
+  EXPECT_GT(differ, a.rows.size() / 10) << "of " << a.rows.size();
+}
+
+#ifdef RASTERSIM_HAVE_RTL
+// The RTL has no texture unit yet: the backends say so instead of drawing something else.
+TEST(CliRtl, RtlBackendRefusesTheTextureUnit) {
+  ScratchDir dir;
+  for (const std::string backend : {"rtl", "cosim"}) {
+    const RunResult r = run_rastersim(dir, {"render", "--backend", backend, "--scene", "fan", "--width", "64",
+                                            "--height", "48", "--texture-unit", "true", "-o", "x.png"});
+    EXPECT_EQ(r.exit_code, 2) << backend;
+    EXPECT_TRUE(contains(r.err, "the RTL has no texture unit yet")) << r.err;
+  }
+  EXPECT_TRUE(dir.listing().empty());
+}
+#endif
+
 #ifdef RASTERSIM_HAVE_RTL
 // The RTL backend gives byte-identical images, fragment trace and counters to the model (the
 // comparison is the product's claim; the co-simulation suite checks it transaction by transaction).
