@@ -1,5 +1,5 @@
 // Texture unit: between the walker and the z-buffer when the profile has one (texture_unit). Every
-// fragment passes through it in order: the perspective divide (model/perspective_divide.h), the
+// fragment passes through it in order: the perspective divide (model/texture_divide.h), the
 // sampler's texel addresses, the texture memory read (textured fragments), the blend and the
 // modulation (model/texture_sampler.h), an output buffer the z-buffer takes from. Its cycles are
 // docs/cycle-model.md, "Texture unit"; this class computes them, the pipeline the colours.

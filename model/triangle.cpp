@@ -59,7 +59,7 @@ int64_t texture_scaled(double c, int64_t q) {
   // c q = m q 2^e exactly (|m q| < 2^(53+P+1)); floor(x + 1/2) = (m q + 2^(-e-1)) >> -e when e < 0.
   const Dyadic d = dyadic(c);
   const i128 product = i128(d.m) * q;
-  if (d.e >= 0) return int64_t(product << d.e);  // |c| >= 2^52: not a texture coordinate, kept exact
+  if (d.e >= 0) return int64_t(product * (i128(1) << d.e));  // |c| >= 2^52: not a texture coordinate
   const int k = -d.e;
   if (k > 120) return 0;  // |c q| < 2^(54+P-120) < 1/2
   return int64_t((product + (i128(1) << (k - 1))) >> k);

@@ -8,7 +8,7 @@
 
 #include <cstdint>
 
-#include "perspective_divide.h"
+#include "texture_divide.h"
 #include "triangle_setup.h"
 
 namespace rastersim {

@@ -12,7 +12,7 @@
 #include <vector>
 #include <random>
 
-#include "model/perspective_divide.h"
+#include "model/texture_divide.h"
 #include "model/pipeline.h"
 #include "model/triangle.h"
 #include "model/triangle_setup.h"
@@ -35,8 +35,8 @@ Exact exact(double v) {
 }
 // Compares a 2^ea with b 2^eb exactly (a, b integers, the shifted one stays below 2^127).
 int compare(i128 a, int ea, i128 b, int eb) {
-  if (ea > eb) a <<= (ea - eb);
-  else b <<= (eb - ea);
+  if (ea > eb) a *= i128(1) << (ea - eb);  // a product: a left shift of a negative value is undefined
+  else b *= i128(1) << (eb - ea);
   return a < b ? -1 : a > b ? 1 : 0;
 }
 
