@@ -142,6 +142,18 @@ function automatic integer rs_divider_bits(input integer w, input integer h, inp
   end
 endfunction
 
+// Texturing (docs/arithmetic.md section 5, model/widths.h): P attribute fraction bits, the S, T, Q
+// registers s9.(P + Ft) with Ft the derived guard bits whatever Z_GUARD_BITS, u and v s8.20, and
+// the perspective divide's stages (docs/cycle-model.md, "Texture unit").
+/* verilator lint_off UNUSEDPARAM */
+localparam integer RS_TEXTURE_FRACTION_BITS = 41;
+localparam integer RS_UV_BITS = 28, RS_UV_FRAC_BITS = 20;
+localparam integer RS_TEXTURE_DIVIDE_STAGES = 29;
+/* verilator lint_on UNUSEDPARAM */
+function automatic integer rs_texture_reg_bits(input integer w, input integer h);
+  rs_texture_reg_bits = RS_TEXTURE_FRACTION_BITS + rs_guard_bits(w, h, 0) + 9;
+endfunction
+
 // The pipelined setup unit's schedule (SETUP_INTERVAL I >= 2; model/widths.h setup_timing): slots
 // of edge, numerator, divide and product steps, at most 4 steps of one multiply or divide chained
 // in a cycle.

@@ -1,0 +1,114 @@
+// The texture unit's perspective divide (model/texture_divide.h; docs/arithmetic.md section 5): a textured
+// fragment's u = clamp(floor(s 2^20 / q), -2^27, 2^27 - 1) and v from t likewise, s8.20, from its
+// S, T, Q plane registers (s9.(P+Ft), q > 0). Pipelined, one fragment per clock, no stall: inputs
+// present in a cycle are in the output registers 29 rising edges later (docs/cycle-model.md,
+// "Texture unit": taken in t, u and v registered at the end of t + 29). Stage 0 takes the
+// magnitudes and the clamp tests, stages 1..27 one quotient bit each (restoring; q's pipeline
+// serves u and v), stage 28 the sign (floor for a negative dividend) and the clamp.
+module texture_divide #(
+  parameter integer WIDTH = 640,
+  parameter integer HEIGHT = 480
+) (
+  input  wire clk,
+  input  wire rst,       // clears the valid bits (the data registers need no reset)
+  input  wire in_valid,
+  // The registers' width, rs_texture_reg_bits (P + Ft + 9) written with $clog2: a port list that
+  // calls the widths header's functions before its include upsets Verilator 5.006's lint of the
+  // other modules (rtl/rastersim.f).
+  input  wire [50+$clog2(2*(WIDTH+HEIGHT-1))-1:0] in_s,  // S register, two's complement
+  input  wire [50+$clog2(2*(WIDTH+HEIGHT-1))-1:0] in_t,  // T register
+  input  wire [50+$clog2(2*(WIDTH+HEIGHT-1))-1:0] in_q,  // Q register, > 0 at a covered pixel
+  output wire out_valid,
+  output wire [27:0] out_u,  // s8.20
+  output wire [27:0] out_v
+);
+`include "rastersim_widths.vh"
+  `RS_REQUIRE(illegal_width, WIDTH >= 1 && WIDTH <= 4096, "texture_divide: WIDTH must be 1..4096")
+  `RS_REQUIRE(illegal_height, HEIGHT >= 1 && HEIGHT <= 4096, "texture_divide: HEIGHT must be 1..4096")
+
+  localparam integer REG_BITS = 50 + $clog2(2 * (WIDTH + HEIGHT - 1));
+  `RS_REQUIRE(reg_bits_match, REG_BITS == rs_texture_reg_bits(WIDTH, HEIGHT), "texture_divide: register width")
+  localparam integer QUOTIENT_BITS = RS_UV_BITS - 1;           // 27: |u| < 2^27 unless clamped
+  localparam integer SHIFT = QUOTIENT_BITS - RS_UV_FRAC_BITS;  // 7 dividend bits below the first remainder
+  localparam integer STAGES = QUOTIENT_BITS + 2;               // 29
+  `RS_REQUIRE(stages_match_model, STAGES == RS_TEXTURE_DIVIDE_STAGES, "texture_divide: stage count")
+
+  // Per coordinate (0: u, 1: v) and stage: the partial remainder (< q, one bit more while doubled),
+  // the dividend bits still to shift in (the magnitude's low 7 bits, then zeros), the quotient so
+  // far, the sign and the clamp test.
+  reg [REG_BITS:0] remainder_q [0:1][0:QUOTIENT_BITS];
+  reg [QUOTIENT_BITS-1:0] pending_q [0:1][0:QUOTIENT_BITS];
+  reg [QUOTIENT_BITS-1:0] quotient_q [0:1][0:QUOTIENT_BITS];
+  reg negative_q [0:1][0:QUOTIENT_BITS];
+  reg clamp_q [0:1][0:QUOTIENT_BITS];
+  reg [REG_BITS-1:0] divisor_q [0:QUOTIENT_BITS];
+  reg valid_q [0:QUOTIENT_BITS];
+  reg [27:0] result_q [0:1];
+  reg result_valid_q;
+
+  wire [REG_BITS-1:0] dividend [0:1];
+  assign dividend[0] = in_s;
+  assign dividend[1] = in_t;
+
+  // Stage 0.
+  genvar c;
+  generate
+    for (c = 0; c < 2; c = c + 1) begin : coordinate
+      wire negative = dividend[c][REG_BITS-1];
+      wire [REG_BITS-1:0] magnitude = negative ? -dividend[c] : dividend[c];
+      // |d| 2^20 / q >= 2^27, |d| >= q 2^7: u clamps (for a negative d, exactly -2^27 is the
+      // floor when |d| = q 2^7, and the clamp gives the same).
+      wire clamp = {7'd0, magnitude} >= {in_q, 7'd0};
+      always @(posedge clk) begin
+        remainder_q[c][0] <= {8'd0, magnitude[REG_BITS-1:SHIFT]};
+        pending_q[c][0] <= {magnitude[SHIFT-1:0], {RS_UV_FRAC_BITS{1'b0}}};
+        quotient_q[c][0] <= {QUOTIENT_BITS{1'b0}};
+        negative_q[c][0] <= negative;
+        clamp_q[c][0] <= clamp;
+      end
+    end
+  endgenerate
+  always @(posedge clk) begin
+    divisor_q[0] <= in_q;
+    valid_q[0] <= in_valid && !rst;
+  end
+
+  // Stages 1..27: one restoring step each, most significant quotient bit first.
+  genvar k;
+  generate
+    for (k = 1; k <= QUOTIENT_BITS; k = k + 1) begin : step
+      for (c = 0; c < 2; c = c + 1) begin : coordinate
+        wire [REG_BITS+1:0] doubled = {remainder_q[c][k-1], pending_q[c][k-1][QUOTIENT_BITS-1]};
+        wire [REG_BITS+1:0] difference = doubled - {2'd0, divisor_q[k-1]};
+        wire fits = !difference[REG_BITS+1];  // doubled >= q
+        always @(posedge clk) begin
+          remainder_q[c][k] <= fits ? difference[REG_BITS:0] : doubled[REG_BITS:0];
+          pending_q[c][k] <= {pending_q[c][k-1][QUOTIENT_BITS-2:0], 1'b0};
+          quotient_q[c][k] <= {quotient_q[c][k-1][QUOTIENT_BITS-2:0], fits};
+          negative_q[c][k] <= negative_q[c][k-1];
+          clamp_q[c][k] <= clamp_q[c][k-1];
+        end
+      end
+      always @(posedge clk) begin
+        divisor_q[k] <= divisor_q[k-1];
+        valid_q[k] <= valid_q[k-1] && !rst;
+      end
+    end
+  endgenerate
+
+  // Stage 28: floor(-m) = -q0 - (remainder != 0); the clamp.
+  generate
+    for (c = 0; c < 2; c = c + 1) begin : finish
+      wire [27:0] magnitude = {1'b0, quotient_q[c][QUOTIENT_BITS]};
+      wire inexact = |remainder_q[c][QUOTIENT_BITS];
+      wire [27:0] floored = negative_q[c][QUOTIENT_BITS] ? -magnitude - {27'd0, inexact} : magnitude;
+      wire [27:0] limit = negative_q[c][QUOTIENT_BITS] ? 28'h8000000 : 28'h7FFFFFF;
+      always @(posedge clk) result_q[c] <= clamp_q[c][QUOTIENT_BITS] ? limit : floored;
+    end
+  endgenerate
+  always @(posedge clk) result_valid_q <= valid_q[QUOTIENT_BITS] && !rst;
+
+  assign out_valid = result_valid_q;
+  assign out_u = result_q[0];
+  assign out_v = result_q[1];
+endmodule
