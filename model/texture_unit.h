@@ -34,6 +34,7 @@ class TextureUnit {
   static constexpr int kDivideCycles = 29;   // take t -> u, v in the divider's output register (end of t + 29)
   static constexpr int kReadAfterTake = 31;  // the address register at the end of t + 30; reads from t + 31
   static constexpr int kOfferAfterData = 2;  // blend in s + Lt, modulate in s + Lt + 1, offered from s + Lt + 2
+  static_assert(kReadAfterTake == kDivideCycles + 2, "the address stage follows the divide, the read the address");
   // From take to offer without waiting, and the capacity that lets one fragment per clock through.
   static constexpr int latency(int texture_latency) { return kReadAfterTake + texture_latency + kOfferAfterData; }
   static constexpr int capacity(int texture_latency) { return latency(texture_latency) + 1; }

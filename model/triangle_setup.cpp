@@ -144,8 +144,9 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
     r.color[2] = plane(blue, unbiased, step_x, step_y, by_area, color_format, "blue plane");
   }
   // Texture planes (docs/arithmetic.md section 5); an untextured record keeps them zero.
-  r.textured = input.textured;
-  if (input.textured) {
+  // Without the profile's texture unit the hardware has no texture planes: coordinates are ignored.
+  r.textured = input.textured && profile_.texture_unit;
+  if (r.textured) {
     for (const SnappedVertex& vertex : v) {
       if (vertex.q <= 0 || vertex.q > (int64_t(1) << kTextureFractionBits))
         throw_width_overflow(vertex.q, kTextureFractionBits + 1, "vertex Q");
@@ -180,7 +181,7 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
     if (profile_.shading == Shading::Gouraud)
       for (int c = 0; c < 3; ++c) r.left[j].color[c] = along(r.color[c], quot, step_quot, w.color_reg_bits);
     for (int c = 0; c < 3; ++c)
-      r.left[j].texture[c] = input.textured ? along(r.texture[c], quot, step_quot, w.texture_reg_bits) : EdgePlane{};
+      r.left[j].texture[c] = r.textured ? along(r.texture[c], quot, step_quot, w.texture_reg_bits) : EdgePlane{};
   }
 }
 

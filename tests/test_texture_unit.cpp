@@ -118,6 +118,10 @@ TEST(TextureUnit, WhiteTexelKeepsTheGouraudColour) {
   }
   EXPECT_FALSE(snap(large_triangle(true), plain).textured);
   EXPECT_TRUE(snap(large_triangle(true), textured).textured);
+  // A snapped triangle marked textured by hand: without the texture unit the setup ignores it.
+  SnappedTriangle marked = snap(large_triangle(true), textured);
+  EXPECT_FALSE(TriangleSetup(plain).run(marked).textured);
+  EXPECT_TRUE(TriangleSetup(textured).run(marked).textured);
 }
 
 // A one-texel texture of colour c: every textured fragment is round(c g / 255) of its Gouraud colour g.
