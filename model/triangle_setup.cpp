@@ -46,8 +46,9 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
   const Widths& w = widths_;
   const int S = profile_.subpixel_bits;
   // Every field of a drawn triangle's record is written below (the colour planes only with Gouraud
-  // shading; otherwise they keep a fresh record's zeros; the texture planes zero when untextured); a rejected one's record is a fresh one with
-  // what was decided. So the record is not cleared for every triangle.
+  // shading, otherwise they keep a fresh record's zeros; the texture planes zeroed when untextured);
+  // a rejected one's record is a fresh one with what was decided. So the record is not cleared for
+  // every triangle.
   auto reject = [&r](SetupStatus status) {
     SetupResult fresh;
     fresh.status = status;

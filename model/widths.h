@@ -3,6 +3,8 @@
 // against it. docs/widths.md proves each bound; tests/test_widths.cpp drives the extremes.
 #pragma once
 
+#include <algorithm>
+
 #include "fixed.h"
 #include "profile.h"
 
@@ -152,8 +154,6 @@ constexpr int serial_setup_texture_cycles(const Widths& w, int subpixel_bits) {
   return 3 * (3 * (1 + 3 * m) + (1 + H + m + F) + 2 * (1 + H + m + F + S)) + 12 * (setup_texture_product_bits(w) + 2);
 }
 
-constexpr int max_int(int a, int b) { return a > b ? a : b; }
-
 constexpr SetupTiming setup_timing(const Widths& w, int subpixel_bits, int z_bits, int interval, bool texture = false) {
   SetupTiming t{};
   t.interval = interval;
@@ -166,9 +166,10 @@ constexpr SetupTiming setup_timing(const Widths& w, int subpixel_bits, int z_bit
     return t;
   }
   // With the texture planes every slot is sized for them, whatever the triangle.
-  const int numer_bits = texture ? max_int(z_bits, kTextureVertexBits) : z_bits;
-  const int divide_bits = texture ? max_int(w.divider_bits, w.texture_divider_bits) : w.divider_bits;
-  const int product_bits = texture ? max_int(setup_product_bits(w), setup_texture_product_bits(w)) : setup_product_bits(w);
+  const int numer_bits = texture ? std::max(z_bits, kTextureVertexBits) : z_bits;
+  const int divide_bits = texture ? std::max(w.divider_bits, w.texture_divider_bits) : w.divider_bits;
+  const int product_bits =
+      texture ? std::max(setup_product_bits(w), setup_texture_product_bits(w)) : setup_product_bits(w);
   t.rejected_latency = 1;
   t.edge_stages = ceil_div(w.coord_bits + 1, interval * kSetupStepsPerCycle);
   t.edge_steps = ceil_div(w.coord_bits + 1, interval * t.edge_stages);

@@ -62,8 +62,9 @@ class PlaneRegister {
 };
 
 // The unit: the depth register and three colour registers (used for Gouraud shading), and for a
-// textured triangle the S, T, Q registers (docs/arithmetic.md section 5), stepped together. The model accumulates modulo 2^64 and reduces to the register width when a value is
-// read: 2^reg_bits divides 2^64, so this equals wrapping at every step, with fewer operations.
+// textured triangle the S, T, Q registers (docs/arithmetic.md section 5), stepped together. The
+// model accumulates modulo 2^64 and reduces to the register width when a value is read:
+// 2^reg_bits divides 2^64, so this equals wrapping at every step, with fewer operations.
 class ZAdder {
  public:
   ZAdder(const Widths& widths, int z_bits, bool gouraud)
