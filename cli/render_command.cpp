@@ -197,7 +197,8 @@ int run_render(const RenderOptions& o) {
   texture.filter = o.texture_filter == "nearest" ? TextureFilter::Nearest : TextureFilter::Bilinear;
   texture.wrap = o.texture_wrap == "clamp" ? TextureWrap::Clamp : TextureWrap::Repeat;
   if (!o.texture.empty()) texture.texture = std::make_shared<const Texture>(read_texture_file(o.texture));
-  else if (o.input.empty()) texture.texture = builtin_scene_texture(o.scene.empty() ? "default" : o.scene);
+  else if (o.input.empty() && profile.texture_unit)  // (the scene is made once more for its texture)
+    texture.texture = builtin_scene_texture(o.scene.empty() ? "default" : o.scene);
   std::vector<SnappedTriangle> snapped;
   snapped.reserve(screen.size());
   for (const ScreenTriangle& t : screen) snapped.push_back(snap(t, profile));
