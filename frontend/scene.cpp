@@ -77,13 +77,16 @@ std::vector<ScreenTriangle> render_scene(const Scene& scene, const Camera& camer
       }
       for (size_t t = before; t < out.size(); ++t) {
         out[t].textured = mesh.textured();
-        const std::string problem = check_screen_triangle(out[t], profile);
         // Clipping keeps every w within [near, far]; a textured triangle may still span a wider w
         // ratio than the texture divide's bound allows (docs/arithmetic.md section 5).
-        if (!problem.empty() && out[t].textured && problem.find("times the smallest") != std::string::npos)
-          throw InputError("object " + std::to_string(index + 1) + ", triangle " + std::to_string(triangle_index + 1) +
-                           ": textured, and " + problem + " (w, the eye distance, may vary by at most 16384 "
-                           "across a textured triangle: move the near plane out, --near, or split the mesh)");
+        if (out[t].textured && profile.texture_unit) {
+          const std::string ratio = check_texture_w_ratio(out[t]);
+          if (!ratio.empty())
+            throw InputError("object " + std::to_string(index + 1) + ", triangle " + std::to_string(triangle_index + 1) +
+                             ": textured, and " + ratio + " (w, the eye distance, may vary by at most 16384 "
+                             "across a textured triangle: move the near plane out, --near, or split the mesh)");
+        }
+        const std::string problem = check_screen_triangle(out[t], profile);
         if (!problem.empty()) throw std::logic_error("front end produced an unacceptable triangle: " + problem);
       }
     }

@@ -102,14 +102,17 @@ std::string check_screen_triangle(const ScreenTriangle& tri, const Profile& p) {
                exact_text(kMaxTextureCoordinate) + ", " + exact_text(kMaxTextureCoordinate) + ")";
     if (!(v.w > 0)) return who + "w " + exact_text(v.w) + " is not positive";
   }
-  if (tri.textured) {
-    // The u, v bound of docs/arithmetic.md section 5 holds up to this ratio.
-    const double w_min = std::min({tri.v[0].w, tri.v[1].w, tri.v[2].w});
-    const double w_max = std::max({tri.v[0].w, tri.v[1].w, tri.v[2].w});
-    if (w_max > std::ldexp(w_min, kMaxTextureWRatioLog2))
-      return "the largest w " + exact_text(w_max) + " is more than " +
-             std::to_string(1 << kMaxTextureWRatioLog2) + " times the smallest, " + exact_text(w_min);
-  }
+  // Without the texture unit the coordinates are ignored, and so is their w.
+  if (tri.textured && p.texture_unit) return check_texture_w_ratio(tri);
+  return "";
+}
+
+std::string check_texture_w_ratio(const ScreenTriangle& tri) {
+  const double w_min = std::min({tri.v[0].w, tri.v[1].w, tri.v[2].w});
+  const double w_max = std::max({tri.v[0].w, tri.v[1].w, tri.v[2].w});
+  if (w_max > std::ldexp(w_min, kMaxTextureWRatioLog2))
+    return "the largest w " + exact_text(w_max) + " is more than " + std::to_string(1 << kMaxTextureWRatioLog2) +
+           " times the smallest, " + exact_text(w_min);
   return "";
 }
 

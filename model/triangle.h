@@ -50,8 +50,12 @@ struct SnappedTriangle {
 // Why a screen triangle is not acceptable to the setup unit, or an empty string.
 // Checks: finite numbers, z in [0, 1], and every coordinate inside the guard band x in [-W, 2W),
 // y in [-H, 2H) (docs/formats.md); snapped, that is within [-W*2^S, 2W*2^S]. A textured triangle's
-// u and v lie in (-128, 128), its w are positive and the largest is at most 2^14 times the smallest.
+// u and v lie in (-128, 128), its w are positive and, with the profile's texture unit, within
+// check_texture_w_ratio.
 std::string check_screen_triangle(const ScreenTriangle& tri, const Profile& profile);
+// Why a textured triangle's w spread is beyond the texture divide's bound (the largest more than
+// 2^14 times the smallest; docs/arithmetic.md section 5), or an empty string.
+std::string check_texture_w_ratio(const ScreenTriangle& tri);
 
 // Snaps a checked triangle to the fixed-point grid of docs/arithmetic.md section 1, and with the
 // profile's texture unit a textured one's texture coordinates as section 5 says (without it they

@@ -80,6 +80,7 @@ TEST(TextureSnap, ScaledCoordinateIsRoundedHalfUp) {
 
 TEST(TextureSnap, WRatioAboveTheLimitIsBadInput) {
   Profile profile;
+  profile.texture_unit = true;
   ScreenTriangle tri;
   tri.textured = true;
   tri.v[0] = {10, 10, 0.5, {}, 0, 0, 2.0};
@@ -89,7 +90,10 @@ TEST(TextureSnap, WRatioAboveTheLimitIsBadInput) {
   tri.v[1].w = std::nextafter(2.0 * 16384, 1e9);
   EXPECT_NE(check_screen_triangle(tri, profile).find("more than 16384 times the smallest"), std::string::npos)
       << check_screen_triangle(tri, profile);
-  tri.textured = false;  // w means nothing without texture coordinates
+  profile.texture_unit = false;  // the limit is the texture unit's: without it w means nothing
+  EXPECT_EQ(check_screen_triangle(tri, profile), "");
+  profile.texture_unit = true;
+  tri.textured = false;  // nor without texture coordinates
   EXPECT_EQ(check_screen_triangle(tri, profile), "");
 }
 

@@ -465,6 +465,27 @@ TEST(CliRender, TextureFileIsModulatedIntoTheFragments) {
   EXPECT_EQ(dir.listing(), before);
 }
 
+// A textured mesh whose clipped triangles span more than the texture divide's w ratio (a strip of
+// ground seen from a millimetre above it, from the near plane at 0.01 to 1000 away) is bad input with the texture unit, naming the
+// object and triangle and what to do; without the unit its coordinates are ignored and it draws.
+TEST(CliRender, TexturedMeshBeyondTheWRatioIsBadInput) {
+  ScratchDir dir;
+  // Two millimetres wide, so that no side of the guard band cuts it before the near plane does.
+  dir.write("ground.obj", "v -0.001 0 1\nv 0.001 0 1\nv 0.001 0 -1000\nv -0.001 0 -1000\n"
+                          "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n");
+  const std::vector<std::string> args = {"render", "ground.obj", "--eye", "0,0.001,0", "--target", "0,0.001,-10", "--near",
+                                         "0.01", "--far", "2000", "--width", "64", "--height", "48", "-o", "g.png"};
+  std::vector<std::string> with_unit = args;
+  with_unit.insert(with_unit.end(), {"--texture-unit", "true"});
+  RunResult r = run_rastersim(dir, with_unit);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(contains(r.err, "object 1, triangle 1: textured, and the largest w")) << r.err;
+  EXPECT_TRUE(contains(r.err, "move the near plane out")) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path("g.png")));
+  r = run_rastersim(dir, args);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
 // The floor scene: perspective-correct and affine images differ (the affine one bends the checks).
 TEST(CliRender, FloorSceneDiffersWithoutPerspective) {
   ScratchDir dir;

@@ -101,6 +101,17 @@ TEST(TriReader, SkipsAByteOrderMark) {
   EXPECT_EQ(tris[0].v[0].x, 10.0);
 }
 
+// The texture divide's w ratio (at most 16384) is a limit of the texture unit: without it the
+// coordinates, and their w, are ignored.
+TEST(TriReader, WRatioBeyondTheTextureUnitsLimitIsBadInputWithTheUnit) {
+  const std::string line = "0 0 0.5 10 0 0.5 0 10 0.5 uvw 0 0 0.5 1 0 8192.5 0 1 1\n";
+  Profile with_unit = small_profile();
+  with_unit.texture_unit = true;
+  EXPECT_EQ(error_of(line, with_unit), "scene.tri:1: the largest w 8192.5 is more than 16384 times the smallest, 0.5");
+  EXPECT_EQ(error_of("0 0 0.5 10 0 0.5 0 10 0.5 uvw 0 0 0.5 1 0 8192 0 1 1\n", with_unit), "no error");
+  EXPECT_EQ(error_of(line), "no error");
+}
+
 TEST(TriReader, ReadsTheTextureSectionAfterAnyColours) {
   const auto tris = read_text(
       "1 2 0 3 4 0 5 6 1 uvw 0.5 -0.25 1 127.5 0 2 -127.5 3 1.25e-4\n"
@@ -201,9 +212,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadLine{"TextureBelowRange", "0 0 0.5 10 0 0.5 0 10 0.5 uvw -128 0 1 1 0 1 0 1 1",
                 "first vertex texture coordinate u -128 is outside (-128, 128)"},
         BadLine{"WZero", "0 0 0.5 10 0 0.5 0 10 0.5 uvw 0 0 0 1 0 1 0 1 1", "first vertex w 0 is not positive"},
-        BadLine{"WNegative", "0 0 0.5 10 0 0.5 0 10 0.5 uvw 0 0 1 1 0 -2 0 1 1", "second vertex w -2 is not positive"},
-        BadLine{"WRatio", "0 0 0.5 10 0 0.5 0 10 0.5 uvw 0 0 0.5 1 0 8192.5 0 1 1",
-                "the largest w 8192.5 is more than 16384 times the smallest, 0.5"}),
+        BadLine{"WNegative", "0 0 0.5 10 0 0.5 0 10 0.5 uvw 0 0 1 1 0 -2 0 1 1", "second vertex w -2 is not positive"}),
     [](const ::testing::TestParamInfo<BadLine>& info) { return info.param.name; });
 
 TEST(TriReader, RandomGarbageIsReadOrRejectedNeverAnythingElse) {
