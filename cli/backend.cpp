@@ -61,9 +61,9 @@ Backend select_backend(const std::string& name) {
 
 #ifdef RASTERSIM_HAVE_RTL
 void ensure_rtl_configuration(const Profile& profile) {
-  // No build runs a memory stall pattern (rastersim_top's memory has none): configuration_error
+  // No build runs a z-buffer memory stall pattern (rastersim_top's memory has none): configuration_error
   // says so without a module being built first.
-  if (validate(profile).empty() && profile.memory_stall_percent == 0 && !profile.texture_unit &&
+  if (validate(profile).empty() && profile.memory_stall_percent == 0 &&
       !rtl::has_configuration(profile))
     rtl::load_module(module_for(modules::Kind::Rtl, profile));
 }
@@ -120,6 +120,7 @@ RenderResult render_triangles(Backend backend, const Profile& profile, const std
     case Backend::Rtl: {
       rtl::RtlOptions rtl_options;
       rtl_options.seed = options.seed;
+      rtl_options.texture = options.texture;
       set_wave_fields(rtl_options, options.wave_files, options.wave);
       const rtl::RtlResult r = rtl::run_rtl(profile, triangles, rtl_options);
       if (!r.finished) throw std::runtime_error("the RTL did not finish: " + r.note);
@@ -129,6 +130,7 @@ RenderResult render_triangles(Backend backend, const Profile& profile, const std
     case Backend::Cosim: {
       rtl::RtlOptions rtl_options;
       rtl_options.seed = options.seed;
+      rtl_options.texture = options.texture;
       set_wave_fields(rtl_options, options.wave_files, options.wave);
       const rtl::CosimReport report = rtl::cosim(profile, triangles, rtl_options, options.replay_prefix);
       if (progress) progress(triangles.size());

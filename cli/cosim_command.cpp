@@ -221,6 +221,9 @@ int run_cosim(const CosimOptions& o) {
   if (o.frame >= 0 && shard.count > 1) throw InputError("--frame and --shard choose frames both: give one");
   if (!o.export_dir.empty() && (!o.junit_out.empty() || !o.wave.path.empty() || !o.coverage_out.empty()))
     throw InputError("--export writes the frames without running them: --junit, --wave and --coverage need a run");
+  if (!o.export_dir.empty() && profile.texture_unit)
+    throw InputError("--export writes .tri replays, which carry no texture: with the texture unit, rerun a frame "
+                     "with --frame");
   if (o.jobs < 1 || o.jobs > 256) throw InputError("--jobs " + std::to_string(o.jobs) + " is outside 1..256");
   ensure_rtl_configuration(profile);  // verilated on demand when the build lacks it
   const std::string problem = rtl::configuration_error(profile);
@@ -230,9 +233,10 @@ int run_cosim(const CosimOptions& o) {
   const WaveFiles wave = add_waveform(outputs, o.wave);
   const std::string coverage_temp = o.coverage_out.empty() ? "" : outputs.add(o.coverage_out, "--coverage");
 
-  const std::set<std::string> pinned =
+  std::set<std::string> pinned =
       o.fixed_settings ? std::set<std::string>(rtl::runtime_setting_keys().begin(), rtl::runtime_setting_keys().end())
                        : given_profile_keys(o.profile);
+  if (o.fixed_settings) pinned.insert({"texture_latency", "texture_stall_percent", "texture_stall_seed"});
   const int max_latency = rtl::built_max_memory_latency(profile);
   const rtl::CosimPlan plan(profile, pinned, max_latency, o.seed, o.triangles, o.directed);
   const std::vector<std::string>& varied = plan.varied();
@@ -284,6 +288,7 @@ int run_cosim(const CosimOptions& o) {
     if (!varied.empty() || k < directed) c.name += " (" + settings_summary(c.profile) + ")";
     rtl::RtlOptions options;
     options.seed = o.seed + uint64_t(k);
+    options.texture = c.texture;
     if (with_outputs) set_wave_fields(options, wave, o.wave);
     const std::string prefix =
         with_outputs ? (std::filesystem::path(o.replay_dir) / ("rastersim-replay-" + std::to_string(k))).string() : "";
@@ -388,6 +393,9 @@ int run_cosim(const CosimOptions& o) {
     info << "; random frames draw";
     for (const std::string& key : varied) info << " " << key;
   }
+  if (profile.texture_unit)
+    info << "; with the texture unit, random frames draw textured triangles, a texture, its filter and wrap mode,"
+         << " texture_latency and the texture memory's stall pattern";
   info << "\n";
   if (!holes.empty()) {
     info << "coverage: " << holes.size() << " reachable bin" << (holes.size() == 1 ? "" : "s") << " not hit:";

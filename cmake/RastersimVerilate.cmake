@@ -26,12 +26,16 @@ set(RASTERSIM_RTL_DEBUG_SOURCES ${RASTERSIM_SOURCE_ROOT}/testbench/rtl/rastersim
 function(rastersim_parse_config config prefix)
   string(REPLACE ":" ";" fields "${config}")
   list(LENGTH fields field_count)
-  if(field_count LESS 7 OR field_count GREATER 8)
-    message(FATAL_ERROR "RTL configuration '${config}' is not name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency[:setup_interval]")
+  if(field_count LESS 7 OR field_count GREATER 9)
+    message(FATAL_ERROR "RTL configuration '${config}' is not name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency[:setup_interval[:texture]]")
   endif()
   set(setup_interval 4)  # an entry from before setup_interval: the default setup
-  if(field_count EQUAL 8)
+  set(texture 0)         # an entry from before the texture unit: none
+  if(field_count GREATER_EQUAL 8)
     list(GET fields 7 setup_interval)
+  endif()
+  if(field_count EQUAL 9)
+    list(GET fields 8 texture)
   endif()
   list(GET fields 0 name)
   list(GET fields 1 width)
@@ -40,13 +44,14 @@ function(rastersim_parse_config config prefix)
   list(GET fields 4 z_bits)
   list(GET fields 5 z_guard_bits)
   list(GET fields 6 max_latency)
-  foreach(field name width height subpixel_bits z_bits z_guard_bits max_latency setup_interval)
+  foreach(field name width height subpixel_bits z_bits z_guard_bits max_latency setup_interval texture)
     string(TOUPPER ${field} upper)
     set(${prefix}_${upper} ${${field}} PARENT_SCOPE)
   endforeach()
   set(${prefix}_GENERICS
       -GWIDTH=${width} -GHEIGHT=${height} -GSUBPIXEL_BITS=${subpixel_bits} -GZ_BITS=${z_bits}
       -GZ_GUARD_BITS=${z_guard_bits} -GMAX_MEMORY_LATENCY=${max_latency} -GSETUP_INTERVAL=${setup_interval}
+      -GTEXTURE=${texture}
       PARENT_SCOPE)
 endfunction()
 

@@ -57,10 +57,15 @@ struct Profile {
   uint32_t depth_clear_value() const { return depth_clear < 0 ? depth_max() : uint32_t(depth_clear); }
 };
 
-// Why the RTL, SystemC and vector backends refuse a profile with the texture unit: the model has it,
-// the RTL twin does not yet (docs/design/texturing.md, step 4).
-inline constexpr const char* kNoTextureUnitInRtl =
-    "texture_unit: the RTL has no texture unit yet (the model has: --backend model)";
+// Why the vector packages and the SystemC system refuse a profile with the texture unit: the model
+// and the RTL have it, their texture memory images and memory model are not built yet
+// (docs/design/texturing.md, step 4).
+inline constexpr const char* kNoTextureUnitInVectors =
+    "texture_unit: vector packages carry no texture memory image yet (the model and --backend rtl have the "
+    "texture unit)";
+inline constexpr const char* kNoTextureUnitInSystemc =
+    "texture_unit: the SystemC system has no texture memory model yet (the model and --backend rtl have the "
+    "texture unit)";
 
 // Every error found, each a sentence naming the key; empty when the profile is valid.
 std::vector<std::string> validate(const Profile& profile);

@@ -21,7 +21,8 @@ module plane_register #(
   input  wire [REG_BITS-1:0] step_y_in,
   input  wire [2*REG_BITS-1:0] left_start,  // slot j at [j*REG_BITS]: the plane at its span start, first row
   input  wire [2*REG_BITS-1:0] left_step,   // its change per row without the DDA's carry
-  output wire [OUT_BITS-1:0] out        // clamp((value + 2^(F-1)) >>> F, 0, 2^OUT_BITS - 1)
+  output wire [OUT_BITS-1:0] out,       // clamp((value + 2^(F-1)) >>> F, 0, 2^OUT_BITS - 1)
+  output wire [REG_BITS-1:0] value      // the register itself (the texture planes' divide takes it)
 );
   // Parameter legality, as RS_REQUIRE of rastersim_widths.vh checks it (that header is not included
   // here: Verilator 5.006's lint then reports its functions as hiding themselves in rastersim_core).
@@ -81,6 +82,7 @@ module plane_register #(
     end
   end
 
+  assign value = value_q;
   localparam integer ROUNDED_BITS = REG_BITS - GUARD_BITS;
   // The fraction bits are dropped by the rounding shift.
   /* verilator lint_off UNUSEDSIGNAL */

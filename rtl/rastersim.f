@@ -11,6 +11,11 @@ scanline_walker.sv
 scanline_walker_entry.sv
 setup_fifo.sv
 span_bounds.sv
+texture_address.sv
+texture_divide.sv
+texture_filter.sv
+texture_memory.sv
+texture_unit.sv
 triangle_setup.sv
 z_adder.sv
 zbuffer.sv

@@ -7,6 +7,9 @@
 // shading, memory latency) are cfg_* inputs, sampled during reset.
 // Cycle 0 of a frame is the first cycle with frame_ready (= mem_clear_done) high.
 // The trace_* outputs expose the unit handshakes and decisions for the co-simulation scoreboard.
+// With TEXTURE = 1 the texture unit sits between the walker and the z-buffer (its memory on the
+// tex_rd_* port, rtl/texture_unit.sv) and the setup computes the texture planes; with TEXTURE = 0
+// the texture ports are unused and tied off, and the core is as it was without them.
 module rastersim_core #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
@@ -15,7 +18,9 @@ module rastersim_core #(
   parameter integer Z_GUARD_BITS = 0,      // 0: derived (proven minimum)
   parameter integer MAX_MEMORY_LATENCY = 64,
   parameter integer MAX_SETUP_FIFO_DEPTH = 16,  // record FIFO entries; cfg_setup_fifo_depth <= this
-  parameter integer SETUP_INTERVAL = 0         // 0: serial setup; 2..64: pipelined (profile setup_interval)
+  parameter integer SETUP_INTERVAL = 0,        // 0: serial setup; 2..64: pipelined (profile setup_interval)
+  parameter integer TEXTURE = 0,               // 1: the texture unit (profile texture_unit)
+  parameter integer MAX_TEXTURE_LATENCY = 64   // cfg_texture_latency <= this
 ) (
   input  wire clk,
   input  wire rst,
@@ -27,6 +32,11 @@ module rastersim_core #(
   input  wire       cfg_shading,           // RS_SHADING_*
   input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,  // 1 .. MAX_MEMORY_LATENCY
   input  wire [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] cfg_setup_fifo_depth,  // record credits, 1 .. MAX
+  input  wire [6:0] cfg_texture_latency,   // Lt, 1 .. MAX_TEXTURE_LATENCY (TEXTURE builds)
+  input  wire [3:0] cfg_texture_log2_width,  // the texture's size, 0..10
+  input  wire [3:0] cfg_texture_log2_height,
+  input  wire       cfg_texture_bilinear,  // 0: nearest
+  input  wire       cfg_texture_clamp,     // 0: repeat
   output wire frame_ready,
   // Triangle command: snapped vertices, x and y s(COORD_BITS-S).S, z uN, rgb {r, g, b}.
   input  wire cmd_valid,
@@ -34,6 +44,10 @@ module rastersim_core #(
   input  wire [rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] cmd_x0, cmd_y0, cmd_x1, cmd_y1, cmd_x2, cmd_y2,
   input  wire [Z_BITS-1:0] cmd_z0, cmd_z1, cmd_z2,
   input  wire [23:0] cmd_rgb0, cmd_rgb1, cmd_rgb2,
+  // Texture coordinates (TEXTURE builds): S at [0 +: 50], T at [50 +: 50], Q at [100 +: 50] (S, T
+  // s8.41, Q u1.41: RS_TEXTURE_VERTEX_BITS), used when cmd_textured.
+  input  wire cmd_textured,
+  input  wire [149:0] cmd_texture0, cmd_texture1, cmd_texture2,
   // Trace: setup decision (FRONT cycle) and activity.
   output wire trace_setup_decided,
   output wire [2:0] trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen, 4 no centre
@@ -44,7 +58,13 @@ module rastersim_core #(
   output wire trace_walker_busy,
   output wire trace_walker_candidate,
   output wire trace_walker_last,
-  // Trace: walker -> z-buffer fragment handshake and the depth test result L cycles later.
+  // Trace: the walker's fragment handshake (into the texture unit, else the z-buffer's), the texture
+  // unit's activity (0 without one).
+  output wire trace_walker_frag_valid,
+  output wire trace_walker_frag_ready,
+  output wire trace_texture_busy,
+  output wire trace_texture_stall,         // a textured read waits for the texture memory
+  // Trace: the z-buffer's fragment handshake and the depth test result L cycles later.
   output wire trace_frag_valid,
   output wire trace_frag_ready,
   output wire [rs_ubits32(WIDTH - 1)-1:0]  trace_frag_x,
@@ -65,10 +85,16 @@ module rastersim_core #(
   output wire mem_wr_color_en,
   output wire [rs_ubits32(WIDTH * HEIGHT - 1)-1:0] mem_wr_addr,
   output wire [Z_BITS-1:0] mem_wr_depth,
-  output wire [23:0]       mem_wr_rgb
+  output wire [23:0]       mem_wr_rgb,
+  // Texture memory port of the texture unit (rtl/texture_unit.sv; tied off without TEXTURE).
+  output wire tex_rd_valid,
+  input  wire tex_rd_ready,
+  output wire [4*18-1:0] tex_rd_addr,
+  input  wire [4*24-1:0] tex_rd_texels
 );
 `include "rastersim_widths.vh"
   `RS_REQUIRE(illegal_setup_fifo_depth, MAX_SETUP_FIFO_DEPTH >= 1, "rastersim_core: MAX_SETUP_FIFO_DEPTH must be at least 1")
+  `RS_REQUIRE(illegal_texture, TEXTURE == 0 || TEXTURE == 1, "rastersim_core: TEXTURE must be 0 or 1")
 
   // Derived widths, the same formulas as model/widths.h; the C++ build static_asserts these
   // (public, so Verilator emits them as static constexpr) against rastersim::derive_widths.
@@ -90,8 +116,11 @@ module rastersim_core #(
   localparam integer X_BITS /*verilator public*/ = rs_ubits32(WIDTH - 1);
   localparam integer Y_BITS /*verilator public*/ = rs_ubits32(HEIGHT - 1);
   localparam integer ADDR_BITS /*verilator public*/ = rs_ubits32(WIDTH * HEIGHT - 1);
+  // Untextured and textured triangles (equal unless the serial unit is built with TEXTURE).
   localparam integer SETUP_DRAWN_LATENCY /*verilator public*/ =
-      rs_setup_drawn_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS, SETUP_INTERVAL);
+      rs_setup_texture_drawn_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS, SETUP_INTERVAL, TEXTURE, 0);
+  localparam integer SETUP_TEXTURED_DRAWN_LATENCY /*verilator public*/ =
+      rs_setup_texture_drawn_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS, SETUP_INTERVAL, TEXTURE, 1);
   localparam integer SETUP_REJECTED_LATENCY /*verilator public*/ =
       rs_setup_rejected_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, SETUP_INTERVAL);
   localparam integer WALKER_LOAD_CYCLES /*verilator public*/ = 1;
@@ -113,6 +142,9 @@ module rastersim_core #(
   localparam integer P_MAX_MEMORY_LATENCY /*verilator public*/ = MAX_MEMORY_LATENCY;
   localparam integer P_MAX_SETUP_FIFO_DEPTH /*verilator public*/ = MAX_SETUP_FIFO_DEPTH;
   localparam integer P_SETUP_INTERVAL /*verilator public*/ = SETUP_INTERVAL;
+  localparam integer P_TEXTURE /*verilator public*/ = TEXTURE;
+  localparam integer P_MAX_TEXTURE_LATENCY /*verilator public*/ = MAX_TEXTURE_LATENCY;
+  localparam integer TEXTURE_REG_BITS /*verilator public*/ = rs_texture_reg_bits(WIDTH, HEIGHT);
   /* verilator lint_on UNUSEDPARAM */
 
   // The runtime profile keys are sampled while rst is high and held for the frame (static
@@ -122,8 +154,16 @@ module rastersim_core #(
   reg [1:0] cull_q;
   reg [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] memory_latency_q;
   reg [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] setup_fifo_depth_q;
+  reg [6:0] texture_latency_q;
+  reg [3:0] texture_log2_width_q, texture_log2_height_q;
+  reg texture_bilinear_q, texture_clamp_q;
   always @(posedge clk) begin
     if (rst) begin
+      texture_latency_q <= cfg_texture_latency;
+      texture_log2_width_q <= cfg_texture_log2_width;
+      texture_log2_height_q <= cfg_texture_log2_height;
+      texture_bilinear_q <= cfg_texture_bilinear;
+      texture_clamp_q <= cfg_texture_clamp;
       depth_func_q <= cfg_depth_func;
       depth_write_q <= cfg_depth_write;
       cull_q <= cfg_cull;
@@ -142,6 +182,8 @@ module rastersim_core #(
   wire setup_valid;
   wire [RECORD_BITS-1:0] setup_record;
   wire setup_ready;
+  localparam integer TEXTURE_RECORD_BITS = rs_texture_record_bits(WIDTH, HEIGHT);
+  wire [TEXTURE_RECORD_BITS-1:0] setup_texture;
   wire decided_front_facing_unused;
   wire [AREA_BITS-1:0] decided_area2_unused;
 
@@ -164,30 +206,48 @@ module rastersim_core #(
   assign trace_setup_done = setup_valid;
 
   triangle_setup #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
-                   .Z_GUARD_BITS(Z_GUARD_BITS), .SETUP_INTERVAL(SETUP_INTERVAL)) setup (
+                   .Z_GUARD_BITS(Z_GUARD_BITS), .SETUP_INTERVAL(SETUP_INTERVAL), .TEXTURE(TEXTURE)) setup (
     .clk(clk), .rst(rst), .run(frame_ready), .free(setup_free), .cfg_cull(cull_q), .cfg_front_face(front_face_q),
     .in_valid(cmd_valid && frame_ready && credit_free), .in_ready(setup_ready),
     .in_x({cmd_x2, cmd_x1, cmd_x0}), .in_y({cmd_y2, cmd_y1, cmd_y0}), .in_z({cmd_z2, cmd_z1, cmd_z0}),
     .in_rgb({cmd_rgb2, cmd_rgb1, cmd_rgb0}),
+    .in_textured(cmd_textured), .in_texture({cmd_texture2, cmd_texture1, cmd_texture0}),
     .decided(trace_setup_decided), .decided_status(trace_setup_status),
     .decided_front_facing(decided_front_facing_unused), .decided_area2(decided_area2_unused),
     .busy(trace_setup_busy),
     .out_valid(setup_valid),
-    .out_record(setup_record));
+    .out_record(setup_record), .out_texture(setup_texture));
 
   // Record FIFO: every record goes in, as the walker's entry (scanline_walker_entry: its state at
   // the load) and the Z adder's planes; it is at the head from the next cycle (the credits leave it
   // room).
   localparam integer ENTRY_BITS = rs_entry_lsb(20, WIDTH, HEIGHT, SUBPIXEL_BITS);
   localparam integer PLANE_BITS = RECORD_BITS - WALKER_RECORD_BITS;
+  // The texture record rides above the planes in a TEXTURE build only.
+  localparam integer FIFO_TEXTURE_BITS = TEXTURE != 0 ? TEXTURE_RECORD_BITS : 0;
+  localparam integer FIFO_BITS = ENTRY_BITS + PLANE_BITS + FIFO_TEXTURE_BITS;
   wire [ENTRY_BITS-1:0] setup_entry;
   scanline_walker_entry #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS)) walker_entry (
     .record(setup_record[WALKER_RECORD_BITS-1:0]), .entry(setup_entry));
   wire fifo_empty;
-  wire [ENTRY_BITS+PLANE_BITS-1:0] fifo_head;
+  wire [FIFO_BITS-1:0] fifo_head;
   wire walker_ready;
-  setup_fifo #(.RECORD_BITS(ENTRY_BITS + PLANE_BITS), .ENTRIES(MAX_SETUP_FIFO_DEPTH)) record_fifo (
-    .clk(clk), .rst(rst), .push(setup_valid), .push_data({setup_record[RECORD_BITS-1:WALKER_RECORD_BITS], setup_entry}),
+  wire [FIFO_BITS-1:0] fifo_push_data;
+  wire [TEXTURE_RECORD_BITS-1:0] head_texture;
+  generate
+    if (TEXTURE != 0) begin : fifo_texture
+      assign fifo_push_data = {setup_texture, setup_record[RECORD_BITS-1:WALKER_RECORD_BITS], setup_entry};
+      assign head_texture = fifo_head[FIFO_BITS-1 -: TEXTURE_RECORD_BITS];
+    end else begin : fifo_plain
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire setup_texture_unused = ^setup_texture;
+      /* verilator lint_on UNUSEDSIGNAL */
+      assign fifo_push_data = {setup_record[RECORD_BITS-1:WALKER_RECORD_BITS], setup_entry};
+      assign head_texture = {TEXTURE_RECORD_BITS{1'b0}};
+    end
+  endgenerate
+  setup_fifo #(.RECORD_BITS(FIFO_BITS), .ENTRIES(MAX_SETUP_FIFO_DEPTH)) record_fifo (
+    .clk(clk), .rst(rst), .push(setup_valid), .push_data(fifo_push_data),
     .pop(!fifo_empty && walker_ready), .empty(fifo_empty), .head(fifo_head));
   assign trace_walker_load = !fifo_empty && walker_ready;
   // A plane field of the record at LSB is at PLANES_AT + LSB of the head (the walker part's place
@@ -216,6 +276,8 @@ module rastersim_core #(
   wire [23:0]      rec_flat_rgb /*verilator public_flat_rd*/;
   wire [LEFT_BITS-1:0] rec_left_start /*verilator public_flat_rd*/;
   wire [LEFT_BITS-1:0] rec_left_step /*verilator public_flat_rd*/;
+  wire [TEXTURE_RECORD_BITS-1:0] rec_texture /*verilator public_flat_rd*/;  // rs_texture_record_bits layout
+  assign rec_texture = setup_texture;
   wire [RECORD_BITS-1:0] rec = setup_record;
   assign rec_x0 = rec[LSB_X0 +: X_BITS];
   assign rec_x1 = rec[LSB_X1 +: X_BITS];
@@ -238,7 +300,15 @@ module rastersim_core #(
   assign rec_left_start = rec[LSB_LEFT_START +: LEFT_BITS];
   assign rec_left_step = rec[LSB_LEFT_STEP +: LEFT_BITS];
 
-  // Walker + Z adder -> z-buffer fragment.
+  // Walker + Z adder -> (texture unit ->) z-buffer fragment.
+  localparam integer TR = rs_texture_reg_bits(WIDTH, HEIGHT);
+  wire walker_frag_valid, walker_frag_ready;
+  wire [X_BITS-1:0] walker_frag_x;
+  wire [Y_BITS-1:0] walker_frag_y;
+  wire [Z_BITS-1:0] walker_frag_z;
+  wire [23:0] walker_frag_rgb;
+  wire walker_frag_textured;
+  wire [3*TR-1:0] walker_frag_texture;
   wire adder_load, adder_step_x, adder_next_row, adder_row_enter, adder_enter_left, adder_enter_slot;
   wire [1:0] adder_left_carry;
   wire frag_valid, frag_ready;
@@ -254,10 +324,10 @@ module rastersim_core #(
     .adder_load(adder_load), .adder_step_x(adder_step_x), .adder_next_row(adder_next_row),
     .adder_row_enter(adder_row_enter), .adder_enter_left(adder_enter_left), .adder_enter_slot(adder_enter_slot),
     .adder_left_carry(adder_left_carry),
-    .frag_valid(frag_valid), .frag_ready(frag_ready), .frag_x(frag_x), .frag_y(frag_y),
+    .frag_valid(walker_frag_valid), .frag_ready(walker_frag_ready), .frag_x(walker_frag_x), .frag_y(walker_frag_y),
     .busy(trace_walker_busy), .candidate(trace_walker_candidate), .last(trace_walker_last));
 
-  z_adder #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS)) adders (
+  z_adder #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS), .TEXTURE(TEXTURE)) adders (
     .clk(clk), .cfg_shading(shading_q), .load(adder_load), .step_x(adder_step_x),
     .next_row(adder_next_row), .row_enter(adder_row_enter), .enter_left(adder_enter_left),
     .enter_slot(adder_enter_slot), .left_carry(adder_left_carry),
@@ -265,7 +335,40 @@ module rastersim_core #(
     .depth_step_y(fifo_head[PLANES_AT + LSB_DEPTH_STEP_Y +: Z_REG_BITS]), .color_start(fifo_head[PLANES_AT + LSB_COLOR_START +: 3*COLOR_REG_BITS]),
     .color_step_x(fifo_head[PLANES_AT + LSB_COLOR_STEP_X +: 3*COLOR_REG_BITS]), .color_step_y(fifo_head[PLANES_AT + LSB_COLOR_STEP_Y +: 3*COLOR_REG_BITS]),
     .flat_rgb(fifo_head[PLANES_AT + LSB_FLAT_RGB +: 24]), .left_start(fifo_head[PLANES_AT + LSB_LEFT_START +: LEFT_BITS]),
-    .left_step(fifo_head[PLANES_AT + LSB_LEFT_STEP +: LEFT_BITS]), .depth(frag_z), .rgb(frag_rgb));
+    .left_step(fifo_head[PLANES_AT + LSB_LEFT_STEP +: LEFT_BITS]), .texture_record(head_texture),
+    .depth(walker_frag_z), .rgb(walker_frag_rgb), .triangle_textured(walker_frag_textured), .stq(walker_frag_texture));
+
+  generate
+    if (TEXTURE != 0) begin : texturing
+      texture_unit #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .MAX_TEXTURE_LATENCY(MAX_TEXTURE_LATENCY)) unit (
+        .clk(clk), .rst(rst), .cfg_texture_latency(texture_latency_q), .cfg_log2_width(texture_log2_width_q),
+        .cfg_log2_height(texture_log2_height_q), .cfg_bilinear(texture_bilinear_q), .cfg_clamp(texture_clamp_q),
+        .in_valid(walker_frag_valid), .in_ready(walker_frag_ready), .in_x(walker_frag_x), .in_y(walker_frag_y),
+        .in_z(walker_frag_z), .in_rgb(walker_frag_rgb), .in_textured(walker_frag_textured),
+        .in_s(walker_frag_texture[0 +: TR]), .in_t(walker_frag_texture[TR +: TR]), .in_q(walker_frag_texture[2*TR +: TR]),
+        .out_valid(frag_valid), .out_ready(frag_ready), .out_x(frag_x), .out_y(frag_y), .out_z(frag_z), .out_rgb(frag_rgb),
+        .tex_rd_valid(tex_rd_valid), .tex_rd_ready(tex_rd_ready), .tex_rd_addr(tex_rd_addr), .tex_rd_texels(tex_rd_texels),
+        .busy(trace_texture_busy), .stall(trace_texture_stall));
+    end else begin : no_texture
+      // The texture configuration and ports are unused: the walker feeds the z-buffer.
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire unused = ^{walker_frag_textured, walker_frag_texture, tex_rd_ready, tex_rd_texels, texture_latency_q,
+                      texture_log2_width_q, texture_log2_height_q, texture_bilinear_q, texture_clamp_q};
+      /* verilator lint_on UNUSEDSIGNAL */
+      assign frag_valid = walker_frag_valid;
+      assign walker_frag_ready = frag_ready;
+      assign frag_x = walker_frag_x;
+      assign frag_y = walker_frag_y;
+      assign frag_z = walker_frag_z;
+      assign frag_rgb = walker_frag_rgb;
+      assign tex_rd_valid = 1'b0;
+      assign tex_rd_addr = {4*18{1'b0}};
+      assign trace_texture_busy = 1'b0;
+      assign trace_texture_stall = 1'b0;
+    end
+  endgenerate
+  assign trace_walker_frag_valid = walker_frag_valid;
+  assign trace_walker_frag_ready = walker_frag_ready;
 
   zbuffer #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY)) zbuf (
     .clk(clk), .rst(rst), .cfg_depth_func(depth_func_q), .cfg_depth_write(depth_write_q),

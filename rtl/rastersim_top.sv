@@ -3,6 +3,8 @@
 // back-pressure. Same ports as the core, except that the depth clear value goes to the memory and
 // the final memories are read through the read-back port instead of a memory port.
 // Cycle 0 of a frame is the first cycle with frame_ready high (the memory clear has finished).
+// With TEXTURE = 1 the texture memory (texture_memory) sits behind the texture unit's port, loaded
+// through the texture_load_* port before the frame.
 module rastersim_top #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
@@ -11,7 +13,9 @@ module rastersim_top #(
   parameter integer Z_GUARD_BITS = 0,      // 0: derived (proven minimum)
   parameter integer MAX_MEMORY_LATENCY = 64,
   parameter integer MAX_SETUP_FIFO_DEPTH = 16,  // record FIFO entries; cfg_setup_fifo_depth <= this
-  parameter integer SETUP_INTERVAL = 0         // 0: serial setup; 2..64: pipelined
+  parameter integer SETUP_INTERVAL = 0,        // 0: serial setup; 2..64: pipelined
+  parameter integer TEXTURE = 0,               // 1: the texture unit and its memory
+  parameter integer MAX_TEXTURE_LATENCY = 64
 ) (
   input  wire clk,
   input  wire rst,
@@ -24,6 +28,19 @@ module rastersim_top #(
   input  wire       cfg_shading,           // RS_SHADING_*
   input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,  // 1 .. MAX_MEMORY_LATENCY
   input  wire [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] cfg_setup_fifo_depth,  // record credits, 1 .. MAX
+  input  wire [6:0] cfg_texture_latency,   // as rastersim_core's (TEXTURE builds)
+  input  wire [3:0] cfg_texture_log2_width,
+  input  wire [3:0] cfg_texture_log2_height,
+  input  wire       cfg_texture_bilinear,
+  input  wire       cfg_texture_clamp,
+  // Texture load port: texel (column, row), written at the end of the cycle (TEXTURE builds).
+  input  wire texture_load_en,
+  input  wire [9:0] texture_load_x,
+  input  wire [9:0] texture_load_y,
+  input  wire [23:0] texture_load_rgb,
+  // The texture memory refuses read requests in this cycle: a verification hook (the co-simulation
+  // drives the profile's stall pattern on it); tie it to 0.
+  input  wire texture_refuse,
   output wire frame_ready,
   // Triangle command: snapped vertices, x and y s(COORD_BITS-S).S, z uN, rgb {r, g, b}.
   input  wire cmd_valid,
@@ -31,6 +48,8 @@ module rastersim_top #(
   input  wire [rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] cmd_x0, cmd_y0, cmd_x1, cmd_y1, cmd_x2, cmd_y2,
   input  wire [Z_BITS-1:0] cmd_z0, cmd_z1, cmd_z2,
   input  wire [23:0] cmd_rgb0, cmd_rgb1, cmd_rgb2,
+  input  wire cmd_textured,
+  input  wire [149:0] cmd_texture0, cmd_texture1, cmd_texture2,  // S, T, Q as rastersim_core's
   // Trace: setup decision (FRONT cycle) and activity.
   output wire trace_setup_decided,
   output wire [2:0] trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen, 4 no centre
@@ -41,7 +60,11 @@ module rastersim_top #(
   output wire trace_walker_busy,
   output wire trace_walker_candidate,
   output wire trace_walker_last,
-  // Trace: walker -> z-buffer fragment handshake and the depth test result L cycles later.
+  output wire trace_walker_frag_valid,
+  output wire trace_walker_frag_ready,
+  output wire trace_texture_busy,
+  output wire trace_texture_stall,
+  // Trace: the z-buffer's fragment handshake and the depth test result L cycles later.
   output wire trace_frag_valid,
   output wire trace_frag_ready,
   output wire [rs_ubits32(WIDTH - 1)-1:0]  trace_frag_x,
@@ -63,22 +86,31 @@ module rastersim_top #(
   wire [rs_ubits32(WIDTH * HEIGHT - 1)-1:0] mem_rd_addr, mem_wr_addr;
   wire [Z_BITS-1:0] mem_rd_depth, mem_wr_depth;
   wire [23:0] mem_wr_rgb;
+  wire tex_rd_valid, tex_rd_ready;
+  wire [4*18-1:0] tex_rd_addr;
+  wire [4*24-1:0] tex_rd_texels;
 
   rastersim_core #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
                    .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY),
-                   .MAX_SETUP_FIFO_DEPTH(MAX_SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL)) core (
+                   .MAX_SETUP_FIFO_DEPTH(MAX_SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL), .TEXTURE(TEXTURE),
+                   .MAX_TEXTURE_LATENCY(MAX_TEXTURE_LATENCY)) core (
     .clk(clk), .rst(rst), .cfg_depth_func(cfg_depth_func), .cfg_depth_write(cfg_depth_write),
     .cfg_cull(cfg_cull), .cfg_front_face(cfg_front_face), .cfg_traversal(cfg_traversal),
     .cfg_shading(cfg_shading), .cfg_memory_latency(cfg_memory_latency),
-    .cfg_setup_fifo_depth(cfg_setup_fifo_depth), .frame_ready(frame_ready),
+    .cfg_setup_fifo_depth(cfg_setup_fifo_depth), .cfg_texture_latency(cfg_texture_latency),
+    .cfg_texture_log2_width(cfg_texture_log2_width), .cfg_texture_log2_height(cfg_texture_log2_height),
+    .cfg_texture_bilinear(cfg_texture_bilinear), .cfg_texture_clamp(cfg_texture_clamp), .frame_ready(frame_ready),
     .cmd_valid(cmd_valid), .cmd_ready(cmd_ready),
     .cmd_x0(cmd_x0), .cmd_y0(cmd_y0), .cmd_x1(cmd_x1), .cmd_y1(cmd_y1), .cmd_x2(cmd_x2), .cmd_y2(cmd_y2),
     .cmd_z0(cmd_z0), .cmd_z1(cmd_z1), .cmd_z2(cmd_z2), .cmd_rgb0(cmd_rgb0), .cmd_rgb1(cmd_rgb1), .cmd_rgb2(cmd_rgb2),
+    .cmd_textured(cmd_textured), .cmd_texture0(cmd_texture0), .cmd_texture1(cmd_texture1), .cmd_texture2(cmd_texture2),
     .trace_setup_decided(trace_setup_decided), .trace_setup_status(trace_setup_status),
     .trace_setup_busy(trace_setup_busy), .trace_setup_stall(trace_setup_stall),
     .trace_setup_done(trace_setup_done),
     .trace_walker_load(trace_walker_load), .trace_walker_busy(trace_walker_busy),
     .trace_walker_candidate(trace_walker_candidate), .trace_walker_last(trace_walker_last),
+    .trace_walker_frag_valid(trace_walker_frag_valid), .trace_walker_frag_ready(trace_walker_frag_ready),
+    .trace_texture_busy(trace_texture_busy), .trace_texture_stall(trace_texture_stall),
     .trace_frag_valid(trace_frag_valid), .trace_frag_ready(trace_frag_ready),
     .trace_frag_x(trace_frag_x), .trace_frag_y(trace_frag_y), .trace_frag_z(trace_frag_z),
     .trace_frag_rgb(trace_frag_rgb), .trace_result_valid(trace_result_valid),
@@ -87,7 +119,24 @@ module rastersim_top #(
     .mem_clear_done(mem_clear_done), .mem_rd_valid(mem_rd_valid), .mem_rd_ready(mem_rd_ready),
     .mem_rd_addr(mem_rd_addr), .mem_rd_depth(mem_rd_depth), .mem_wr_depth_en(mem_wr_depth_en),
     .mem_wr_color_en(mem_wr_color_en), .mem_wr_addr(mem_wr_addr), .mem_wr_depth(mem_wr_depth),
-    .mem_wr_rgb(mem_wr_rgb));
+    .mem_wr_rgb(mem_wr_rgb), .tex_rd_valid(tex_rd_valid), .tex_rd_ready(tex_rd_ready), .tex_rd_addr(tex_rd_addr),
+    .tex_rd_texels(tex_rd_texels));
+
+  generate
+    if (TEXTURE != 0) begin : texturing
+      texture_memory #(.MAX_TEXTURE_LATENCY(MAX_TEXTURE_LATENCY)) tmem (
+        .clk(clk), .rst(rst), .cfg_texture_latency(cfg_texture_latency), .refuse(texture_refuse), .rd_valid(tex_rd_valid),
+        .rd_ready(tex_rd_ready), .rd_addr(tex_rd_addr), .rd_texels(tex_rd_texels), .load_en(texture_load_en),
+        .load_x(texture_load_x), .load_y(texture_load_y), .load_rgb(texture_load_rgb));
+    end else begin : no_texture
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire unused = ^{tex_rd_valid, tex_rd_addr, texture_load_en, texture_load_x, texture_load_y, texture_load_rgb,
+                      texture_refuse};
+      /* verilator lint_on UNUSEDSIGNAL */
+      assign tex_rd_ready = 1'b0;
+      assign tex_rd_texels = {4*24{1'b0}};
+    end
+  endgenerate
 
   zbuffer_memory #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY)) zmem (
     .clk(clk), .rst(rst), .cfg_depth_clear(cfg_depth_clear), .cfg_memory_latency(cfg_memory_latency),

@@ -154,6 +154,21 @@ function automatic integer rs_texture_reg_bits(input integer w, input integer h)
   rs_texture_reg_bits = RS_TEXTURE_FRACTION_BITS + rs_guard_bits(w, h, 0) + 9;
 endfunction
 
+// A vertex's S, T, Q (model/triangle.h SnappedVertex): m_t = P + 9 bits each, S and T s8.P, Q u1.P
+// with leading zeros. The setup's texture input holds vertex k's coordinate c (0 S, 1 T, 2 Q) at
+// [(3 k + c) RS_TEXTURE_VERTEX_BITS +: RS_TEXTURE_VERTEX_BITS].
+/* verilator lint_off UNUSEDPARAM */
+localparam integer RS_TEXTURE_VERTEX_BITS = RS_TEXTURE_FRACTION_BITS + 9;
+/* verilator lint_on UNUSEDPARAM */
+
+// The texture record beside the setup record (builds with TEXTURE = 1; model/triangle_setup.h
+// SetupResult::textured, texture, left[j].texture): bit 0 the textured flag, then 21 registers of
+// rs_texture_reg_bits, register 3 g + c at 1 + (3 g + c) TR, c = 0 S, 1 T, 2 Q, and the groups g:
+// 0 start, 1 step x, 2 step y, 3 left-edge slot 0 start, 4 its step, 5 slot 1 start, 6 its step.
+function automatic integer rs_texture_record_bits(input integer w, input integer h);
+  rs_texture_record_bits = 1 + 21 * rs_texture_reg_bits(w, h);
+endfunction
+
 // The pipelined setup unit's schedule (SETUP_INTERVAL I >= 2; model/widths.h setup_timing): slots
 // of edge, numerator, divide and product steps, at most 4 steps of one multiply or divide chained
 // in a cycle.
@@ -218,6 +233,57 @@ endfunction
 function automatic integer rs_setup_rejected_latency(input integer w, input integer h, input integer s,
                                                      input integer interval);
   rs_setup_rejected_latency = interval == 0 ? 2 + 2 * rs_delta_bits(w, h, s) : 1;
+endfunction
+
+// The setup units with the texture planes (TEXTURE = 1; docs/cycle-model.md, "The setup units with
+// the texture unit"; model/widths.h): the S, T, Q dividends' width 36 2^(P+7) W H M^2 2^Ft, PBt,
+// and what a textured triangle adds to the serial program.
+function automatic integer rs_texture_divider_bits(input integer w, input integer h, input integer s);
+  rs_texture_divider_bits = rs_ubits(((128'd36 << (RS_TEXTURE_FRACTION_BITS + 7)) * rs_area_unit(w, h, s))
+                                     << rs_guard_bits(w, h, 0));
+endfunction
+
+function automatic integer rs_setup_texture_product_bits(input integer w, input integer h, input integer s);
+  rs_setup_texture_product_bits = rs_texture_reg_bits(w, h) < rs_edge_bits(w, h, s) ? rs_texture_reg_bits(w, h)
+                                                                                     : rs_edge_bits(w, h, s);
+endfunction
+
+function automatic integer rs_setup_serial_texture_cycles(input integer w, input integer h, input integer s);
+  integer hb, m, ft;
+  begin
+    hb = rs_setup_serial_bits(w, h, s);
+    m = RS_TEXTURE_VERTEX_BITS;
+    ft = rs_guard_bits(w, h, 0);
+    rs_setup_serial_texture_cycles = 3 * (3 * (1 + 3 * m) + (1 + hb + m + ft) + 2 * (1 + hb + m + ft + s))
+                                     + 12 * (rs_setup_texture_product_bits(w, h, s) + 2);
+  end
+endfunction
+
+// Accept -> the record in the output register for a drawn triangle, in a unit built with TEXTURE =
+// texture, the triangle textured or not: the serial unit adds the texture program for a textured
+// triangle only; the pipelined unit's slots are sized for the texture planes for every triangle.
+// texture 0 is rs_setup_drawn_latency.
+function automatic integer rs_setup_texture_drawn_latency(input integer w, input integer h, input integer s,
+                                                          input integer z_bits, input integer z_guard_bits,
+                                                          input integer interval, input integer texture,
+                                                          input integer textured);
+  integer numer_bits, divide_bits, product_bits;
+  begin
+    numer_bits = z_bits > RS_TEXTURE_VERTEX_BITS ? z_bits : RS_TEXTURE_VERTEX_BITS;
+    divide_bits = rs_divider_bits(w, h, s, z_bits, z_guard_bits) > rs_texture_divider_bits(w, h, s)
+                  ? rs_divider_bits(w, h, s, z_bits, z_guard_bits) : rs_texture_divider_bits(w, h, s);
+    product_bits = rs_setup_product_bits(w, h, s, z_bits, z_guard_bits) > rs_setup_texture_product_bits(w, h, s)
+                   ? rs_setup_product_bits(w, h, s, z_bits, z_guard_bits) : rs_setup_texture_product_bits(w, h, s);
+    if (texture == 0) rs_setup_texture_drawn_latency = rs_setup_drawn_latency(w, h, s, z_bits, z_guard_bits, interval);
+    else if (interval == 0)
+      rs_setup_texture_drawn_latency = rs_setup_serial_latency(w, h, s, z_bits, z_guard_bits)
+                                       + (textured != 0 ? rs_setup_serial_texture_cycles(w, h, s) : 0);
+    else
+      rs_setup_texture_drawn_latency = interval * (1 + rs_setup_edge_stages(rs_coord_bits(w, h, s), interval)
+                                                   + rs_setup_numer_stages(numer_bits, interval)
+                                                   + rs_setup_divide_stages(divide_bits, interval)
+                                                   + rs_setup_product_stages(product_bits, interval));
+  end
 endfunction
 
 // Encodings of the run-time settings and of the setup decision, numbered as the C++ enums of

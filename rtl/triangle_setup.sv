@@ -12,13 +12,17 @@
 //   a slot's first cycle; FRONT slot (decision in a+1), EDGE_STAGES edge slots, NUMER_STAGES
 //   numerator slots, DIVIDE_STAGES divide slots, PRODUCT_STAGES product slots, then the output
 //   register, valid in a + I (1 + EDGE_STAGES + NUMER_STAGES + DIVIDE_STAGES + PRODUCT_STAGES).
+// TEXTURE = 1 adds the S, T, Q planes (docs/cycle-model.md, "The setup units with the texture
+// unit"): the serial program inserts their operations for a textured triangle only; the pipelined
+// slots are sized for them for every triangle.
 module triangle_setup #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
   parameter integer SUBPIXEL_BITS = 4,
   parameter integer Z_BITS = 24,
   parameter integer Z_GUARD_BITS = 0,
-  parameter integer SETUP_INTERVAL = 0  // 0: serial (one shared datapath); 2..64: pipelined, initiation interval
+  parameter integer SETUP_INTERVAL = 0,  // 0: serial (one shared datapath); 2..64: pipelined, initiation interval
+  parameter integer TEXTURE = 0          // 1: the S, T, Q planes (profile texture_unit)
 ) (
   input  wire clk,
   input  wire rst,
@@ -33,6 +37,12 @@ module triangle_setup #(
   input  wire [3*rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] in_y,
   input  wire [3*Z_BITS-1:0] in_z,
   input  wire [3*24-1:0]     in_rgb,
+  // Texture coordinates (TEXTURE = 1; unused otherwise): the triangle is textured, and vertex k's
+  // c (0 S, 1 T, 2 Q) at [(3k + c) 50 +: 50], S and T s8.41, Q u1.41 (50 = RS_TEXTURE_VERTEX_BITS).
+  /* verilator lint_off UNUSEDSIGNAL */
+  input  wire in_textured,
+  input  wire [9*50-1:0] in_texture,
+  /* verilator lint_on UNUSEDSIGNAL */
   // Decision, valid in the FRONT cycle: status 0 drawn, 1 degenerate, 2 culled, 3 offscreen,
   // 4 no centre (RS_STATUS_*).
   output wire        decided,
@@ -43,7 +53,9 @@ module triangle_setup #(
   // Setup record of a drawn triangle (the model's SetupResult), valid for the one cycle setup_done.
   output wire out_valid,
   // Its fields by rs_rec_lsb / rs_rec_field_bits (rastersim_widths.vh).
-  output wire [rs_rec_lsb(20, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS)-1:0] out_record
+  output wire [rs_rec_lsb(20, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS)-1:0] out_record,
+  // The texture record beside it (rs_texture_record_bits): 0 with TEXTURE = 0 or untextured.
+  output wire [rs_texture_record_bits(WIDTH, HEIGHT)-1:0] out_texture
 );
 `include "rastersim_widths.vh"
   `RS_REQUIRE(illegal_width, WIDTH >= 1 && WIDTH <= 4096, "triangle_setup: WIDTH must be 1..4096")
@@ -52,6 +64,7 @@ module triangle_setup #(
   `RS_REQUIRE(illegal_z_bits, Z_BITS >= 16 && Z_BITS <= 32, "triangle_setup: Z_BITS must be 16..32")
   `RS_REQUIRE(illegal_z_guard_bits, Z_GUARD_BITS >= 0 && Z_GUARD_BITS <= 24, "triangle_setup: Z_GUARD_BITS must be 0 (derived) or 1..24")
   `RS_REQUIRE(illegal_setup_interval, SETUP_INTERVAL == 0 || (SETUP_INTERVAL >= 2 && SETUP_INTERVAL <= 64), "triangle_setup: SETUP_INTERVAL must be 0 (serial) or 2..64")
+  `RS_REQUIRE(illegal_texture, TEXTURE == 0 || TEXTURE == 1, "triangle_setup: TEXTURE must be 0 or 1")
 
   localparam integer S = SUBPIXEL_BITS;
   localparam integer F = rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS);
@@ -66,7 +79,8 @@ module triangle_setup #(
   localparam integer X_BITS = rs_ubits32(WIDTH - 1);
   localparam integer Y_BITS = rs_ubits32(HEIGHT - 1);
   localparam integer BB = COORD_BITS + 2;           // bounding-box arithmetic, signed pixels
-  localparam integer NB = Z_BITS + EDGE_BITS + 4;  // plane numerators sum_k v_k e_k, signed
+  // Plane numerators sum_k v_k e_k, signed (pipelined unit): v of N bits, or m_t with TEXTURE.
+  localparam integer NB = (TEXTURE != 0 ? RS_TEXTURE_VERTEX_BITS : Z_BITS) + EDGE_BITS + 4;
   localparam integer HALF = 1 << (S - 1);   // half a pixel in subpixels
   localparam integer ONE_LESS = (1 << S) - 1;  // one pixel less one subpixel
   localparam integer X_LAST = WIDTH - 1;
@@ -76,6 +90,15 @@ module triangle_setup #(
   localparam signed [BB-1:0] ONE_LESS_B = ONE_LESS[BB-1:0];
   localparam signed [BB-1:0] X_LAST_B = X_LAST[BB-1:0];
   localparam signed [BB-1:0] Y_LAST_B = Y_LAST[BB-1:0];
+
+  // The texture planes (TEXTURE = 1; docs/arithmetic.md section 5): vertex values m_t = 50 bits (S,
+  // T s8.41, Q u1.41), registers s9.(P+Ft) of TR = P + Ft + 9 bits, Ft the derived guard bits.
+  localparam integer TEX = TEXTURE != 0 ? 1 : 0;
+  localparam integer MT = RS_TEXTURE_VERTEX_BITS;
+  localparam integer TR = rs_texture_reg_bits(WIDTH, HEIGHT);
+  localparam integer FT = rs_guard_bits(WIDTH, HEIGHT, 0);
+  localparam integer TVB = TEX != 0 ? MT : 1;  // a texture vertex value (1: none, tied to 0)
+  `RS_REQUIRE(texture_port_width, MT == 50, "triangle_setup: in_texture is written for 50-bit values")
 
 
   // The record (rastersim_widths.vh): both schedules give fields 0..17 packed in out_base and the
@@ -106,6 +129,12 @@ module triangle_setup #(
 
   wire load_vertices;  // the accept cycle
   wire swap_vertices;  // order the vertices so that area2 > 0 (v1 and v2 trade places)
+  // The texture coordinates as accepted (vertex k's c at [3k + c]) and the textured flag; zero
+  // without TEXTURE (and then unused by the pipelined unit).
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [TVB-1:0] vtex [0:8];
+  wire vtextured;
+  /* verilator lint_on UNUSEDSIGNAL */
 
   // Vertices as accepted.
   reg signed [COORD_BITS-1:0] vx_q [0:2];
@@ -200,20 +229,35 @@ module triangle_setup #(
     // and quotient bits entering at the bottom; a negative dividend n is divided as ~n = -n - 1 and
     // its quotient inverted, floor(n / d) = ~floor(~n / d).
     localparam integer H = rs_setup_serial_bits(WIDTH, HEIGHT, S);
-    localparam integer MB = (DELTA_BITS > COORD_BITS + 1 ? (DELTA_BITS > Z_BITS ? DELTA_BITS : Z_BITS) : (COORD_BITS + 1 > Z_BITS ? COORD_BITS + 1 : Z_BITS));
+    localparam integer MB0 = (DELTA_BITS > COORD_BITS + 1 ? (DELTA_BITS > Z_BITS ? DELTA_BITS : Z_BITS) : (COORD_BITS + 1 > Z_BITS ? COORD_BITS + 1 : Z_BITS));
+    localparam integer MB = TEX != 0 && MT > MB0 ? MT : MB0;  // multiplier bits: m_t with TEXTURE
     localparam integer ACC_BITS = H + MB;
-    localparam integer SB = 7;  // step counters: at most H + N + F + S + 1 < 128 steps
+    // Step counters: at most H + N + F + S + 1 < 128 steps; 3 m_t = 150 with TEXTURE.
+    localparam integer SB = TEX != 0 ? 8 : 7;
     // Operations: AREA, DECIDE, EDGE k, SPAN START k / SPAN STEP k, plane n = 3p + c (p: depth, r,
-    // g, b; c: start, step x, step y) numerator and division, PRODUCT n = 4p + 2j + t (plane p along
-    // left-edge slot j, t: start, step), FINAL.
-    localparam [5:0] OP_AREA = 6'd0, OP_DECIDE = 6'd1, OP_EDGE = 6'd2, OP_SPAN = 6'd5, OP_PLANE = 6'd11,
-                     OP_PRODUCT = 6'd35, OP_FINAL = 6'd51;
+    // g, b, with TEXTURE S, T, Q; c: start, step x, step y) numerator and division, PRODUCT n = 4p +
+    // 2j + t (plane p along left-edge slot j, t: start, step), FINAL. An untextured triangle skips
+    // the S, T, Q operations. Plane numbers p have PPB bits, the top one marking S, T, Q.
+    localparam integer OPB = TEX != 0 ? 7 : 6;
+    localparam integer PPB = TEX != 0 ? 3 : 2;
+    localparam integer PNB = PPB + 2;             // product numbers
+    localparam integer PNW = TEX != 0 ? 5 : 4;    // plane numbers n = 3p + c
+    localparam integer PLANE_OPS = TEX != 0 ? 42 : 24;
+    localparam integer PRODUCT_OPS = TEX != 0 ? 28 : 16;
+    localparam [OPB-1:0] OP_AREA = OPB'(0), OP_DECIDE = OPB'(1), OP_EDGE = OPB'(2), OP_SPAN = OPB'(5),
+                         OP_PLANE = OPB'(11), OP_PRODUCT = OPB'(11 + PLANE_OPS),
+                         OP_FINAL = OPB'(11 + PLANE_OPS + PRODUCT_OPS);
     localparam integer PB = rs_setup_product_bits(WIDTH, HEIGHT, S, Z_BITS, Z_GUARD_BITS);
+    localparam integer PBT = rs_setup_texture_product_bits(WIDTH, HEIGHT, S);  // PBt
+    localparam integer PBM = TEX != 0 && PBT > PB ? PBT : PB;  // the multiplier register
+    localparam integer PRB = TEX != 0 && TR > Z_REG_BITS ? TR : Z_REG_BITS;  // the product accumulator
+    localparam integer PB_SHIFT = PBM - PB;  // a PB-bit multiplier at the register's top
+    localparam integer PBT_SHIFT = PBM > PBT ? PBM - PBT : 0;
 
     reg active_q;                   // a triangle is in the unit, from the cycle after its accept
     reg out_q;                      // the record is in the output register (setup_done)
     reg load_q;                     // the current operation's load cycle
-    reg [5:0] op_q;
+    reg [OPB-1:0] op_q;
     reg [SB-1:0] left_q;            // steps left in the operation
     reg [SB-1:0] data_left_q;       // dividend bits left before the appended zeros
     reg data_left_nonzero_q;        // data_left_q != 0, kept beside it (off the trial's path)
@@ -280,24 +324,25 @@ module triangle_setup #(
     end
 
     // The operation's shape, decoded into op_shape_q whenever op_q is set (from the operation it
-    // is set to), so that no step waits for the decode of op_q: {is_product, product_n[3:0],
+    // is set to), so that no step waits for the decode of op_q: {is_product, product_n[PNB-1:0],
     // is_area, is_edge, is_span, is_plane, edge_k[1:0], span_k[1:0], span_step, plane_div,
-    // plane_p[1:0], plane_c[1:0]}.
-    localparam integer SHAPE_BITS = 19;
+    // plane_p[PPB-1:0], plane_c[1:0]}.
+    localparam integer SHAPE_BITS = PNB + PPB + 13;  // 19 without TEXTURE
     /* verilator lint_off UNUSEDSIGNAL */
-    function automatic [SHAPE_BITS-1:0] op_shape(input [5:0] op);
-      reg [5:0] edge_op, span_op, plane_op, product_op;
-      reg [3:0] plane_n, plane_c_wide;
-      reg [1:0] plane_p;
+    function automatic [SHAPE_BITS-1:0] op_shape(input [OPB-1:0] op);
+      reg [OPB-1:0] edge_op, span_op, plane_op, product_op;
+      reg [PNW-1:0] plane_n, plane_c_wide;
+      reg [PPB-1:0] plane_p;
       begin
         edge_op = op - OP_EDGE;
         span_op = op - OP_SPAN;
         plane_op = op - OP_PLANE;
         product_op = op - OP_PRODUCT;
-        plane_n = plane_op[4:1];  // plane n = 3p + c: p depth, r, g, b; c start, step x, step y
-        plane_p = plane_n < 3 ? 2'd0 : plane_n < 6 ? 2'd1 : plane_n < 9 ? 2'd2 : 2'd3;
-        plane_c_wide = plane_n - 4'(3 * plane_p);
-        op_shape = {op >= OP_PRODUCT && op < OP_FINAL, product_op[3:0],
+        plane_n = plane_op[PNW:1];  // plane n = 3p + c: p depth, r, g, b (S, T, Q); c start, step x, step y
+        plane_p = PPB'(plane_n < 3 ? 0 : plane_n < 6 ? 1 : plane_n < 9 ? 2 : 3);
+        if (TEX != 0 && plane_n >= 12) plane_p = PPB'({1'b0, plane_n} < 15 ? 4 : {1'b0, plane_n} < 18 ? 5 : 6);
+        plane_c_wide = plane_n - PNW'(3 * plane_p);
+        op_shape = {op >= OP_PRODUCT && op < OP_FINAL, product_op[PNB-1:0],
                     op == OP_AREA, op >= OP_EDGE && op < OP_SPAN, op >= OP_SPAN && op < OP_PLANE,
                     op >= OP_PLANE && op < OP_PRODUCT, edge_op[1:0], span_op[2:1], span_op[0], plane_op[0], plane_p,
                     plane_c_wide[1:0]};
@@ -305,27 +350,31 @@ module triangle_setup #(
     endfunction
     /* verilator lint_on UNUSEDSIGNAL */
     reg [SHAPE_BITS-1:0] op_shape_q;
-    wire is_product = op_shape_q[18];
-    wire [3:0] product_n = op_shape_q[17:14];  // 4p + 2j + t
-    wire is_area = op_shape_q[13];
-    wire is_edge = op_shape_q[12];
-    wire is_span = op_shape_q[11];
-    wire is_plane = op_shape_q[10];
-    wire [1:0] edge_k = op_shape_q[9:8];
-    wire [1:0] span_k = op_shape_q[7:6];
-    wire span_step = op_shape_q[5];                // SPAN STEP (else SPAN START)
-    wire plane_div = op_shape_q[4];                // the division (else the numerator)
-    wire [1:0] plane_p = op_shape_q[3:2];
+    wire is_product = op_shape_q[SHAPE_BITS-1];
+    wire [PNB-1:0] product_n = op_shape_q[PPB + 12 +: PNB];  // 4p + 2j + t
+    wire is_area = op_shape_q[PPB + 11];
+    wire is_edge = op_shape_q[PPB + 10];
+    wire is_span = op_shape_q[PPB + 9];
+    wire is_plane = op_shape_q[PPB + 8];
+    wire [1:0] edge_k = op_shape_q[PPB + 6 +: 2];
+    wire [1:0] span_k = op_shape_q[PPB + 4 +: 2];
+    wire span_step = op_shape_q[PPB + 3];          // SPAN STEP (else SPAN START)
+    wire plane_div = op_shape_q[PPB + 2];          // the division (else the numerator)
+    wire [PPB-1:0] plane_p = op_shape_q[2 +: PPB];
     wire [1:0] plane_c = op_shape_q[1:0];
+    wire plane_texture = TEX != 0 && is_plane && plane_p[PPB-1];  // S, T, Q: m_t-bit signed values, Ft guard bits
+    wire product_texture = TEX != 0 && product_n[PNB-1];
     wire is_mul = is_area || is_edge || (is_plane && !plane_div);
     wire is_div = is_span || (is_plane && plane_div);
-    wire [SB-1:0] plane_bits = plane_p == 2'd0 ? SB'(Z_BITS) : SB'(8);  // m: the vertex values' bits
+    // m: the vertex values' bits
+    wire [SB-1:0] plane_bits = plane_texture ? SB'(MT) : plane_p == {PPB{1'b0}} ? SB'(Z_BITS) : SB'(8);
     wire [SB-1:0] steps = is_area ? SB'(2 * DELTA_BITS)
                         : is_edge ? SB'(2 * (COORD_BITS + 1))
                         : is_span ? (span_step ? SB'(H + S + 1) : SB'(H + 1))
                         : is_plane ? (!plane_div ? SB'(3) * plane_bits
-                                                 : SB'(H + F) + plane_bits + (plane_c != 0 ? SB'(S) : SB'(0)))
-                        : is_product ? SB'(PB + 1)
+                                                 : (plane_texture ? SB'(H + FT) : SB'(H + F)) + plane_bits
+                                                   + (plane_c != 0 ? SB'(S) : SB'(0)))
+                        : is_product ? (product_texture ? SB'(PBT + 1) : SB'(PB + 1))
                         : {SB{1'b0}};
     wire [1:0] last_term = is_plane ? 2'd2 : 2'd1;
     wire signed_multiplier = is_area || is_edge;
@@ -348,14 +397,19 @@ module triangle_setup #(
     always @(posedge clk) begin
       multiplicand_q <= use_start ? H'(start_q[weight_next]) : use_ndy_next ? H'(ndy[weight_next]) : H'(dx[weight_next]);
       start_bias_q <= use_start && bias[weight_next];
-      negate_q <= (is_area && term_next == 2'd1) ^ (signed_multiplier && left_next <= SB'(2));
+      // The S, T, Q values are signed too: their last bit's three steps subtract.
+      negate_q <= (is_area && term_next == 2'd1) ^ (signed_multiplier && left_next <= SB'(2))
+                  ^ (plane_texture && !plane_div && left_next <= SB'(3));
     end
     wire bit_now = mq_q[0][0];
     wire subtract = bit_now && negate_q;
     wire signed [H-1:0] addend = bit_now ? multiplicand_q : {H{1'b0}};
     wire signed [H-1:0] hi = acc_q[ACC_BITS-1 -: H];
-    wire signed [H-1:0] sum = hi + (subtract ? ~addend : addend)
-                              + H'(subtract || (bit_now && start_bias_q));
+    // The carry in: 1 to subtract (~B + 1), the edge's bias to add a start weight (start_q is E -
+    // bias); with TEXTURE both may meet on a signed value's last bit: -(start_q + bias) = ~start_q +
+    // 1 - bias.
+    wire carry = TEX != 0 ? bit_now && (negate_q ^ start_bias_q) : subtract || (bit_now && start_bias_q);
+    wire signed [H-1:0] sum = hi + (subtract ? ~addend : addend) + H'(carry);
 
     // ---- Divide step: {rem, next bit} - |divisor|, or the remainder correction rem - |divisor| ----
     // -|divisor| (as ~|d| + 1: minus_divisor_q and its carry) and whether the next step is the
@@ -381,6 +435,8 @@ module triangle_setup #(
     // ---- Product step: a plane along a left edge, base - quot * step_x modulo 2^Z_REG_BITS ----
     // PB steps acc = 2 acc +- (bit ? step_x : 0), the quotient's bits most significant first (the
     // first, its sign bit, subtracts), then acc = base - acc (the colour planes in the low bits).
+    // With TEXTURE the S, T, Q planes take PBt steps modulo 2^TR: the accumulator has PRB bits, and
+    // the multiplier register PBM with either multiplier at its top.
     // Left edges have edge_step_x = ndy 2^S > 0; slot 0 is the first in edge order, slot 1 the second.
     // Registered beside the deltas as the bias is (the PRODUCT operations come long after DECIDE).
     reg [2:0] left_edge_q;
@@ -391,36 +447,47 @@ module triangle_setup #(
     end
     wire [2:0] left_edge = left_edge_q;
     wire product_slot = product_n[1];
-    wire [1:0] product_p = product_n[3:2];
+    // [1:0]: depth, r, g, b, or S, T, Q with product_texture (its top bit).
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [PPB-1:0] product_p = product_n[PNB-1:2];
+    /* verilator lint_on UNUSEDSIGNAL */
     wire product_step_field = product_n[0];  // the step (else the start)
     wire [1:0] slot_edge = !product_slot ? (left_edge[0] ? 2'd0 : left_edge[1] ? 2'd1 : 2'd2)
                                          : (left_edge[0] && left_edge[1] ? 2'd1 : 2'd2);
     wire slot_used = !product_slot ? |left_edge
                                    : (left_edge[0] && left_edge[1]) || (left_edge[0] && left_edge[2]) || (left_edge[1] && left_edge[2]);
-    wire [PB-1:0] product_multiplier = !slot_used ? {PB{1'b0}}
+    wire [PB-1:0] plane_multiplier = !slot_used ? {PB{1'b0}}
         : product_step_field ? PB'($signed(span_step_quot_q[slot_edge])) : PB'($signed(span_quot_q[slot_edge]));
+    wire [PBT-1:0] texture_multiplier = !slot_used ? {PBT{1'b0}}
+        : product_step_field ? PBT'($signed(span_step_quot_q[slot_edge])) : PBT'($signed(span_quot_q[slot_edge]));
+    wire [PBM-1:0] product_multiplier = product_texture ? PBM'(texture_multiplier) << PBT_SHIFT
+                                                        : PBM'(plane_multiplier) << PB_SHIFT;
     // Plane p's step x and its start (or step y): depth_q[0..2], colour c = p - 1 at color_q[3c ..
     // 3c + 2], sign-extended; constant indices, so that each is one 4-way choice.
-    wire [Z_REG_BITS-1:0] plane_field [0:11];  // 3p + (0 start, 1 step x, 2 step y)
+    wire [PRB-1:0] plane_field [0:11];  // 3p + (0 start, 1 step x, 2 step y)
     for (k = 0; k < 12; k = k + 1) begin : plane_fields
       if (k < 3) begin : depth
-        assign plane_field[k] = depth_q[k];
+        assign plane_field[k] = PRB'(depth_q[k]);
       end else begin : colour
-        assign plane_field[k] = Z_REG_BITS'($signed(color_q[k - 3]));
+        assign plane_field[k] = PRB'($signed(color_q[k - 3]));
       end
     end
-    wire [Z_REG_BITS-1:0] product_step_x = product_p == 2'd0 ? plane_field[1] : product_p == 2'd1 ? plane_field[4]
-                                         : product_p == 2'd2 ? plane_field[7] : plane_field[10];
-    wire [Z_REG_BITS-1:0] product_base = product_step_field
-        ? (product_p == 2'd0 ? plane_field[2] : product_p == 2'd1 ? plane_field[5] : product_p == 2'd2 ? plane_field[8] : plane_field[11])
-        : (product_p == 2'd0 ? plane_field[0] : product_p == 2'd1 ? plane_field[3] : product_p == 2'd2 ? plane_field[6] : plane_field[9]);
-    reg [Z_REG_BITS-1:0] product_acc_q;
-    reg [PB-1:0] product_bits_q;  // the multiplier, consumed from the top
+    wire [1:0] product_q = product_p[1:0];
+    wire [PRB-1:0] plane_step_x = product_q == 2'd0 ? plane_field[1] : product_q == 2'd1 ? plane_field[4]
+                                : product_q == 2'd2 ? plane_field[7] : plane_field[10];
+    wire [PRB-1:0] plane_base = product_step_field
+        ? (product_q == 2'd0 ? plane_field[2] : product_q == 2'd1 ? plane_field[5] : product_q == 2'd2 ? plane_field[8] : plane_field[11])
+        : (product_q == 2'd0 ? plane_field[0] : product_q == 2'd1 ? plane_field[3] : product_q == 2'd2 ? plane_field[6] : plane_field[9]);
+    wire [PRB-1:0] texture_step_x, texture_base;  // the S, T, Q plane's (the texture block below)
+    wire [PRB-1:0] product_step_x = product_texture ? texture_step_x : plane_step_x;
+    wire [PRB-1:0] product_base = product_texture ? texture_base : plane_base;
+    reg [PRB-1:0] product_acc_q;
+    reg [PBM-1:0] product_bits_q;  // the multiplier, consumed from the top
     // The operation's multiplicand and base, taken in its load cycle: the plane selection is then
     // off the accumulator's path.
-    reg [Z_REG_BITS-1:0] product_step_x_q, product_base_q;
+    reg [PRB-1:0] product_step_x_q, product_base_q;
     // The first (sign) and the last (base - acc) steps, registered a cycle ahead from left_next.
-    wire product_next_first = left_next == SB'(PB + 1);
+    wire product_next_first = left_next == (product_texture ? SB'(PBT + 1) : SB'(PB + 1));
     reg product_first_q, product_last_q;
     always @(posedge clk) begin
       product_first_q <= product_next_first;
@@ -430,12 +497,12 @@ module triangle_setup #(
     wire product_last = product_last_q;
     // The next step's addend (bit ? step_x : 0) as it is added, registered a cycle ahead: inverted
     // on the first (sign) step, which subtracts (with a carry in).
-    wire product_next_bit = active_q && load_q ? product_multiplier[PB-1] : product_bits_q[PB-2];
-    wire [Z_REG_BITS-1:0] product_next_step_x = active_q && load_q ? product_step_x : product_step_x_q;
-    wire [Z_REG_BITS-1:0] product_next_addend = product_next_bit ? product_next_step_x : {Z_REG_BITS{1'b0}};
-    reg [Z_REG_BITS-1:0] product_addend_q;
+    wire product_next_bit = active_q && load_q ? product_multiplier[PBM-1] : product_bits_q[PBM-2];
+    wire [PRB-1:0] product_next_step_x = active_q && load_q ? product_step_x : product_step_x_q;
+    wire [PRB-1:0] product_next_addend = product_next_bit ? product_next_step_x : {PRB{1'b0}};
+    reg [PRB-1:0] product_addend_q;
     always @(posedge clk) product_addend_q <= product_next_first ? ~product_next_addend : product_next_addend;
-    wire [Z_REG_BITS-1:0] product_doubled = {product_acc_q[Z_REG_BITS-2:0], 1'b0};
+    wire [PRB-1:0] product_doubled = {product_acc_q[PRB-2:0], 1'b0};
 
     // ---- The box, in three registered steps (the vertices change only at accept and swap): the
     // extremes, the clipped box and offscreen, then no_centre from the clipped box ----
@@ -471,11 +538,15 @@ module triangle_setup #(
     wire signed [BB-1:0] centre_y = (box_y0 <<< S) + HALF_B;
     wire signed [BB-1:0] rel_x = centre_x - BB'(vx_q[edge_k]);
     wire signed [BB-1:0] rel_y = centre_y - BB'(vy_q[edge_k]);
-    wire [Z_BITS-1:0] value [0:2];  // plane p's vertex values
+    // Plane p's vertex values: depth and colour unsigned, S, T, Q m_t bits signed (Z_BITS < m_t).
+    localparam integer VW = TEX != 0 ? MT : Z_BITS;
+    wire [VW-1:0] value [0:2];
     genvar v;
     for (v = 0; v < 3; v = v + 1) begin : values
-      wire [7:0] color = plane_p == 2'd1 ? vrgb_q[v][23:16] : plane_p == 2'd2 ? vrgb_q[v][15:8] : vrgb_q[v][7:0];
-      assign value[v] = plane_p == 2'd0 ? vz_q[v] : Z_BITS'(color);
+      wire [1:0] channel = plane_p[1:0];  // r, g, b from 1; S, T, Q from 0
+      wire [7:0] color = channel == 2'd1 ? vrgb_q[v][23:16] : channel == 2'd2 ? vrgb_q[v][15:8] : vrgb_q[v][7:0];
+      wire [TVB-1:0] coordinate = channel == 2'd0 ? vtex[3*v] : channel == 2'd1 ? vtex[3*v + 1] : vtex[3*v + 2];
+      assign value[v] = plane_texture ? VW'(coordinate) : plane_p == {PPB{1'b0}} ? VW'(vz_q[v]) : VW'(color);
     end
     wire signed [DELTA_BITS-1:0] span_dividend_small = dx[span_k];
     wire signed [H-1:0] span_dividend = span_step ? H'(span_dividend_small) : H'(start_q[span_k]);
@@ -493,6 +564,9 @@ module triangle_setup #(
     assign out_valid = out_q;
     wire unused_run = run;  // one triangle at a time: no slots
 
+    // The next operation: an untextured triangle skips the S, T, Q operations (TEXTURE = 1).
+    wire [OPB-1:0] op_next = TEX != 0 && !vtextured && op_q == OP_PLANE + OPB'(23) ? OP_PRODUCT
+                           : TEX != 0 && !vtextured && op_q == OP_PRODUCT + OPB'(15) ? OP_FINAL : op_q + 1'b1;
     integer t;
     always @(posedge clk) begin
       if (rst) begin
@@ -515,15 +589,15 @@ module triangle_setup #(
           end else if (deciding && status != RS_STATUS_DRAWN) begin
             active_q <= 1'b0;
           end else if (steps == 0) begin
-            op_q <= op_q + 1'b1;
-            op_shape_q <= op_shape(op_q + 1'b1);
+            op_q <= op_next;
+            op_shape_q <= op_shape(op_next);
           end else begin
             load_q <= 1'b0;
           end
         end else if (active_q && left_q == SB'(1)) begin
           load_q <= 1'b1;
-          op_q <= op_q + 1'b1;
-          op_shape_q <= op_shape(op_q + 1'b1);
+          op_q <= op_next;
+          op_shape_q <= op_shape(op_next);
         end
       end
     end
@@ -593,14 +667,14 @@ module triangle_setup #(
     // Product registers (no reset: each PRODUCT operation loads them).
     always @(posedge clk) begin
       if (active_q && load_q && is_product) begin
-        product_acc_q <= {Z_REG_BITS{1'b0}};
+        product_acc_q <= {PRB{1'b0}};
         product_bits_q <= product_multiplier;
         product_step_x_q <= product_step_x;
         product_base_q <= product_base;
       end else if (active_q && is_product) begin
         if (product_last) product_acc_q <= product_base_q - product_acc_q;
-        else product_acc_q <= product_doubled + product_addend_q + Z_REG_BITS'(product_first);
-        product_bits_q <= {product_bits_q[PB-2:0], 1'b0};
+        else product_acc_q <= product_doubled + product_addend_q + PRB'(product_first);
+        product_bits_q <= {product_bits_q[PBM-2:0], 1'b0};
       end
     end
 
@@ -610,21 +684,24 @@ module triangle_setup #(
       if (active_q && load_q) begin
         if (op_q == OP_DECIDE) area_q <= area2;
         for (r = 0; r < 3; r = r + 1) begin
-          if (op_q == OP_EDGE + 6'(r) + 6'd1) start_q[r] <= acc_q[MB-(COORD_BITS+1) +: EDGE_BITS];
-          if (op_q == OP_SPAN + 6'(2 * r) + 6'd1) begin
+          if (op_q == OP_EDGE + OPB'(r) + OPB'(1)) start_q[r] <= acc_q[MB-(COORD_BITS+1) +: EDGE_BITS];
+          if (op_q == OP_SPAN + OPB'(2 * r) + OPB'(1)) begin
             span_quot_q[r] <= acc_q[EDGE_BITS-1:0];
             span_rem_q[r] <= rem_q[SPAN_REM_BITS-1:0];
           end
-          if (op_q == OP_SPAN + 6'(2 * r) + 6'd2) begin
+          if (op_q == OP_SPAN + OPB'(2 * r) + OPB'(2)) begin
             span_step_quot_q[r] <= acc_q[EDGE_STEP_Y_BITS-1:0];
             span_step_rem_q[r] <= rem_q[SPAN_REM_BITS-1:0];
           end
-          if (op_q == OP_PLANE + 6'(2 * r) + 6'd2) depth_q[r] <= acc_q[Z_REG_BITS-1:0];
+          if (op_q == OP_PLANE + OPB'(2 * r) + OPB'(2)) depth_q[r] <= acc_q[Z_REG_BITS-1:0];
         end
         for (r = 0; r < 9; r = r + 1)
-          if (op_q == OP_PLANE + 6'(2 * r) + 6'd8) color_q[r] <= acc_q[COLOR_REG_BITS-1:0];
+          // An untextured triangle's blue step y is stored in the first PRODUCT's load with TEXTURE.
+          if (op_q == OP_PLANE + OPB'(2 * r) + OPB'(8) || (TEX != 0 && r == 8 && !vtextured && op_q == OP_PRODUCT))
+            color_q[r] <= acc_q[COLOR_REG_BITS-1:0];
         for (r = 0; r < 16; r = r + 1)
-          if (op_q == OP_PRODUCT + 6'(r) + 6'd1) along_q[r] <= product_acc_q;
+          if (op_q == OP_PRODUCT + OPB'(r) + OPB'(1) || (TEX != 0 && r == 15 && !vtextured && op_q == OP_FINAL))
+            along_q[r] <= product_acc_q[Z_REG_BITS-1:0];
       end
     end
     for (k = 0; k < 3; k = k + 1) begin : record
@@ -648,6 +725,46 @@ module triangle_setup #(
     assign out_y0 = box_y0[Y_BITS-1:0];
     assign out_y1 = box_y1_q[Y_BITS-1:0];
     assign out_flat_rgb = vrgb_q[0];
+
+    // ---- The S, T, Q planes (TEXTURE = 1): stored as the others, from their operations ----
+    if (TEX != 0) begin : texture
+      reg [TR-1:0] tex_plane_q [0:8];   // plane 3c + (0 start, 1 step x, 2 step y), c = S, T, Q; s9.(P+Ft)
+      reg [TR-1:0] tex_along_q [0:11];  // PRODUCT 16 + 4c + 2j + t
+      integer tr;
+      always @(posedge clk) begin
+        if (active_q && load_q) begin
+          for (tr = 0; tr < 9; tr = tr + 1)
+            if (op_q == OP_PLANE + OPB'(2 * (12 + tr)) + OPB'(2)) tex_plane_q[tr] <= acc_q[TR-1:0];
+          for (tr = 0; tr < 12; tr = tr + 1)
+            if (op_q == OP_PRODUCT + OPB'(16 + tr) + OPB'(1)) tex_along_q[tr] <= product_acc_q[TR-1:0];
+        end
+      end
+      wire [1:0] c = product_q;  // the product's coordinate
+      wire [TR-1:0] step_x = c == 2'd0 ? tex_plane_q[1] : c == 2'd1 ? tex_plane_q[4] : tex_plane_q[7];
+      wire [TR-1:0] base = product_step_field ? (c == 2'd0 ? tex_plane_q[2] : c == 2'd1 ? tex_plane_q[5] : tex_plane_q[8])
+                                              : (c == 2'd0 ? tex_plane_q[0] : c == 2'd1 ? tex_plane_q[3] : tex_plane_q[6]);
+      assign texture_step_x = PRB'(step_x);
+      assign texture_base = PRB'(base);
+      // The record: register 3g + c, groups 0..2 the plane, 3..6 along the left edges; all zero
+      // for an untextured triangle.
+      genvar tg, tc;
+      assign out_texture[0] = vtextured;
+      for (tc = 0; tc < 3; tc = tc + 1) begin : coordinate
+        for (tg = 0; tg < 7; tg = tg + 1) begin : group
+          wire [TR-1:0] field;
+          if (tg < 3) begin : plane
+            assign field = tex_plane_q[3*tc + tg];
+          end else begin : along
+            assign field = tex_along_q[4*tc + tg - 3];
+          end
+          assign out_texture[1 + (3*tg + tc)*TR +: TR] = vtextured ? field : {TR{1'b0}};
+        end
+      end
+    end else begin : no_texture
+      assign texture_step_x = {PRB{1'b0}};
+      assign texture_base = {PRB{1'b0}};
+      assign out_texture = {rs_texture_record_bits(WIDTH, HEIGHT){1'b0}};
+    end
   end else begin : pipelined
     // ---- FRONT: the area's two products (delta_bits x delta_bits), the only ones in one cycle ----
     wire signed [DELTA_BITS-1:0] d10x = vx_q[1] - vx_q[0];
@@ -724,28 +841,44 @@ module triangle_setup #(
     localparam integer EDGE_STAGES = rs_setup_edge_stages(COORD_BITS, I);
     localparam integer EDGE_STEPS = (RLB + I * EDGE_STAGES - 1) / (I * EDGE_STAGES);
     localparam integer EDGE_SKIP = I * EDGE_STAGES * EDGE_STEPS - RLB;  // leading no-op steps
-    localparam integer NUMER_STAGES = rs_setup_numer_stages(Z_BITS, I);
-    localparam integer NUMER_STEPS = (Z_BITS + I * NUMER_STAGES - 1) / (I * NUMER_STAGES);
-    localparam integer NUMER_SKIP = I * NUMER_STAGES * NUMER_STEPS - Z_BITS;
-    localparam integer DIVIDE_STAGES = rs_setup_divide_stages(DIVIDER_BITS, I);
-    localparam integer DIVIDE_STEPS = (DIVIDER_BITS + I * DIVIDE_STAGES - 1) / (I * DIVIDE_STAGES);
-    localparam integer PLANE_SKIP = I * DIVIDE_STAGES * DIVIDE_STEPS - DIVIDER_BITS;
+    // With TEXTURE every slot is sized for the S, T, Q planes, whatever the triangle: m_t-bit values
+    // (VW, two's complement: depth and colour zero-extended), PDB-bit dividends, quotients as
+    // PB = max(PB, PBt)-bit multipliers, products in PRB bits (each plane in the low bits); NPL planes.
+    localparam integer VW = TEX != 0 ? MT : Z_BITS;
+    localparam integer TDB = rs_texture_divider_bits(WIDTH, HEIGHT, S);
+    localparam integer PDB = TEX != 0 && TDB > DIVIDER_BITS ? TDB : DIVIDER_BITS;
+    localparam integer PB0 = rs_setup_product_bits(WIDTH, HEIGHT, S, Z_BITS, Z_GUARD_BITS);
+    localparam integer PBT = rs_setup_texture_product_bits(WIDTH, HEIGHT, S);
+    localparam integer PB = TEX != 0 && PBT > PB0 ? PBT : PB0;
+    localparam integer PRB = TEX != 0 && TR > Z_REG_BITS ? TR : Z_REG_BITS;
+    localparam integer NPL = TEX != 0 ? 7 : 4;  // depth, r, g, b (S, T, Q)
+    localparam integer NNUM = 3 * NPL;          // numerators and plane divisions
+    localparam integer NPROD = 4 * NPL;         // products along the left edges
+    localparam integer NUMER_STAGES = rs_setup_numer_stages(VW, I);
+    localparam integer NUMER_STEPS = (VW + I * NUMER_STAGES - 1) / (I * NUMER_STAGES);
+    localparam integer NUMER_SKIP = I * NUMER_STAGES * NUMER_STEPS - VW;
+    localparam integer DIVIDE_STAGES = rs_setup_divide_stages(PDB, I);
+    localparam integer DIVIDE_STEPS = (PDB + I * DIVIDE_STAGES - 1) / (I * DIVIDE_STAGES);
+    localparam integer PLANE_SKIP = I * DIVIDE_STAGES * DIVIDE_STEPS - PDB;
     localparam integer SPAN_SKIP = I * DIVIDE_STAGES * DIVIDE_STEPS - EDGE_BITS;
-    localparam integer PB = rs_setup_product_bits(WIDTH, HEIGHT, S, Z_BITS, Z_GUARD_BITS);
     localparam integer PRODUCT_STAGES = rs_setup_product_stages(PB, I);
     localparam integer PRODUCT_STEPS = (PB + I * PRODUCT_STAGES - 1) / (I * PRODUCT_STAGES);
     localparam integer PRODUCT_SKIP = I * PRODUCT_STAGES * PRODUCT_STEPS - PB;
+    `RS_REQUIRE(latency_matches, I * (1 + EDGE_STAGES + NUMER_STAGES + DIVIDE_STAGES + PRODUCT_STAGES)
+                == rs_setup_texture_drawn_latency(WIDTH, HEIGHT, S, Z_BITS, Z_GUARD_BITS, I, TEX, 1),
+                "triangle_setup: the slots disagree with rs_setup_texture_drawn_latency")
     localparam integer PHASE_BITS = rs_ubits32(I - 1);
     localparam integer LAST_PHASE = I - 1;
     localparam integer EDGES = 3 * EOP;
-    // Numerator slot state: vertex values (plane p, vertex k at [(3p+k)*Z_BITS]), accumulators
+    // Numerator slot state: vertex values (plane p, vertex k at [(3p+k)*VW]), accumulators
     // (numerator n = 3p + t at [n*NB], t: 0 start, 1 step x, 2 step y), weights (term t, edge k at
     // [(3t+k)*EDGE_BITS]: E at the first candidate, edge_step_x, edge_step_y, widened).
-    localparam integer VALS = 12 * Z_BITS;
-    localparam integer ACCS = 12 * NB;
+    localparam integer VALS = NNUM * VW;
+    localparam integer ACCS = NNUM * NB;
     localparam integer WTS = 9 * EDGE_BITS;
     // The record fields decided in FRONT, carried along: {x0, x1, y0, y1, edge_start[2:0] (from the
-    // last edge slot), edge_step_x[2:0], edge_step_y[2:0], flat rgb, |area2|}.
+    // last edge slot), edge_step_x[2:0], edge_step_y[2:0], flat rgb, |area2|}, with TEXTURE the
+    // textured flag above.
     localparam integer P_AREA = 0;
     localparam integer P_RGB = P_AREA + AREA_BITS;
     localparam integer P_SY = P_RGB + 24;
@@ -755,12 +888,13 @@ module triangle_setup #(
     localparam integer P_Y0 = P_Y1 + Y_BITS;
     localparam integer P_X1 = P_Y0 + Y_BITS;
     localparam integer P_X0 = P_X1 + X_BITS;
-    localparam integer PAY = P_X0 + X_BITS;
+    localparam integer P_TEX = P_X0 + X_BITS;
+    localparam integer PAY = P_TEX + TEX;
     // Divide slot state: plane division n {negative, partial remainder, dividend/quotient bits};
     // span division m = 2k (edge start) or 2k+1 (edge step y) the same with |edge_step_x| widths.
-    localparam integer PLANE_W = 1 + AREA_BITS + DIVIDER_BITS;
+    localparam integer PLANE_W = 1 + AREA_BITS + PDB;
     localparam integer SPAN_W = 1 + EDGE_STEP_X_BITS + EDGE_BITS;
-    localparam integer PLANES = 12 * PLANE_W;
+    localparam integer PLANES = NNUM * PLANE_W;
     localparam integer SPANS = 6 * SPAN_W;
 
     integer j, s, n;
@@ -810,15 +944,26 @@ module triangle_setup #(
     // FRONT's results: the vertex values of the planes, the payload (edge starts still zero).
     wire [VALS-1:0] front_vals;
     genvar fp, fk;
-    for (fp = 0; fp < 4; fp = fp + 1) begin : front_planes
+    for (fp = 0; fp < NPL; fp = fp + 1) begin : front_planes
       for (fk = 0; fk < 3; fk = fk + 1) begin : front_vertices
-        assign front_vals[(3*fp + fk)*Z_BITS +: Z_BITS] =
-            fp == 0 ? oz[fk] : {{(Z_BITS-8){1'b0}}, orgb[fk][(fp == 0 ? 0 : 8*(3-fp)) +: 8]};
+        if (fp < 4) begin : plane
+          assign front_vals[(3*fp + fk)*VW +: VW] =
+              fp == 0 ? VW'(oz[fk]) : VW'(orgb[fk][(fp == 0 ? 0 : 8*(3-fp)) +: 8]);
+        end else begin : coordinate  // S, T, Q of the ordered vertex fk (v1 and v2 swapped as the others)
+          localparam integer C = fp - 4;
+          assign front_vals[(3*fp + fk)*VW +: VW] = fk == 0 ? vtex[C] : (fk == 1) == swap ? vtex[6 + C] : vtex[3 + C];
+        end
       end
     end
-    wire [PAY-1:0] front_pay = {bx0[X_BITS-1:0], bx1[X_BITS-1:0], by0[Y_BITS-1:0], by1[Y_BITS-1:0], {(3*EDGE_BITS){1'b0}},
+    wire [PAY-1:0] front_pay;
+    wire [P_TEX-1:0] front_pay_base = {bx0[X_BITS-1:0], bx1[X_BITS-1:0], by0[Y_BITS-1:0], by1[Y_BITS-1:0], {(3*EDGE_BITS){1'b0}},
                                 edge_step_x[2], edge_step_x[1], edge_step_x[0],
                                 edge_step_y[2], edge_step_y[1], edge_step_y[0], vrgb_q[0], area};
+    if (TEX != 0) begin : front_textured
+      assign front_pay = {vtextured, front_pay_base};
+    end else begin : front_untextured
+      assign front_pay = front_pay_base;
+    end
 
     // ---- Edge slots: E = 2 E + (rel_y bit ? dx : 0) + (rel_x bit ? ndy : 0), MSB first ----
     // The first real step takes the sign bits, which weigh -2^(RLB-1): it subtracts.
@@ -917,10 +1062,12 @@ module triangle_setup #(
     reg [WTS-1:0] nw;
     reg [EDGE_BITS-1:0] e0, e1, e2;
     reg [NB-1:0] term;
+    reg [31:0] numer_index;
     // A stage's first steps may all be real ones (no leading no-op steps): the comparison is then
     // constant.
     /* verilator lint_off UNSIGNED */
     always @* begin
+      numer_index = 32'd0;
       e0 = {EDGE_BITS{1'b0}};
       e1 = {EDGE_BITS{1'b0}};
       e2 = {EDGE_BITS{1'b0}};
@@ -936,18 +1083,20 @@ module triangle_setup #(
         na = numer_acc_q[j*ACCS +: ACCS];
         nw = numer_wts_q[j*WTS +: WTS];
         for (s = 0; s < NUMER_STEPS; s = s + 1) begin
-          if ((j * I + {{(32-PHASE_BITS){1'b0}}, phase_q}) * NUMER_STEPS + s >= NUMER_SKIP) begin
-            for (n = 0; n < 12; n = n + 1) begin
+          numer_index = (j * I + {{(32-PHASE_BITS){1'b0}}, phase_q}) * NUMER_STEPS + s;
+          if (numer_index >= NUMER_SKIP) begin
+            for (n = 0; n < NNUM; n = n + 1) begin
               // numerator n = 3p + t: v0 e1 + v1 e2 + v2 e0 with the weights of term t
               e0 = nw[(3*(n%3) + 0)*EDGE_BITS +: EDGE_BITS];
               e1 = nw[(3*(n%3) + 1)*EDGE_BITS +: EDGE_BITS];
               e2 = nw[(3*(n%3) + 2)*EDGE_BITS +: EDGE_BITS];
-              term = (nv[(3*(n/3) + 0)*Z_BITS + Z_BITS-1] ? {{(NB-EDGE_BITS){e1[EDGE_BITS-1]}}, e1} : {NB{1'b0}})
-                   + (nv[(3*(n/3) + 1)*Z_BITS + Z_BITS-1] ? {{(NB-EDGE_BITS){e2[EDGE_BITS-1]}}, e2} : {NB{1'b0}})
-                   + (nv[(3*(n/3) + 2)*Z_BITS + Z_BITS-1] ? {{(NB-EDGE_BITS){e0[EDGE_BITS-1]}}, e0} : {NB{1'b0}});
-              na[n*NB +: NB] = {na[n*NB +: NB-1], 1'b0} + term;
+              term = (nv[(3*(n/3) + 0)*VW + VW-1] ? {{(NB-EDGE_BITS){e1[EDGE_BITS-1]}}, e1} : {NB{1'b0}})
+                   + (nv[(3*(n/3) + 1)*VW + VW-1] ? {{(NB-EDGE_BITS){e2[EDGE_BITS-1]}}, e2} : {NB{1'b0}})
+                   + (nv[(3*(n/3) + 2)*VW + VW-1] ? {{(NB-EDGE_BITS){e0[EDGE_BITS-1]}}, e0} : {NB{1'b0}});
+              // With TEXTURE the values are signed: the first step, their sign bit, subtracts.
+              na[n*NB +: NB] = {na[n*NB +: NB-1], 1'b0} + (TEX != 0 && numer_index == NUMER_SKIP ? -term : term);
             end
-            for (n = 0; n < 12; n = n + 1) nv[n*Z_BITS +: Z_BITS] = {nv[n*Z_BITS +: Z_BITS-1], 1'b0};
+            for (n = 0; n < NNUM; n = n + 1) nv[n*VW +: VW] = {nv[n*VW +: VW-1], 1'b0};
           end
         end
         numer_vals_next[j*VALS +: VALS] = nv;
@@ -981,21 +1130,22 @@ module triangle_setup #(
       end
     end
 
-    // Division operands at the end of the last numerator slot: |numerator| 2^F by |area2|, and
+    // Division operands at the end of the last numerator slot: |numerator| 2^F (2^Ft for S, T, Q) by |area2|, and
     // |edge start|, |edge_step_y| by |edge_step_x| (a horizontal edge's results are zeroed at the end).
     wire [ACCS-1:0] numer_last = numer_acc_next[(NUMER_STAGES-1)*ACCS +: ACCS];
     wire [PAY-1:0] numer_last_pay = numer_pay_q[(NUMER_STAGES-1)*PAY +: PAY];
     wire [PLANES-1:0] divide_in_planes;
     wire [SPANS-1:0] divide_in_spans;
     genvar dn, dk;
-    for (dn = 0; dn < 12; dn = dn + 1) begin : divide_in_plane
+    for (dn = 0; dn < NNUM; dn = dn + 1) begin : divide_in_plane
+      localparam integer G = dn < 12 ? F : FT;
       wire [NB-1:0] num = numer_last[dn*NB +: NB];
       wire [NB-1:0] magnitude = num[NB-1] ? -num : num;
-      // numerator * 2^F < 2^DIVIDER_BITS (docs/widths.md): the top bits are zero.
+      // numerator * 2^F < 2^DIVIDER_BITS (docs/widths.md; PDB >= both): the top bits are zero.
       /* verilator lint_off UNUSEDSIGNAL */
-      wire [NB+F-1:0] scaled = {magnitude, {F{1'b0}}};
+      wire [NB+G-1:0] scaled = {magnitude, {G{1'b0}}};
       /* verilator lint_on UNUSEDSIGNAL */
-      assign divide_in_planes[dn*PLANE_W +: PLANE_W] = {num[NB-1], {AREA_BITS{1'b0}}, scaled[DIVIDER_BITS-1:0]};
+      assign divide_in_planes[dn*PLANE_W +: PLANE_W] = {num[NB-1], {AREA_BITS{1'b0}}, PDB'(scaled)};
     end
     for (dk = 0; dk < 3; dk = dk + 1) begin : divide_in_span
       wire [EDGE_BITS-1:0] start = numer_last_pay[P_ES + dk*EDGE_BITS +: EDGE_BITS];
@@ -1007,15 +1157,15 @@ module triangle_setup #(
     end
 
     // ---- Divide slots: restoring steps, one quotient bit each, MSB first ----
-    // One element per division, slot j's division n at [j*12 + n] (planes) and [j*6 + n] (spans):
+    // One element per division, slot j's division n at [j*NNUM + n] (planes) and [j*6 + n] (spans):
     // whole elements move between slots, no part-selects into a packed vector.
-    reg [PLANE_W-1:0] divide_planes_q [0:DIVIDE_STAGES*12-1];
-    reg [PLANE_W-1:0] divide_planes_next [0:DIVIDE_STAGES*12-1];
+    reg [PLANE_W-1:0] divide_planes_q [0:DIVIDE_STAGES*NNUM-1];
+    reg [PLANE_W-1:0] divide_planes_next [0:DIVIDE_STAGES*NNUM-1];
     reg [SPAN_W-1:0] divide_spans_q [0:DIVIDE_STAGES*6-1];
     reg [SPAN_W-1:0] divide_spans_next [0:DIVIDE_STAGES*6-1];
     reg [DIVIDE_STAGES*PAY-1:0] divide_pay_q;
     reg [AREA_BITS-1:0] plane_partial, plane_divisor;
-    reg [DIVIDER_BITS-1:0] plane_bits;
+    reg [PDB-1:0] plane_bits;
     reg [AREA_BITS:0] plane_shifted, plane_difference;
     reg [EDGE_STEP_X_BITS-1:0] span_partial, span_divisor, span_step_x;
     reg [EDGE_BITS-1:0] span_bits;
@@ -1029,29 +1179,29 @@ module triangle_setup #(
       step_index = 32'd0;
       plane_divisor = {AREA_BITS{1'b0}};
       plane_partial = {AREA_BITS{1'b0}};
-      plane_bits = {DIVIDER_BITS{1'b0}};
+      plane_bits = {PDB{1'b0}};
       span_step_x = {EDGE_STEP_X_BITS{1'b0}};
       span_divisor = {EDGE_STEP_X_BITS{1'b0}};
       span_partial = {EDGE_STEP_X_BITS{1'b0}};
       span_bits = {EDGE_BITS{1'b0}};
       for (j = 0; j < DIVIDE_STAGES; j = j + 1) begin
-        for (n = 0; n < 12; n = n + 1) divide_planes_next[j*12 + n] = {PLANE_W{1'bx}};  // an empty slot: don't-care (as the edge slots)
+        for (n = 0; n < NNUM; n = n + 1) divide_planes_next[j*NNUM + n] = {PLANE_W{1'bx}};  // an empty slot: don't-care (as the edge slots)
         for (n = 0; n < 6; n = n + 1) divide_spans_next[j*6 + n] = {SPAN_W{1'bx}};
         if (divide_valid_q[j]) begin
         plane_divisor = divide_pay_q[j*PAY + P_AREA +: AREA_BITS];
-        for (n = 0; n < 12; n = n + 1) begin
-          plane_partial = divide_planes_q[j*12 + n][DIVIDER_BITS +: AREA_BITS];
-          plane_bits = divide_planes_q[j*12 + n][DIVIDER_BITS-1:0];
+        for (n = 0; n < NNUM; n = n + 1) begin
+          plane_partial = divide_planes_q[j*NNUM + n][PDB +: AREA_BITS];
+          plane_bits = divide_planes_q[j*NNUM + n][PDB-1:0];
           for (s = 0; s < DIVIDE_STEPS; s = s + 1) begin
             step_index = (j * I + {{(32-PHASE_BITS){1'b0}}, phase_q}) * DIVIDE_STEPS + s;
             if (step_index >= PLANE_SKIP) begin
-              plane_shifted = {plane_partial, plane_bits[DIVIDER_BITS-1]};
+              plane_shifted = {plane_partial, plane_bits[PDB-1]};
               plane_difference = plane_shifted - {1'b0, plane_divisor};
               plane_partial = plane_difference[AREA_BITS] ? plane_shifted[AREA_BITS-1:0] : plane_difference[AREA_BITS-1:0];
-              plane_bits = {plane_bits[DIVIDER_BITS-2:0], !plane_difference[AREA_BITS]};
+              plane_bits = {plane_bits[PDB-2:0], !plane_difference[AREA_BITS]};
             end
           end
-          divide_planes_next[j*12 + n] = {divide_planes_q[j*12 + n][PLANE_W-1], plane_partial, plane_bits};
+          divide_planes_next[j*NNUM + n] = {divide_planes_q[j*NNUM + n][PLANE_W-1], plane_partial, plane_bits};
         end
         for (n = 0; n < 6; n = n + 1) begin
           span_step_x = divide_pay_q[j*PAY + P_SX + (n/2)*EDGE_STEP_X_BITS +: EDGE_STEP_X_BITS];
@@ -1083,26 +1233,26 @@ module triangle_setup #(
     always @(posedge clk) begin
       if (advance) begin
         if (numer_valid_q[NUMER_STAGES-1]) begin
-          for (n = 0; n < 12; n = n + 1) divide_planes_q[n] <= divide_in_planes[n*PLANE_W +: PLANE_W];
+          for (n = 0; n < NNUM; n = n + 1) divide_planes_q[n] <= divide_in_planes[n*PLANE_W +: PLANE_W];
           for (n = 0; n < 6; n = n + 1) divide_spans_q[n] <= divide_in_spans[n*SPAN_W +: SPAN_W];
           divide_pay_q[0 +: PAY] <= numer_last_pay;
         end
         for (j = 1; j < DIVIDE_STAGES; j = j + 1) begin
           if (divide_valid_q[j-1]) begin
-            for (n = 0; n < 12; n = n + 1) divide_planes_q[j*12 + n] <= divide_planes_next[(j-1)*12 + n];
+            for (n = 0; n < NNUM; n = n + 1) divide_planes_q[j*NNUM + n] <= divide_planes_next[(j-1)*NNUM + n];
             for (n = 0; n < 6; n = n + 1) divide_spans_q[j*6 + n] <= divide_spans_next[(j-1)*6 + n];
             divide_pay_q[j*PAY +: PAY] <= divide_pay_q[(j-1)*PAY +: PAY];
           end
         end
         if (divide_valid_q[DIVIDE_STAGES-1]) begin
-          for (n = 0; n < 12; n = n + 1) out_planes_q[n*PLANE_W +: PLANE_W] <= divide_planes_next[(DIVIDE_STAGES-1)*12 + n];
+          for (n = 0; n < NNUM; n = n + 1) out_planes_q[n*PLANE_W +: PLANE_W] <= divide_planes_next[(DIVIDE_STAGES-1)*NNUM + n];
           for (n = 0; n < 6; n = n + 1) out_spans_q[n*SPAN_W +: SPAN_W] <= divide_spans_next[(DIVIDE_STAGES-1)*6 + n];
           out_pay_q <= divide_pay_q[(DIVIDE_STAGES-1)*PAY +: PAY];
         end
       end else begin
         for (j = 0; j < DIVIDE_STAGES; j = j + 1) begin
           if (divide_valid_q[j]) begin
-            for (n = 0; n < 12; n = n + 1) divide_planes_q[j*12 + n] <= divide_planes_next[j*12 + n];
+            for (n = 0; n < NNUM; n = n + 1) divide_planes_q[j*NNUM + n] <= divide_planes_next[j*NNUM + n];
             for (n = 0; n < 6; n = n + 1) divide_spans_q[j*6 + n] <= divide_spans_next[j*6 + n];
           end
         end
@@ -1110,13 +1260,17 @@ module triangle_setup #(
     end
 
     // ---- The record fields of the first product slot: floor for negative dividends (as
-    // divider.sv), packed as the record (without the left-edge fields) ----
-    wire [BASE_BITS-1:0] first_rec;
+    // divider.sv), packed as the record (without the left-edge fields); with TEXTURE above it the
+    // textured flag and the S, T, Q planes (TEX_BASE bits: the flag, then plane 3c + (start, step
+    // x, step y) at 1 + (3c + ...) TR) ----
+    localparam integer TEX_BASE = TEX != 0 ? 1 + 9 * TR : 0;
+    localparam integer VIEW_BITS = BASE_BITS + TEX_BASE;
+    wire [VIEW_BITS-1:0] first_rec;
     genvar on, ok;
-    for (on = 0; on < 12; on = on + 1) begin : out_plane
-      localparam integer QB = on < 3 ? Z_REG_BITS : COLOR_REG_BITS;
+    for (on = 0; on < NNUM; on = on + 1) begin : out_plane
+      localparam integer QB = on < 3 ? Z_REG_BITS : on < 12 ? COLOR_REG_BITS : TR;
       wire negative = out_planes_q[on*PLANE_W + PLANE_W - 1];
-      wire remainder_nonzero = out_planes_q[on*PLANE_W + DIVIDER_BITS +: AREA_BITS] != {AREA_BITS{1'b0}};
+      wire remainder_nonzero = out_planes_q[on*PLANE_W + PDB +: AREA_BITS] != {AREA_BITS{1'b0}};
       wire [QB-1:0] magnitude = out_planes_q[on*PLANE_W +: QB];
       wire [QB-1:0] quotient = !negative ? magnitude : remainder_nonzero ? ~magnitude : -magnitude;
     end
@@ -1158,48 +1312,56 @@ module triangle_setup #(
     assign first_rec[LSB_Y0 +: Y_BITS] = out_pay_q[P_Y0 +: Y_BITS];
     assign first_rec[LSB_Y1 +: Y_BITS] = out_pay_q[P_Y1 +: Y_BITS];
     assign first_rec[LSB_FLAT_RGB +: 24] = out_pay_q[P_RGB +: 24];
+    if (TEX != 0) begin : first_texture
+      assign first_rec[BASE_BITS] = out_pay_q[P_TEX];
+      for (on = 0; on < 9; on = on + 1) begin : plane
+        assign first_rec[BASE_BITS + 1 + on*TR +: TR] = out_plane[12 + on].quotient;
+      end
+    end
 
-    // ---- Product slots: the 16 planes along the left edges, base - quot * step_x modulo
-    // 2^Z_REG_BITS (colour planes in the low bits), PB multiply steps MSB first (the sign bit's
+    // ---- Product slots: the 16 planes along the left edges (28 with TEXTURE), base - quot * step_x
+    // modulo 2^PRB (each plane in the low bits), PB multiply steps MSB first (the sign bit's
     // subtracts), side by side; product n = 4p + 2j + t (plane p, left-edge slot j, t: start, step).
     // Slot 0 holds the first slot's record fields in first_rec; later slots carry them packed. ----
-    reg [BASE_BITS-1:0] product_rec_q [0:PRODUCT_STAGES-1];  // [0] unused: first_rec stands in
-    reg [Z_REG_BITS-1:0] product_acc_q [0:PRODUCT_STAGES*16-1];
-    reg [Z_REG_BITS-1:0] product_acc_next [0:PRODUCT_STAGES*16-1];
-    reg [BASE_BITS-1:0] view;
+    reg [VIEW_BITS-1:0] product_rec_q [0:PRODUCT_STAGES-1];  // [0] unused: first_rec stands in
+    reg [PRB-1:0] product_acc_q [0:PRODUCT_STAGES*NPROD-1];
+    reg [PRB-1:0] product_acc_next [0:PRODUCT_STAGES*NPROD-1];
+    reg [VIEW_BITS-1:0] view;
     reg [2:0] left_edge;
     reg [PB-1:0] multipliers [0:3];  // slot 0 start, slot 0 step, slot 1 start, slot 1 step
     reg [PB-1:0] multiplier;
-    reg [Z_REG_BITS-1:0] product_step_x, acc;
+    reg [PRB-1:0] product_step_x, acc;
     reg [31:0] product_index;
     integer q;
     // The record fields a product reads: plane p's step_x and its base (start or step_y), and the
     // slot's quotient (span_quot or span_step_quot of the slot's edge).
-    function automatic [Z_REG_BITS-1:0] plane_field(input [BASE_BITS-1:0] r, input integer p, input integer which);
+    function automatic [PRB-1:0] plane_field(input [VIEW_BITS-1:0] r, input integer p, input integer which);
       // which: 0 start, 1 step x, 2 step y
       begin
-        if (p == 0) plane_field = r[(which == 0 ? LSB_DEPTH_START : which == 1 ? LSB_DEPTH_STEP_X : LSB_DEPTH_STEP_Y) +: Z_REG_BITS];
-        else plane_field = Z_REG_BITS'($signed(r[(which == 0 ? LSB_COLOR_START : which == 1 ? LSB_COLOR_STEP_X : LSB_COLOR_STEP_Y)
-                                                  + (p - 1) * COLOR_REG_BITS +: COLOR_REG_BITS]));
+        if (p == 0) plane_field = PRB'(r[(which == 0 ? LSB_DEPTH_START : which == 1 ? LSB_DEPTH_STEP_X : LSB_DEPTH_STEP_Y) +: Z_REG_BITS]);
+        else if (p < 4 || TEX == 0)
+          plane_field = PRB'($signed(r[(which == 0 ? LSB_COLOR_START : which == 1 ? LSB_COLOR_STEP_X : LSB_COLOR_STEP_Y)
+                                       + (p - 1) * COLOR_REG_BITS +: COLOR_REG_BITS]));
+        else plane_field = PRB'(r[BASE_BITS + 1 + (3 * (p - 4) + which) * TR +: TR]);
       end
     endfunction
-    function automatic [PB-1:0] span_quot_of(input [BASE_BITS-1:0] r, input integer edge_k);
+    function automatic [PB-1:0] span_quot_of(input [VIEW_BITS-1:0] r, input integer edge_k);
       span_quot_of = PB'($signed(r[LSB_SPAN_QUOT + edge_k*EDGE_BITS +: EDGE_BITS]));
     endfunction
-    function automatic [PB-1:0] span_step_quot_of(input [BASE_BITS-1:0] r, input integer edge_k);
+    function automatic [PB-1:0] span_step_quot_of(input [VIEW_BITS-1:0] r, input integer edge_k);
       span_step_quot_of = PB'($signed(r[LSB_SPAN_STEP_QUOT + edge_k*EDGE_STEP_Y_BITS +: EDGE_STEP_Y_BITS]));
     endfunction
     /* verilator lint_off UNSIGNED */
     always @* begin
-      view = {BASE_BITS{1'b0}};
+      view = {VIEW_BITS{1'b0}};
       left_edge = 3'b000;
       for (q = 0; q < 4; q = q + 1) multipliers[q] = {PB{1'b0}};
       multiplier = {PB{1'b0}};
-      product_step_x = {Z_REG_BITS{1'b0}};
-      acc = {Z_REG_BITS{1'b0}};
+      product_step_x = {PRB{1'b0}};
+      acc = {PRB{1'b0}};
       product_index = 32'd0;
       for (j = 0; j < PRODUCT_STAGES; j = j + 1) begin
-        for (n = 0; n < 16; n = n + 1) product_acc_next[j*16 + n] = {Z_REG_BITS{1'bx}};  // an empty slot: don't-care
+        for (n = 0; n < NPROD; n = n + 1) product_acc_next[j*NPROD + n] = {PRB{1'bx}};  // an empty slot: don't-care
         if (product_valid_q[j]) begin
           view = j == 0 ? first_rec : product_rec_q[j];
           for (q = 0; q < 3; q = q + 1)
@@ -1214,53 +1376,76 @@ module triangle_setup #(
                          : (left_edge[0] || left_edge[1]) && left_edge[2] ? span_quot_of(view, 2) : {PB{1'b0}};
           multipliers[3] = left_edge[0] && left_edge[1] ? span_step_quot_of(view, 1)
                          : (left_edge[0] || left_edge[1]) && left_edge[2] ? span_step_quot_of(view, 2) : {PB{1'b0}};
-          for (n = 0; n < 16; n = n + 1) begin
+          for (n = 0; n < NPROD; n = n + 1) begin
             multiplier = multipliers[n % 4];
             product_step_x = plane_field(view, n / 4, 1);
-            acc = product_acc_q[j*16 + n];
+            acc = product_acc_q[j*NPROD + n];
             for (s = 0; s < PRODUCT_STEPS; s = s + 1) begin
               product_index = (j * I + {{(32-PHASE_BITS){1'b0}}, phase_q}) * PRODUCT_STEPS + s;
               if (product_index >= PRODUCT_SKIP) begin
                 if (multiplier[PB - 1 - (product_index - PRODUCT_SKIP)])
-                  acc = product_index == PRODUCT_SKIP ? {acc[Z_REG_BITS-2:0], 1'b0} - product_step_x
-                                                      : {acc[Z_REG_BITS-2:0], 1'b0} + product_step_x;
+                  acc = product_index == PRODUCT_SKIP ? {acc[PRB-2:0], 1'b0} - product_step_x
+                                                      : {acc[PRB-2:0], 1'b0} + product_step_x;
                 else
-                  acc = {acc[Z_REG_BITS-2:0], 1'b0};
+                  acc = {acc[PRB-2:0], 1'b0};
               end
             end
-            product_acc_next[j*16 + n] = acc;
+            product_acc_next[j*NPROD + n] = acc;
           end
         end
       end
     end
     /* verilator lint_on UNSIGNED */
-    // The output register: the record and base - acc of each product.
-    reg [BASE_BITS-1:0] out_rec_q;
-    reg [Z_REG_BITS-1:0] out_along_q [0:15];
-    wire [BASE_BITS-1:0] last_view = PRODUCT_STAGES == 1 ? first_rec : product_rec_q[PRODUCT_STAGES-1];
+    // The output register: the record and base - acc of each product (the depth and colour ones in
+    // the low bits: the top bits are unused with TEXTURE).
+    reg [VIEW_BITS-1:0] out_rec_q;
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [PRB-1:0] out_along_q [0:NPROD-1];
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [VIEW_BITS-1:0] last_view = PRODUCT_STAGES == 1 ? first_rec : product_rec_q[PRODUCT_STAGES-1];
     always @(posedge clk) begin
       if (advance) begin
         if (divide_valid_q[DIVIDE_STAGES-1])
-          for (n = 0; n < 16; n = n + 1) product_acc_q[n] <= {Z_REG_BITS{1'b0}};
+          for (n = 0; n < NPROD; n = n + 1) product_acc_q[n] <= {PRB{1'b0}};
         for (j = 1; j < PRODUCT_STAGES; j = j + 1) begin
           if (product_valid_q[j-1]) begin
             product_rec_q[j] <= j == 1 ? first_rec : product_rec_q[j-1];
-            for (n = 0; n < 16; n = n + 1) product_acc_q[j*16 + n] <= product_acc_next[(j-1)*16 + n];
+            for (n = 0; n < NPROD; n = n + 1) product_acc_q[j*NPROD + n] <= product_acc_next[(j-1)*NPROD + n];
           end
         end
         if (product_valid_q[PRODUCT_STAGES-1]) begin
           out_rec_q <= last_view;
-          for (n = 0; n < 16; n = n + 1)
-            out_along_q[n] <= plane_field(last_view, n / 4, n % 2 == 1 ? 2 : 0) - product_acc_next[(PRODUCT_STAGES-1)*16 + n];
+          for (n = 0; n < NPROD; n = n + 1)
+            out_along_q[n] <= plane_field(last_view, n / 4, n % 2 == 1 ? 2 : 0) - product_acc_next[(PRODUCT_STAGES-1)*NPROD + n];
         end
       end else begin
         for (j = 0; j < PRODUCT_STAGES; j = j + 1)
-          if (product_valid_q[j]) for (n = 0; n < 16; n = n + 1) product_acc_q[j*16 + n] <= product_acc_next[j*16 + n];
+          if (product_valid_q[j]) for (n = 0; n < NPROD; n = n + 1) product_acc_q[j*NPROD + n] <= product_acc_next[j*NPROD + n];
       end
     end
-    assign out_base = out_rec_q;
+    assign out_base = out_rec_q[BASE_BITS-1:0];
     for (ok = 0; ok < 16; ok = ok + 1) begin : along
-      assign out_along[ok] = out_along_q[ok];
+      assign out_along[ok] = out_along_q[ok][Z_REG_BITS-1:0];
+    end
+    // The texture record (register 3g + c: groups 0..2 the plane, 3..6 product 16 + 4c + g - 3),
+    // all zero for an untextured triangle.
+    if (TEX != 0) begin : texture
+      wire textured = out_rec_q[BASE_BITS];
+      genvar tg, tc;
+      assign out_texture[0] = textured;
+      for (tc = 0; tc < 3; tc = tc + 1) begin : coordinate
+        for (tg = 0; tg < 7; tg = tg + 1) begin : group
+          wire [TR-1:0] field;
+          if (tg < 3) begin : plane
+            assign field = out_rec_q[BASE_BITS + 1 + (3*tc + tg)*TR +: TR];
+          end else begin : along
+            assign field = out_along_q[16 + 4*tc + tg - 3][TR-1:0];
+          end
+          assign out_texture[1 + (3*tg + tc)*TR +: TR] = textured ? field : {TR{1'b0}};
+        end
+      end
+    end else begin : no_texture
+      assign out_texture = {rs_texture_record_bits(WIDTH, HEIGHT){1'b0}};
     end
   end
   endgenerate
@@ -1286,4 +1471,35 @@ module triangle_setup #(
       vrgb_q[2] <= vrgb_q[1];
     end
   end
+
+  // Texture coordinates and flag (TEXTURE = 1; no reset: loaded before use), swapped with the
+  // vertices.
+  genvar tv;
+  generate
+  if (TEX != 0) begin : texture_vertices
+    reg [MT-1:0] vtex_q [0:8];
+    reg textured_q;
+    integer tk;
+    always @(posedge clk) begin
+      if (load_vertices) begin
+        textured_q <= in_textured;
+        for (tk = 0; tk < 9; tk = tk + 1) vtex_q[tk] <= in_texture[tk*MT +: MT];
+      end else if (swap_vertices) begin
+        for (tk = 0; tk < 3; tk = tk + 1) begin
+          vtex_q[3 + tk] <= vtex_q[6 + tk];
+          vtex_q[6 + tk] <= vtex_q[3 + tk];
+        end
+      end
+    end
+    for (tv = 0; tv < 9; tv = tv + 1) begin : values
+      assign vtex[tv] = vtex_q[tv];
+    end
+    assign vtextured = textured_q;
+  end else begin : no_texture_vertices
+    for (tv = 0; tv < 9; tv = tv + 1) begin : values
+      assign vtex[tv] = {TVB{1'b0}};
+    end
+    assign vtextured = 1'b0;
+  end
+  endgenerate
 endmodule

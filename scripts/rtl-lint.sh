@@ -8,8 +8,9 @@ sources=("$rtl"/*.sv)
 status=0
 for params in "" "-GWIDTH=16 -GHEIGHT=8 -GSUBPIXEL_BITS=2 -GZ_BITS=16 -GMAX_MEMORY_LATENCY=4" \
               "-GSETUP_INTERVAL=2" "-GWIDTH=16 -GHEIGHT=8 -GSUBPIXEL_BITS=2 -GZ_BITS=16 -GSETUP_INTERVAL=5" \
-              "-GSETUP_INTERVAL=64"; do
-  for top in plane_register triangle_setup setup_fifo span_bounds scanline_walker_entry scanline_walker z_adder zbuffer zbuffer_memory texture_divide texture_address texture_filter rastersim_core rastersim_top; do
+              "-GSETUP_INTERVAL=64" "-GTEXTURE=1" \
+              "-GWIDTH=16 -GHEIGHT=8 -GSUBPIXEL_BITS=2 -GZ_BITS=16 -GSETUP_INTERVAL=0 -GTEXTURE=1"; do
+  for top in plane_register triangle_setup setup_fifo span_bounds scanline_walker_entry scanline_walker z_adder zbuffer zbuffer_memory texture_divide texture_address texture_filter texture_memory texture_unit rastersim_core rastersim_top; do
     unit_params=""
     for p in $params; do
       name="${p#-G}"; name="${name%%=*}"

@@ -132,8 +132,8 @@ from[serial_remainder_correction]='if (sign_q) rem_q <= ~trial[AREA_BITS-1:0];'
 to[serial_remainder_correction]='if (1'"'"'b0) rem_q <= ~trial[AREA_BITS-1:0];'  # the span remainder correction step missing
 from[serial_multiplier_bits]=': is_edge ? SB'"'"'(2 * (COORD_BITS + 1))'
 to[serial_multiplier_bits]=': is_edge ? SB'"'"'(2 * COORD_BITS)'  # the edge products one multiplier bit short
-from[serial_bias_carry]='+ H'"'"'(subtract || (bit_now && start_bias_q));'
-to[serial_bias_carry]='+ H'"'"'(subtract);'  # the start numerators use the biased edge values
+from[serial_bias_carry]=': subtract || (bit_now && start_bias_q);'
+to[serial_bias_carry]=': subtract;'  # the start numerators use the biased edge values
 from[serial_swap_deltas]='dx_q[d] <= -dx_q[2 - d];'
 to[serial_swap_deltas]='dx_q[d] <= dx_q[2 - d];'  # the swapped edges keep their x direction
 from[serial_product_step_x]='product_step_x_q <= product_step_x;'
@@ -150,8 +150,8 @@ file[setup_floor_correction]=triangle_setup.sv
 from[setup_floor_correction]='!negative ? magnitude : remainder_nonzero ? ~magnitude : -magnitude;'
 to[setup_floor_correction]='!negative ? magnitude : -magnitude;'  # no floor step for a remainder
 file[setup_missing_step]=triangle_setup.sv
-from[setup_missing_step]='NUMER_STEPS - Z_BITS;'
-to[setup_missing_step]='NUMER_STEPS - Z_BITS + 1;'  # one shift-add step of the numerators skipped
+from[setup_missing_step]='NUMER_STEPS - VW;'
+to[setup_missing_step]='NUMER_STEPS - VW + 1;'  # one shift-add step of the numerators skipped
 file[setup_edge_sign]=triangle_setup.sv
 from[setup_edge_sign]='(edge_step_index == EDGE_SKIP ? -e_term : e_term)'
 to[setup_edge_sign]='e_term'  # the edge values' sign bits added instead of subtracted

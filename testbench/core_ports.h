@@ -35,6 +35,24 @@ void drive_command(Ports& top, const SnappedTriangle& t, int coord_bits) {
   top.cmd_rgb0 = rgb_word(t.v[0].color), top.cmd_rgb1 = rgb_word(t.v[1].color), top.cmd_rgb2 = rgb_word(t.v[2].color);
 }
 
+// Drives a triangle's texture coordinates (cmd_textured, cmd_texture0..2: S, T, Q at bits 0, 50,
+// 100 of each vertex's word, two's complement of RS_TEXTURE_VERTEX_BITS) on a verilated top's
+// wide ports (VlWide words of 32 bits).
+template <class Ports>
+void drive_texture_command(Ports& top, const SnappedTriangle& t) {
+  top.cmd_textured = t.textured;
+  auto put = [](auto& word, const SnappedVertex& v) {
+    for (int i = 0; i < 5; ++i) word[i] = 0;
+    const int64_t values[3] = {v.s, v.t, v.q};
+    for (int c = 0; c < 3; ++c)
+      for (int bit = 0; bit < kTextureVertexBits; ++bit)
+        if ((uint64_t(values[c]) >> bit) & 1) word[(c * kTextureVertexBits + bit) / 32] |= 1u << ((c * kTextureVertexBits + bit) % 32);
+  };
+  put(top.cmd_texture0, t.v[0]);
+  put(top.cmd_texture1, t.v[1]);
+  put(top.cmd_texture2, t.v[2]);
+}
+
 // A bound on the cycles a correct RTL can take: per triangle the setup, plus every candidate of
 // its screen-clipped bounding box and its rows, each possibly stalled by the memory latency, and
 // by the memory's back-pressure (at most 90 % of the cycles, so ten times as long, twice over).
@@ -50,6 +68,7 @@ inline int64_t default_cycle_bound(const Profile& p, const std::vector<SnappedTr
     const int64_t rows = std::min<int64_t>(p.height, ((y_hi - y_lo) >> p.subpixel_bits) + 2);
     bound += setup_cycles + 4 + (columns + 1) * rows * (p.memory_latency + 2);
   }
+  if (p.texture_unit) bound += 2 * (p.texture_latency + 40);
   return p.memory_stall_percent > 0 ? 20 * bound : bound;
 }
 
@@ -60,12 +79,14 @@ struct TraceSample {
   int setup_status = 0;
   bool setup_busy = false, setup_stall = false, setup_done = false;
   bool walker_load = false, walker_busy = false, walker_candidate = false, walker_last = false;
-  bool frag_valid = false, frag_ready = false;
+  bool walker_frag_valid = false, walker_frag_ready = false;  // the walker's fragment handshake
+  bool texture_busy = false, texture_stall = false;
+  bool frag_valid = false, frag_ready = false;  // the z-buffer's
   int frag_x = 0, frag_y = 0;
   uint32_t frag_z = 0, frag_rgb = 0;
   bool result_valid = false, result_pass = false, zbuffer_busy = false, zbuffer_stall = false;
 
-  bool busy() const { return setup_busy || walker_busy || zbuffer_busy; }
+  bool busy() const { return setup_busy || walker_busy || texture_busy || zbuffer_busy; }
 };
 
 // Reads the ports of a verilated top: a C++ model (plain members) or a SystemC module (sc_in /
@@ -86,6 +107,10 @@ TraceSample sample_trace(const Ports& top) {
   s.walker_busy = bit(top.trace_walker_busy);
   s.walker_candidate = bit(top.trace_walker_candidate);
   s.walker_last = bit(top.trace_walker_last);
+  s.walker_frag_valid = bit(top.trace_walker_frag_valid);
+  s.walker_frag_ready = bit(top.trace_walker_frag_ready);
+  s.texture_busy = bit(top.trace_texture_busy);
+  s.texture_stall = bit(top.trace_texture_stall);
   s.frag_valid = bit(top.trace_frag_valid);
   s.frag_ready = bit(top.trace_frag_ready);
   s.frag_x = int(word(top.trace_frag_x));
@@ -169,6 +194,8 @@ SetupResult read_setup_record(const Core& t, bool gouraud) {
   SetupResult r;
   r.status = SetupStatus::Drawn;
   for (const auto& [field, read] : gouraud ? all_readers : flat_readers) field->set(r, read(t));
+  // The texture record (setup_record.h) in a build with the texture unit.
+  if constexpr (int(Core::P_TEXTURE) != 0) unpack_texture_record(t.rec_texture.data(), widths, r);
   return r;
 }
 
@@ -219,9 +246,16 @@ class TraceObserver {
       waiting_.push_back(in_setup_.front());
       in_setup_.pop_front();
     }
+    // A fragment belongs to the triangle in the walker when the walker hands it on; the texture unit
+    // (when there is one) keeps the fragments in order.
+    if (s.walker_frag_valid && s.walker_frag_ready) {
+      passing_.push_back(in_walker_);
+      if (in_walker_ >= 0) ++out_.triangles[size_t(in_walker_)].fragments;
+    }
     if (s.frag_valid && s.frag_ready) {
       Fragment f;
-      f.tri = in_walker_;
+      f.tri = passing_.empty() ? -1 : passing_.front();
+      if (!passing_.empty()) passing_.pop_front();
       f.x = s.frag_x;
       f.y = s.frag_y;
       f.z = s.frag_z;
@@ -230,7 +264,6 @@ class TraceObserver {
       f.cycle = cycle;
       in_flight_.push_back(out_.fragments.size());
       out_.fragments.push_back(f);
-      if (in_walker_ >= 0) ++out_.triangles[size_t(in_walker_)].fragments;
     }
     if (s.result_valid) {
       if (in_flight_.empty()) {
@@ -261,12 +294,14 @@ class TraceObserver {
     stats.setup.busy += s.setup_busy;
     stats.setup.stall += s.setup_stall;
     stats.walker.busy += s.walker_busy;
-    stats.walker.stall += s.frag_valid && !s.frag_ready;
+    stats.walker.stall += s.walker_frag_valid && !s.walker_frag_ready;
+    stats.texture.busy += s.texture_busy;
+    stats.texture.stall += s.texture_stall;
     stats.zbuffer.busy += s.zbuffer_busy;
     stats.zbuffer.stall += s.zbuffer_stall;
     if (s.busy()) last_busy_ = cycle;
     // A fragment can wait on the memory's back-pressure longer than L cycles with no unit busy.
-    done_ = !submitting && !s.busy() && !s.frag_valid && in_flight_.empty();
+    done_ = !submitting && !s.busy() && !s.frag_valid && !s.walker_frag_valid && in_flight_.empty();
     return true;
   }
 
@@ -290,6 +325,7 @@ class TraceObserver {
   std::deque<int64_t> in_setup_;   // drawn, record not yet in the output register
   std::deque<int64_t> waiting_;    // record made, not yet loaded by the walker
   int64_t in_walker_ = -1;     // triangle the walker walks
+  std::deque<int64_t> passing_;   // per fragment the walker handed on and the z-buffer did not take: its triangle
   std::deque<size_t> in_flight_;  // fragments taken by the z-buffer, awaiting their result
   int64_t last_busy_ = -1;
   bool done_ = false;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <random>
 
 #include "model/widths.h"
@@ -152,9 +153,46 @@ class Generator {
 
 }  // namespace
 
+namespace {
+
+// Texture coordinates as the snap makes them (model/triangle.cpp): u, v mostly within a few repeats,
+// sometimes near the limits +-128; w spread from none to the divide's limit 2^14.
+void texture_triangle(std::mt19937_64& rng, SnappedTriangle& t) {
+  auto real = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  const int kind = int(rng() % 8);
+  const double reach = kind == 0 ? 127.0 : kind < 3 ? 1.0 : 4.0;
+  const double log2_spread = kind == 7 ? 14.0 : real(0.0, 6.0);
+  double w[3], w_min = 0;
+  for (double& x : w) x = std::exp2(real(0.0, log2_spread));
+  w[rng() % 3] = 1.0;  // the smallest is 1, the largest within the limit
+  w_min = std::min({w[0], w[1], w[2]});
+  for (int k = 0; k < 3; ++k) {
+    t.v[k].q = texture_q(w_min, w[k]);
+    t.v[k].s = texture_scaled(real(-reach, reach), t.v[k].q);
+    t.v[k].t = texture_scaled(real(-reach, reach), t.v[k].q);
+  }
+  t.textured = true;
+}
+
+// A texture of random size (1 to 256 texels a side, powers of two) and texels; patterns that show
+// a wrong texel: noise, or a checkerboard of random colours.
+std::shared_ptr<const Texture> random_texture(std::mt19937_64& rng) {
+  const int log2_width = int(rng() % 9), log2_height = int(rng() % 9);
+  const bool noise = rng() % 2 == 0;
+  const uint32_t a = uint32_t(rng()) & 0xFFFFFFu, b = uint32_t(rng()) & 0xFFFFFFu;
+  std::vector<uint32_t> texels(size_t(1) << (log2_width + log2_height));
+  for (size_t i = 0; i < texels.size(); ++i) {
+    const size_t x = i & ((size_t(1) << log2_width) - 1), y = i >> log2_width;
+    texels[i] = noise ? uint32_t(rng()) & 0xFFFFFFu : ((x ^ y) & 1 ? a : b);
+  }
+  return std::make_shared<const Texture>(log2_width, log2_height, std::move(texels));
+}
+
+}  // namespace
+
 CosimCase random_case(const Profile& profile, uint64_t seed, int count) {
   Generator g(profile, seed);
-  CosimCase c{"random seed " + std::to_string(seed), {}, profile};
+  CosimCase c{"random seed " + std::to_string(seed), {}, profile, {}};
   while (int(c.triangles.size()) < count) {
     // Now and then repeat or re-colour a previous triangle: equal depths for the depth functions.
     if (!c.triangles.empty() && g.uniform(0, 9) == 0) {
@@ -164,6 +202,15 @@ CosimCase random_case(const Profile& profile, uint64_t seed, int count) {
     } else {
       c.triangles.push_back(g.any());
     }
+  }
+  if (profile.texture_unit) {
+    // A stream of its own, so that the triangles' geometry is that of an untextured frame.
+    std::mt19937_64 rng(seed ^ 0x7e87c7e5ULL);
+    for (SnappedTriangle& t : c.triangles)
+      if (rng() % 4 != 0) texture_triangle(rng, t);
+    if (rng() % 8 != 0) c.texture.texture = random_texture(rng);
+    c.texture.filter = rng() % 2 ? TextureFilter::Bilinear : TextureFilter::Nearest;
+    c.texture.wrap = rng() % 2 ? TextureWrap::Clamp : TextureWrap::Repeat;
   }
   return c;
 }
@@ -192,6 +239,9 @@ Profile random_settings(const Profile& profile, uint64_t seed, const std::set<st
   const auto shading = Shading(uniform(0, 1));
   const int latency = int(uniform(1, std::max(1, std::min(8, max_memory_latency))));
   const int fifo_depth = int(uniform(0, 2) == 0 ? 1 : uniform(2, 4));  // 1 as often as not quite
+  const int texture_latency = int(uniform(0, 7) == 0 ? 64 : uniform(1, 8));
+  const int texture_stall_percent = int(uniform(0, 2) == 0 ? uniform(1, 60) : 0);
+  const int texture_stall_seed = int(uniform(0, (int64_t(1) << 31) - 1));
   if (free("depth_func")) p.depth_func = depth_func;
   if (free("depth_write")) p.depth_write = depth_write;
   if (free("depth_clear")) p.depth_clear = depth_clear;
@@ -201,6 +251,9 @@ Profile random_settings(const Profile& profile, uint64_t seed, const std::set<st
   if (free("shading")) p.shading = shading;
   if (free("memory_latency")) p.memory_latency = latency;
   if (free("setup_fifo_depth")) p.setup_fifo_depth = fifo_depth;
+  if (p.texture_unit && free("texture_latency")) p.texture_latency = texture_latency;
+  if (p.texture_unit && free("texture_stall_percent")) p.texture_stall_percent = texture_stall_percent;
+  if (p.texture_unit && free("texture_stall_seed")) p.texture_stall_seed = texture_stall_seed;
   return p;
 }
 
@@ -208,7 +261,7 @@ std::vector<CosimCase> directed_cases(const Profile& profile, const std::set<std
   Generator g(profile, 12345);
   std::vector<CosimCase> cases;
   auto add = [&](const std::string& name, auto make, int count) {
-    CosimCase c{"directed " + name, {}, profile};
+    CosimCase c{"directed " + name, {}, profile, {}};
     for (int i = 0; i < count; ++i) c.triangles.push_back(make(i));
     cases.push_back(std::move(c));
   };
@@ -241,7 +294,7 @@ std::vector<CosimCase> directed_cases(const Profile& profile, const std::set<std
     for (int f = 0; f <= int(DepthFunc::Always); ++f) {
       Profile p = profile;
       p.depth_func = DepthFunc(f);
-      CosimCase c{std::string("directed depth ") + to_string(p.depth_func), {}, p};
+      CosimCase c{std::string("directed depth ") + to_string(p.depth_func), {}, p, {}};
       for (int i = 0; i < 24; ++i) {
         const SnappedTriangle t = i % 3 == 0 ? repeated : i % 3 == 1 ? g.at_clear_depth(g.medium()) : g.any();
         c.triangles.push_back(t);
@@ -271,7 +324,7 @@ std::vector<CosimCase> coverage_cases(const Profile& profile, const std::set<std
   // the other is culled), each followed by tiny triangles that fill the record FIFO while the
   // walker crosses the screen.
   auto fill = [&](const std::string& name, const Profile& p) {
-    CosimCase c{"coverage " + name, {}, p};
+    CosimCase c{"coverage " + name, {}, p, {}};
     for (const bool reversed : {false, true}) {
       c.triangles.push_back(screen_cover(reversed));
       for (int i = 0; i < 20; ++i) c.triangles.push_back(g.tiny());
@@ -303,7 +356,7 @@ std::vector<CosimCase> coverage_cases(const Profile& profile, const std::set<std
   const bool whole_screen = needed >= int64_t(profile.width) * profile.height / 2;
   const int cx = std::clamp(profile.width / 2, std::min(21, profile.width - 1), std::max(0, profile.width - 3));
   const int cy = std::clamp(profile.height / 2, std::min(21, profile.height - 1), std::max(0, profile.height - 3));
-  CosimCase hazards{"", {}, profile};
+  CosimCase hazards{"", {}, profile, {}};
   // A cover triangle, a walk ending on pixel (px, cy), then two more on that pixel: one starting on
   // it and one around it; or, as a chain, one covering it alone and one starting on it (the middle
   // one's only fragment waits on the first one's write while the third one's first fragment waits
@@ -341,7 +394,7 @@ std::vector<CosimCase> coverage_cases(const Profile& profile, const std::set<std
       if (free("depth_write")) p.depth_write = !profile.depth_write;
       if (free("depth_clear")) p.depth_clear = profile.depth_max() / 2;
       CosimCase c{std::string("coverage depth ") + to_string(p.depth_func) +
-                      (p.depth_write ? " with depth_write" : " without depth_write"), {}, p};
+                      (p.depth_write ? " with depth_write" : " without depth_write"), {}, p, {}};
       for (int i = 0; i < 12; ++i)
         c.triangles.push_back(i % 3 == 0 ? repeated : i % 3 == 1 ? g.at_clear_depth(g.tiny()) : g.tiny());
       cases.push_back(std::move(c));

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "model/profile.h"
+#include "model/texture_unit.h"
 #include "model/triangle.h"
 
 namespace rastersim::rtl {
@@ -17,9 +18,13 @@ struct CosimCase {
   std::string name;                        // e.g. "random 17" or "directed hazards"
   std::vector<SnappedTriangle> triangles;  // one frame
   Profile profile;                         // the frame's profile (its runtime settings may differ)
+  TextureBinding texture;                  // what the texture unit samples (profiles with texture_unit)
 };
 
 // A constrained-random frame of `count` triangles drawn from every category, reproducible from seed.
+// With the profile's texture unit most triangles are textured (random u, v and a w spread up to
+// the divide's limit, check_texture_w_ratio) and the frame draws a random texture (1 to 256 texels
+// a side, sometimes none), filter and wrap mode.
 CosimCase random_case(const Profile& profile, uint64_t seed, int count);
 
 // The profile keys the RTL samples at reset rather than being built for (depth_func, depth_write,
@@ -27,7 +32,9 @@ CosimCase random_case(const Profile& profile, uint64_t seed, int count);
 const std::vector<std::string>& runtime_setting_keys();
 
 // `profile` with every runtime setting that is not in `pinned` drawn from `seed`: memory latency in
-// 1..min(8, max_memory_latency), the depth clear mostly 2^N - 1, the rest uniformly.
+// 1..min(8, max_memory_latency), the depth clear mostly 2^N - 1, the rest uniformly; with the texture
+// unit its latency (1..8, now and then 64) and its memory's stall pattern (a third of the frames,
+// 1..60 %) too.
 Profile random_settings(const Profile& profile, uint64_t seed, const std::set<std::string>& pinned,
                         int max_memory_latency);
 

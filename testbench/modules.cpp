@@ -67,7 +67,7 @@ std::string sources_digest() {
 std::string config_entry(const Geometry& g) {
   std::ostringstream s;
   s << "module:" << g.width << ":" << g.height << ":" << g.subpixel_bits << ":" << g.z_bits << ":" << g.z_guard_bits
-    << ":" << g.max_memory_latency << ":" << g.setup_interval;
+    << ":" << g.max_memory_latency << ":" << g.setup_interval << ":" << g.texture;
   return s.str();
 }
 
@@ -76,7 +76,7 @@ std::string describe(Kind kind, const Geometry& g) {
   s << (kind == Kind::Rtl ? "the verilated RTL" : "the SystemC core") << " for " << g.width << "x" << g.height
     << " subpixel_bits " << g.subpixel_bits << " z_bits " << g.z_bits << " z_guard_bits "
     << (g.z_guard_bits ? std::to_string(g.z_guard_bits) : "auto") << " memory_latency 1.." << g.max_memory_latency
-    << " setup_interval " << g.setup_interval;
+    << " setup_interval " << g.setup_interval << (g.texture ? " texture unit" : "");
   return s.str();
 }
 
@@ -154,7 +154,7 @@ class FileLock {
 
 Geometry geometry_for(const Profile& p) {
   return Geometry{p.width, p.height, p.subpixel_bits, p.z_bits, p.z_guard_bits, std::max(64, p.memory_latency),
-                  p.setup_interval};
+                  p.setup_interval, p.texture_unit ? 1 : 0};
 }
 
 std::string cache_root() {
@@ -174,7 +174,7 @@ std::string module_library(Kind kind, const Geometry& g, const Progress& progres
   key.add(sources_digest());
   std::ostringstream name;
   name << (kind == Kind::Rtl ? "rtl-" : "systemc-") << g.width << "x" << g.height << "-s" << g.subpixel_bits << "-z"
-       << g.z_bits << "-g" << g.z_guard_bits << "-l" << g.max_memory_latency << "-i" << g.setup_interval << "-"
+       << g.z_bits << "-g" << g.z_guard_bits << "-l" << g.max_memory_latency << "-i" << g.setup_interval << "-t" << g.texture << "-"
        << key.hex();
   const fs::path modules = fs::path(cache_root()) / "modules";
   const fs::path entry = modules / name.str();

@@ -19,10 +19,11 @@ enum class Kind { Rtl, Systemc };
 struct Geometry {
   int width = 0, height = 0, subpixel_bits = 0, z_bits = 0, z_guard_bits = 0;
   int max_memory_latency = 0, setup_interval = 0;
+  int texture = 0;  // 1: with the texture unit (profile texture_unit)
 };
 
 // The module that runs `profile`: its geometry, z_guard_bits as the profile gives it (0: derived),
-// memory latency up to 64 (or the profile's, when larger) and its setup_interval.
+// memory latency up to 64 (or the profile's, when larger), its setup_interval and texture unit.
 Geometry geometry_for(const Profile& profile);
 
 // The cache: $RASTERSIM_CACHE_DIR, else $XDG_CACHE_HOME/rastersim, else $HOME/.cache/rastersim.

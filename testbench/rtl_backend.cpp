@@ -44,7 +44,7 @@ const BuiltConfiguration* find_configuration(const Profile& p) {
   for (const BuiltConfiguration* c : all_configurations()) {
     const int built_guard = derive_widths(c->width, c->height, c->subpixel_bits, c->z_bits, c->z_guard_bits).guard_bits;
     if (c->width == p.width && c->height == p.height && c->subpixel_bits == p.subpixel_bits && c->z_bits == p.z_bits &&
-        built_guard == guard && c->setup_interval == p.setup_interval) {
+        built_guard == guard && c->setup_interval == p.setup_interval && (c->texture != 0) == p.texture_unit) {
       if (p.memory_latency <= c->max_memory_latency) return c;
       if (!found) found = c;
     }
@@ -60,7 +60,8 @@ std::vector<std::string> built_configurations() {
     std::ostringstream s;
     s << c->name << ": " << c->width << "x" << c->height << " subpixel_bits " << c->subpixel_bits << " z_bits "
       << c->z_bits << " z_guard_bits " << (c->z_guard_bits ? std::to_string(c->z_guard_bits) : "auto")
-      << " memory_latency 1.." << c->max_memory_latency << " setup_interval " << c->setup_interval;
+      << " memory_latency 1.." << c->max_memory_latency << " setup_interval " << c->setup_interval
+      << (c->texture ? " texture unit" : "");
     out.push_back(s.str());
   }
   return out;
@@ -92,8 +93,7 @@ int built_max_memory_latency(const Profile& p) {
 std::string configuration_error(const Profile& p) {
   const std::vector<std::string> errors = validate(p);
   if (!errors.empty()) return "invalid profile: " + errors.front();
-  // Whatever the geometry: no build of rastersim_top has a texture unit or a memory stall pattern.
-  if (p.texture_unit) return kNoTextureUnitInRtl;
+  // Whatever the geometry: rastersim_top's on-chip memories have no stall pattern.
   if (p.memory_stall_percent > 0)
     return "memory_stall_percent " + std::to_string(p.memory_stall_percent) +
            ": rastersim_top's on-chip memory has no back-pressure; the SystemC backend (--backend systemc) "
@@ -104,11 +104,11 @@ std::string configuration_error(const Profile& p) {
                           std::to_string(p.height) + ", subpixel_bits " + std::to_string(p.subpixel_bits) +
                           ", z_bits " + std::to_string(p.z_bits) + ", guard bits " +
                           std::to_string(derive_widths(p).guard_bits) + ", setup_interval " +
-                          std::to_string(p.setup_interval) + "; built:";
+                          std::to_string(p.setup_interval) + (p.texture_unit ? ", texture unit" : "") + "; built:";
     for (const std::string& b : built_configurations()) message += " [" + b + "]";
     return message + ". rastersim verilates it on demand (--backend rtl, cosim); to build it in, add an entry to "
                      "RASTERSIM_RTL_CONFIGS in testbench/CMakeLists.txt "
-                     "(name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency:setup_interval).";
+                     "(name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency:setup_interval:texture).";
   }
   if (p.memory_latency > c->max_memory_latency)
     return "memory_latency " + std::to_string(p.memory_latency) + " exceeds the built RTL's maximum " +
@@ -131,9 +131,11 @@ struct CollectFragments : FragmentSink {
 
 }  // namespace
 
-RtlResult run_model(const Profile& profile, const std::vector<SnappedTriangle>& triangles) {
+RtlResult run_model(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
+                    const TextureBinding& texture) {
   RtlResult out;
   Pipeline pipe(profile);
+  pipe.set_texture(texture);
   CollectFragments sink;
   sink.out = &out.fragments;
   pipe.set_fragment_sink(&sink);
@@ -199,6 +201,18 @@ Divergence compare_setup(int64_t t, const SetupResult& m, const SetupResult& r, 
       return divergence(t, "triangle_setup", "record flat colour", rgb_text(m.flat_color), rgb_text(r.flat_color), cycle);
     return divergence(t, "triangle_setup", "record " + f.name, std::to_string(expected), std::to_string(actual), cycle);
   }
+  if (m.textured != r.textured)
+    return divergence(t, "triangle_setup", "record textured", std::to_string(m.textured), std::to_string(r.textured), cycle);
+  static const char* const kCoordinate[3] = {"S", "T", "Q"};
+  static const char* const kGroup[kTextureRecordGroups] = {"start", "step x", "step y", "left slot 0 start",
+                                                           "left slot 0 step", "left slot 1 start", "left slot 1 step"};
+  for (int g = 0; g < kTextureRecordGroups; ++g)
+    for (int c = 0; c < 3; ++c) {
+      const int64_t expected = texture_record_field(m, g, c), actual = texture_record_field(r, g, c);
+      if (expected != actual)
+        return divergence(t, "triangle_setup", std::string("record ") + kCoordinate[c] + " plane " + kGroup[g],
+                          std::to_string(expected), std::to_string(actual), cycle);
+    }
   return {};
 }
 
@@ -256,8 +270,9 @@ Divergence compare(const RtlResult& model, const RtlResult& rtl) {
       if (a.cycle != b.cycle)
         return divergence(t, "zbuffer", at + " taken cycle", to_string(a.cycle), to_string(b.cycle), a.cycle);
       if (a.z != b.z) return divergence(t, "z_adder", at + " z", to_string(a.z), to_string(b.z), a.cycle);
-      if (differs(a.color, b.color))
-        return divergence(t, "z_adder", at + " colour", rgb_text(a.color), rgb_text(b.color), a.cycle);
+      if (differs(a.color, b.color))  // a textured fragment's colour is the texture unit's
+        return divergence(t, a.textured ? "texture_unit" : "z_adder", at + " colour", rgb_text(a.color),
+                          rgb_text(b.color), a.cycle);
       if (a.pass != b.pass)
         return divergence(t, "zbuffer", at + " depth test pass", to_string(a.pass), to_string(b.pass), a.cycle);
     }
@@ -307,6 +322,8 @@ Divergence compare(const RtlResult& model, const RtlResult& rtl) {
       {"z_adder", "stall cycles", m.z_adder.stall, r.z_adder.stall},
       {"zbuffer", "busy cycles", m.zbuffer.busy, r.zbuffer.busy},
       {"zbuffer", "stall cycles", m.zbuffer.stall, r.zbuffer.stall},
+      {"texture_unit", "busy cycles", m.texture.busy, r.texture.busy},
+      {"texture_unit", "stall cycles", m.texture.stall, r.texture.stall},
   };
   for (const auto& f : fields)
     if (f.expected != f.actual)
@@ -368,12 +385,16 @@ std::pair<int64_t, int64_t> divergence_window(const Divergence& divergence, cons
 CosimReport cosim(const Profile& profile, const std::vector<SnappedTriangle>& triangles, const RtlOptions& options,
                   const std::string& replay_prefix) {
   CosimReport report;
-  report.model = run_model(profile, triangles);
+  report.model = run_model(profile, triangles, options.texture);
   report.rtl = run_rtl(profile, triangles, options);
   report.divergence = compare(report.model, report.rtl);
   report.passed = !report.divergence.found;
   if (!report.passed && !replay_prefix.empty()) {
-    report.replay_command = write_replay(replay_prefix, profile, triangles, options.seed);
+    // A .tri replay carries no texture: a textured frame is rerun from its cosim command instead.
+    const bool textured = profile.texture_unit && std::any_of(triangles.begin(), triangles.end(),
+                                                              [](const SnappedTriangle& t) { return t.textured; });
+    report.replay_command = textured ? "none (a textured frame: rerun its cosim command with --frame)"
+                                     : write_replay(replay_prefix, profile, triangles, options.seed);
     // The frame again, with a waveform window around the divergence.
     RtlOptions again = options;
     std::tie(again.wave_from, again.wave_to) = divergence_window(report.divergence, report.model);

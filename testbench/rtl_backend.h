@@ -9,6 +9,7 @@
 
 #include "model/pipeline.h"
 #include "model/profile.h"
+#include "model/texture_unit.h"
 #include "model/triangle.h"
 
 namespace rastersim::rtl {
@@ -29,6 +30,9 @@ struct RtlOptions {
   // Read the final memories through the RTL's synchronous read-back port (W H cycles) instead of
   // directly from the verilated memory arrays; both give the same words (tests/rtl checks it).
   bool readback_through_port = false;
+  // What the texture unit samples (profiles with texture_unit): loaded into the texture memory
+  // before the frame.
+  TextureBinding texture;
 };
 
 // Everything a backend produces for one frame. Fragment.pass and TriangleRecord fields as in the
@@ -64,14 +68,15 @@ std::string configuration_error(const Profile& profile);
 RtlResult run_rtl(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
                   const RtlOptions& options = {});
 
-// The same through the model (the specification).
-RtlResult run_model(const Profile& profile, const std::vector<SnappedTriangle>& triangles);
+// The same through the model (the specification), sampling `texture` with the profile's texture unit.
+RtlResult run_model(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
+                    const TextureBinding& texture = {});
 
 // The first divergence between the model (expected) and the RTL (actual), earliest triangle first.
 struct Divergence {
   bool found = false;
   int64_t triangle = -1;  // -1: a frame-level field (memories, stats)
-  std::string unit;       // triangle_setup, scanline_walker, z_adder, zbuffer, pipeline
+  std::string unit;       // triangle_setup, scanline_walker, z_adder, texture_unit, zbuffer, pipeline
   std::string field;
   std::string expected, actual;
   int64_t cycle = -1;     // the cycle of the event in the model's timeline, -1 when not an event

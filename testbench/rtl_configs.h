@@ -10,6 +10,7 @@ namespace rastersim::rtl {
 struct BuiltConfiguration {
   const char* name;
   int width, height, subpixel_bits, z_bits, z_guard_bits, max_memory_latency, setup_interval;
+  int texture;  // 1: built with the texture unit (profile texture_unit)
   RtlResult (*run)(const Profile&, const std::vector<SnappedTriangle>&, const RtlOptions&);
 };
 

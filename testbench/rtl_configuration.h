@@ -28,8 +28,12 @@ constexpr bool widths_agree() {
   static_assert(int(Top::X_BITS) == w.x_bits, "RTL x_bits differs from derive_widths");
   static_assert(int(Top::Y_BITS) == w.y_bits, "RTL y_bits differs from derive_widths");
   static_assert(int(Top::ADDR_BITS) == w.addr_bits, "RTL addr_bits differs from derive_widths");
-  constexpr SetupTiming t = setup_timing(w, int(Top::P_SUBPIXEL_BITS), int(Top::P_Z_BITS), int(Top::P_SETUP_INTERVAL));
+  constexpr SetupTiming t = setup_timing(w, int(Top::P_SUBPIXEL_BITS), int(Top::P_Z_BITS), int(Top::P_SETUP_INTERVAL),
+                                         int(Top::P_TEXTURE) != 0);
   static_assert(int(Top::SETUP_DRAWN_LATENCY) == t.drawn_latency, "RTL setup latency differs from setup_timing");
+  static_assert(int(Top::SETUP_TEXTURED_DRAWN_LATENCY) == t.textured_drawn_latency,
+                "RTL textured setup latency differs from setup_timing");
+  static_assert(int(Top::TEXTURE_REG_BITS) == w.texture_reg_bits, "RTL texture_reg_bits differs from derive_widths");
   static_assert(int(Top::SETUP_REJECTED_LATENCY) == t.rejected_latency, "RTL rejected latency differs from setup_timing");
   static_assert(int(Top::WALKER_LOAD_CYCLES) == w.walker_load_cycles, "RTL walker_load_cycles differs");
   return true;

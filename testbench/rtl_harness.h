@@ -15,6 +15,7 @@
 #include "testbench/rtl_backend.h"
 #include "testbench/core_ports.h"
 #include "testbench/waveform.h"
+#include "model/zbuffer_memory.h"
 
 namespace rastersim::rtl::detail {
 
@@ -27,11 +28,13 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
   using Core = CoreOf<V>;
   if (p.memory_stall_percent > 0)
     throw std::invalid_argument("rastersim_top's on-chip memory has no back-pressure (memory_stall_percent)");
+  if (p.texture_unit != (int(Core::P_TEXTURE) != 0) || p.texture_latency > int(Core::P_MAX_TEXTURE_LATENCY))
+    throw std::invalid_argument("the RTL configuration's texture unit differs from the profile's");
   if (p.setup_fifo_depth > int(Core::P_MAX_SETUP_FIFO_DEPTH))
     throw std::invalid_argument("setup_fifo_depth " + std::to_string(p.setup_fifo_depth) +
                                 " exceeds the RTL's MAX_SETUP_FIFO_DEPTH " + std::to_string(int(Core::P_MAX_SETUP_FIFO_DEPTH)));
   const int coord_bits = Core::COORD_BITS;
-  const int setup_cycles = int(Core::SETUP_DRAWN_LATENCY) + 1;
+  const int setup_cycles = int(Core::SETUP_TEXTURED_DRAWN_LATENCY) + 1;
   auto context = std::make_unique<VerilatedContext>();
   context->randReset(2);
   context->randSeed(int(options.seed % 2147483647u) + 1);
@@ -66,10 +69,34 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
   top->cfg_shading = p.shading == Shading::Gouraud;
   top->cfg_memory_latency = uint8_t(p.memory_latency);
   top->cfg_setup_fifo_depth = uint8_t(p.setup_fifo_depth);
+  // The texture: its size and sampling, and its texels through the load port during reset (none
+  // bound: one white texel, as the model samples then). A build without the texture unit gets
+  // constants, whatever the options (its waveform does not depend on them).
+  const bool textures = int(Core::P_TEXTURE) != 0;
+  const Texture* texture = textures ? options.texture.texture.get() : nullptr;
+  top->cfg_texture_latency = uint8_t(textures ? p.texture_latency : 1);
+  top->cfg_texture_log2_width = uint8_t(texture ? texture->log2_width() : 0);
+  top->cfg_texture_log2_height = uint8_t(texture ? texture->log2_height() : 0);
+  top->cfg_texture_bilinear = textures && options.texture.filter == TextureFilter::Bilinear;
+  top->cfg_texture_clamp = textures && options.texture.wrap == TextureWrap::Clamp;
+  top->texture_load_en = 0, top->texture_load_x = 0, top->texture_load_y = 0, top->texture_load_rgb = 0;
+  top->texture_refuse = 0;
+  drive_texture_command(*top, SnappedTriangle{});
   top->cmd_valid = 0;
   top->readback_addr = 0;
   top->rst = 1;
   for (int i = 0; i < 4; ++i) half_cycle(0), half_cycle(1);
+  if (textures) {
+    const int texture_width = texture ? 1 << texture->log2_width() : 1, texture_height = texture ? 1 << texture->log2_height() : 1;
+    top->texture_load_en = 1;
+    for (int j = 0; j < texture_height; ++j)
+      for (int i = 0; i < texture_width; ++i) {
+        top->texture_load_x = uint16_t(i), top->texture_load_y = uint16_t(j);
+        top->texture_load_rgb = texture ? texture->texel(i, j) : 0xFFFFFFu;
+        half_cycle(0), half_cycle(1);
+      }
+    top->texture_load_en = 0;
+  }
   top->rst = 0;
   // The z-buffer memory clears its written bits (64 words per cycle); the frame starts when it is done.
   const int64_t clear_bound = int64_t(p.width) * p.height + 16;
@@ -92,7 +119,9 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
     if (windowed) dumping = cycle >= std::max<int64_t>(0, options.wave_from) && (options.wave_to < 0 || cycle <= options.wave_to);
     const size_t next = observer.next_triangle();
     top->cmd_valid = next < tris.size();
-    if (next < tris.size()) drive_command(*top, tris[next], coord_bits);
+    if (next < tris.size()) drive_command(*top, tris[next], coord_bits), drive_texture_command(*top, tris[next]);
+    // The texture memory's back-pressure: the profile's stall pattern (docs/cycle-model.md).
+    if (textures) top->texture_refuse = memory_stalls(uint64_t(p.texture_stall_seed), p.texture_stall_percent, cycle);
     half_cycle(0);
     // Observe this cycle's handshakes and decisions (before the rising edge).
     if (!observer.observe(cycle, sample_trace(*top), [&] { return read_setup_record(core, gouraud); })) break;

@@ -170,4 +170,59 @@ class RecordLayout {
   int bits_ = 0;
 };
 
+// The texture record beside the setup record (triangle_setup's out_texture with TEXTURE = 1;
+// rs_texture_record_bits in rtl/rastersim_widths.vh), in 32-bit words, least significant first:
+// bit 0 the textured flag, then 21 registers of texture_reg_bits (s9.(P+Ft), two's complement),
+// register 3 g + c at bit 1 + (3 g + c) texture_reg_bits, c = 0 S, 1 T, 2 Q, and the groups g:
+// 0 start, 1 step x, 2 step y, 3 left-edge slot 0 start, 4 its step, 5 slot 1 start, 6 its step.
+// An untextured triangle's record is all zeros (the model's planes are zero, textured false).
+constexpr int kTextureRecordGroups = 7;
+inline int texture_record_bits(const Widths& w) { return 1 + 3 * kTextureRecordGroups * w.texture_reg_bits; }
+
+inline bool texture_record_flag(const uint32_t* words) { return (words[0] & 1u) != 0; }
+
+// Register 3 g + c, sign-extended.
+inline int64_t texture_record_register(const uint32_t* words, const Widths& w, int group, int c) {
+  const int bits = w.texture_reg_bits, lsb = 1 + (3 * group + c) * bits;
+  uint64_t value = 0;
+  for (int i = 0; i < bits; ++i) value |= uint64_t((words[(lsb + i) / 32] >> ((lsb + i) % 32)) & 1u) << i;
+  if (bits < 64 && ((value >> (bits - 1)) & 1u)) value |= ~uint64_t(0) << bits;
+  return int64_t(value);
+}
+
+// The model's field of register 3 g + c (R: SetupResult or const SetupResult): plane c's start,
+// step x, step y, then its planes along the left-edge slots.
+template <class R>
+auto& texture_record_field(R& s, int group, int c) {
+  switch (group) {
+    case 0: return s.texture[c].start;
+    case 1: return s.texture[c].step_x;
+    case 2: return s.texture[c].step_y;
+    case 3: return s.left[0].texture[c].start;
+    case 4: return s.left[0].texture[c].step;
+    case 5: return s.left[1].texture[c].start;
+    default: return s.left[1].texture[c].step;
+  }
+}
+
+// The texture record into `s`: textured, texture[c] and left[j].texture[c].
+inline void unpack_texture_record(const uint32_t* words, const Widths& w, SetupResult& s) {
+  s.textured = texture_record_flag(words);
+  for (int g = 0; g < kTextureRecordGroups; ++g)
+    for (int c = 0; c < 3; ++c) texture_record_field(s, g, c) = texture_record_register(words, w, g, c);
+}
+
+inline std::vector<uint32_t> pack_texture_record(const SetupResult& s, const Widths& w) {
+  std::vector<uint32_t> words(size_t((texture_record_bits(w) + 31) / 32), 0u);
+  words[0] = s.textured ? 1u : 0u;
+  for (int g = 0; g < kTextureRecordGroups; ++g)
+    for (int c = 0; c < 3; ++c) {
+      const uint64_t value = uint64_t(texture_record_field(s, g, c));
+      const int lsb = 1 + (3 * g + c) * w.texture_reg_bits;
+      for (int i = 0; i < w.texture_reg_bits; ++i)
+        if ((value >> i) & 1u) words[size_t((lsb + i) / 32)] |= 1u << ((lsb + i) % 32);
+    }
+  return words;
+}
+
 }  // namespace rastersim::rtl

@@ -137,6 +137,12 @@ module scoreboard_tb #(
     .trace_frag_valid(frag_valid), .trace_frag_ready(frag_ready), .trace_frag_x(frag_x), .trace_frag_y(frag_y),
     .trace_frag_z(frag_z), .trace_frag_rgb(frag_rgb), .trace_result_valid(result_valid),
     .trace_result_pass(result_pass), .trace_zbuffer_busy(), .trace_zbuffer_stall(),
+    // Built without the texture unit: its ports tied off.
+    .cfg_texture_latency(7'd1), .cfg_texture_log2_width(4'd0), .cfg_texture_log2_height(4'd0),
+    .cfg_texture_bilinear(1'b0), .cfg_texture_clamp(1'b0), .texture_load_en(1'b0), .texture_load_x(10'd0),
+    .texture_load_y(10'd0), .texture_load_rgb(24'd0), .texture_refuse(1'b0), .cmd_textured(1'b0), .cmd_texture0('0), .cmd_texture1('0),
+    .cmd_texture2('0), .trace_walker_frag_valid(), .trace_walker_frag_ready(), .trace_texture_busy(),
+    .trace_texture_stall(),
     .readback_addr(readback_addr), .readback_depth(readback_depth), .readback_rgb(readback_rgb));
 
   // ---- Comparison, cycle by cycle ----

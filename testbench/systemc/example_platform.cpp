@@ -80,6 +80,13 @@ int sc_main(int, char*[]) {
   sc_signal<uint32_t> setup_status, frag_x, frag_y, frag_z, frag_rgb;
   sc_signal<bool> mem_clear_done, mem_rd_valid, mem_rd_ready, mem_wr_depth_en, mem_wr_color_en;
   sc_signal<uint32_t> mem_rd_addr, mem_rd_depth, mem_wr_addr, mem_wr_depth, mem_wr_rgb;
+  // The texture unit's ports: this core is built without one, so they stay at zero.
+  sc_signal<uint32_t> cfg_texture_latency, cfg_texture_log2_width, cfg_texture_log2_height;
+  sc_signal<bool> cfg_texture_bilinear, cfg_texture_clamp, cmd_textured, walker_frag_valid, walker_frag_ready;
+  sc_signal<bool> texture_busy, texture_stall, tex_rd_valid, tex_rd_ready;
+  sc_signal<sc_dt::sc_bv<150>> cmd_texture[3];
+  sc_signal<sc_dt::sc_bv<72>> tex_rd_addr;
+  sc_signal<sc_dt::sc_bv<96>> tex_rd_texels;
 
   // The core samples its configuration during reset; the memory takes the same latency.
   cfg_depth_func.write(uint32_t(profile.depth_func));
@@ -112,6 +119,14 @@ int sc_main(int, char*[]) {
   core.mem_rd_addr(mem_rd_addr), core.mem_rd_depth(mem_rd_depth);
   core.mem_wr_depth_en(mem_wr_depth_en), core.mem_wr_color_en(mem_wr_color_en);
   core.mem_wr_addr(mem_wr_addr), core.mem_wr_depth(mem_wr_depth), core.mem_wr_rgb(mem_wr_rgb);
+  core.cfg_texture_latency(cfg_texture_latency), core.cfg_texture_log2_width(cfg_texture_log2_width);
+  core.cfg_texture_log2_height(cfg_texture_log2_height), core.cfg_texture_bilinear(cfg_texture_bilinear);
+  core.cfg_texture_clamp(cfg_texture_clamp), core.cmd_textured(cmd_textured);
+  core.cmd_texture0(cmd_texture[0]), core.cmd_texture1(cmd_texture[1]), core.cmd_texture2(cmd_texture[2]);
+  core.trace_walker_frag_valid(walker_frag_valid), core.trace_walker_frag_ready(walker_frag_ready);
+  core.trace_texture_busy(texture_busy), core.trace_texture_stall(texture_stall);
+  core.tex_rd_valid(tex_rd_valid), core.tex_rd_ready(tex_rd_ready), core.tex_rd_addr(tex_rd_addr);
+  core.tex_rd_texels(tex_rd_texels);
 
   rastersim::systemc::CommandFifo fifo("fifo", 8, int(Core::COORD_BITS));
   fifo.clk(clk), fifo.rst(rst), fifo.cmd_valid(cmd_valid), fifo.cmd_ready(cmd_ready);

@@ -54,7 +54,7 @@ std::string RastersimSystem::geometry_error(const Profile& p) {
 }
 
 std::string RastersimSystem::configuration_error(const Profile& p) {
-  if (p.texture_unit) return kNoTextureUnitInRtl;
+  if (p.texture_unit) return kNoTextureUnitInSystemc;
   if (std::string error = geometry_error(p); !error.empty()) return error;
   if (p.setup_fifo_depth > int(Core::P_MAX_SETUP_FIFO_DEPTH))
     return "setup_fifo_depth " + std::to_string(p.setup_fifo_depth) + " exceeds the SystemC core's maximum " +
@@ -114,6 +114,21 @@ RastersimSystem::RastersimSystem(sc_core::sc_module_name name, int fifo_depth)
   core_.mem_wr_addr(mem_wr_addr_);
   core_.mem_wr_depth(mem_wr_depth_);
   core_.mem_wr_rgb(mem_wr_rgb_);
+  core_.cfg_texture_latency(cfg_texture_latency_);
+  core_.cfg_texture_log2_width(cfg_texture_log2_width_);
+  core_.cfg_texture_log2_height(cfg_texture_log2_height_);
+  core_.cfg_texture_bilinear(cfg_texture_bilinear_);
+  core_.cfg_texture_clamp(cfg_texture_clamp_);
+  core_.cmd_textured(cmd_textured_);
+  core_.cmd_texture0(cmd_texture0_), core_.cmd_texture1(cmd_texture1_), core_.cmd_texture2(cmd_texture2_);
+  core_.trace_walker_frag_valid(trace_walker_frag_valid_);
+  core_.trace_walker_frag_ready(trace_walker_frag_ready_);
+  core_.trace_texture_busy(trace_texture_busy_);
+  core_.trace_texture_stall(trace_texture_stall_);
+  core_.tex_rd_valid(tex_rd_valid_);
+  core_.tex_rd_ready(tex_rd_ready_);
+  core_.tex_rd_addr(tex_rd_addr_);
+  core_.tex_rd_texels(tex_rd_texels_);
 
   fifo_.clk(clk_);
   fifo_.rst(rst_);

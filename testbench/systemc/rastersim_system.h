@@ -72,6 +72,15 @@ class RastersimSystem : public sc_core::sc_module {
   // Memory port.
   sc_core::sc_signal<bool> mem_clear_done_, mem_rd_valid_, mem_rd_ready_, mem_wr_depth_en_, mem_wr_color_en_;
   sc_core::sc_signal<uint32_t> mem_rd_addr_, mem_rd_depth_, mem_wr_addr_, mem_wr_depth_, mem_wr_rgb_;
+  // The texture unit's ports (a core without one: held at zero and unused; this system refuses
+  // texture_unit).
+  sc_core::sc_signal<uint32_t> cfg_texture_latency_, cfg_texture_log2_width_, cfg_texture_log2_height_;
+  sc_core::sc_signal<bool> cfg_texture_bilinear_, cfg_texture_clamp_, cmd_textured_;
+  sc_core::sc_signal<sc_dt::sc_bv<150>> cmd_texture0_, cmd_texture1_, cmd_texture2_;
+  sc_core::sc_signal<bool> trace_walker_frag_valid_, trace_walker_frag_ready_, trace_texture_busy_, trace_texture_stall_;
+  sc_core::sc_signal<bool> tex_rd_valid_, tex_rd_ready_;
+  sc_core::sc_signal<sc_dt::sc_bv<72>> tex_rd_addr_;
+  sc_core::sc_signal<sc_dt::sc_bv<96>> tex_rd_texels_;
 
   Vrastersim_sc core_;
   CommandFifo fifo_;

@@ -53,6 +53,10 @@ module walker_unit #(
     .frag_valid(frag_valid), .frag_ready(frag_ready), .frag_x(frag_x), .frag_y(frag_y),
     .busy(busy), .candidate(candidate), .last(last));
 
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire textured_unused;
+  wire [3*rs_texture_reg_bits(WIDTH, HEIGHT)-1:0] stq_unused;
+  /* verilator lint_on UNUSEDSIGNAL */
   z_adder #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS)) adders (
     .clk(clk), .cfg_shading(cfg_shading), .load(load), .step_x(adder_step_x),
     .next_row(adder_next_row), .row_enter(adder_row_enter), .enter_left(adder_enter_left),
@@ -64,5 +68,8 @@ module walker_unit #(
     .color_step_x(in_record[LSB_COLOR_STEP_X +: 3*COLOR_REG_BITS]),
     .color_step_y(in_record[LSB_COLOR_STEP_Y +: 3*COLOR_REG_BITS]),
     .flat_rgb(in_record[LSB_FLAT_RGB +: 24]), .left_start(in_record[LSB_LEFT_START +: 2*(Z_REG_BITS + 3*COLOR_REG_BITS)]),
-    .left_step(in_record[LSB_LEFT_STEP +: 2*(Z_REG_BITS + 3*COLOR_REG_BITS)]), .depth(frag_z), .rgb(frag_rgb));
+    .left_step(in_record[LSB_LEFT_STEP +: 2*(Z_REG_BITS + 3*COLOR_REG_BITS)]), .depth(frag_z), .rgb(frag_rgb),
+    // Built without the texture planes (TEXTURE 0): no texture record, outputs unused.
+    .texture_record({rs_texture_record_bits(WIDTH, HEIGHT){1'b0}}), .triangle_textured(textured_unused),
+    .stq(stq_unused));
 endmodule

@@ -95,6 +95,8 @@ module rastersim_selftest (
   wire [Z_BITS-1:0] readback_depth;
   wire [23:0] readback_rgb;
 
+  wire trace_walker_frag_valid, trace_walker_frag_ready, trace_texture_busy, trace_texture_stall, tex_rd_valid;
+  wire [4*18-1:0] tex_rd_addr;
   rastersim_core #(
     .WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
     .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MEMORY_LATENCY),
@@ -120,6 +122,13 @@ module rastersim_selftest (
     .trace_frag_rgb(trace_frag_rgb), .trace_result_valid(trace_result_valid),
     .trace_result_pass(trace_result_pass), .trace_zbuffer_busy(trace_zbuffer_busy),
     .trace_zbuffer_stall(trace_zbuffer_stall),
+    // Built without the texture unit: its ports tied off.
+    .cfg_texture_latency(7'd1), .cfg_texture_log2_width(4'd0), .cfg_texture_log2_height(4'd0),
+    .cfg_texture_bilinear(1'b0), .cfg_texture_clamp(1'b0),
+    .cmd_textured(1'b0), .cmd_texture0(150'd0), .cmd_texture1(150'd0), .cmd_texture2(150'd0),
+    .trace_walker_frag_valid(trace_walker_frag_valid), .trace_walker_frag_ready(trace_walker_frag_ready),
+    .trace_texture_busy(trace_texture_busy), .trace_texture_stall(trace_texture_stall),
+    .tex_rd_valid(tex_rd_valid), .tex_rd_ready(1'b0), .tex_rd_addr(tex_rd_addr), .tex_rd_texels(96'd0),
     .mem_clear_done(mem_clear_done), .mem_rd_valid(mem_rd_valid), .mem_rd_ready(mem_rd_ready),
     .mem_rd_addr(mem_rd_addr), .mem_rd_depth(mem_rd_depth), .mem_wr_depth_en(mem_wr_depth_en),
     .mem_wr_color_en(mem_wr_color_en), .mem_wr_addr(mem_wr_addr), .mem_wr_depth(mem_wr_depth),

@@ -71,6 +71,8 @@ module rastersim_vectors_tb;
   wire [Z_BITS-1:0] trace_frag_z;
   wire [23:0] trace_frag_rgb;
   wire trace_result_valid, trace_result_pass, trace_zbuffer_busy, trace_zbuffer_stall;
+  // The texture unit's traces (packages are built without it: the walker's handshake is the z-buffer's).
+  wire trace_walker_frag_valid, trace_walker_frag_ready, trace_texture_busy, trace_texture_stall;
   wire [Z_BITS-1:0] readback_depth;
   wire [23:0] readback_rgb;
 
@@ -93,7 +95,12 @@ module rastersim_vectors_tb;
     .trace_frag_x(trace_frag_x), .trace_frag_y(trace_frag_y), .trace_frag_z(trace_frag_z), \
     .trace_frag_rgb(trace_frag_rgb), \
     .trace_result_valid(trace_result_valid), .trace_result_pass(trace_result_pass), \
-    .trace_zbuffer_busy(trace_zbuffer_busy), .trace_zbuffer_stall(trace_zbuffer_stall)
+    .trace_zbuffer_busy(trace_zbuffer_busy), .trace_zbuffer_stall(trace_zbuffer_stall), \
+    .cfg_texture_latency(7'd1), .cfg_texture_log2_width(4'd0), .cfg_texture_log2_height(4'd0), \
+    .cfg_texture_bilinear(1'b0), .cfg_texture_clamp(1'b0), \
+    .cmd_textured(1'b0), .cmd_texture0(150'd0), .cmd_texture1(150'd0), .cmd_texture2(150'd0), \
+    .trace_walker_frag_valid(trace_walker_frag_valid), .trace_walker_frag_ready(trace_walker_frag_ready), \
+    .trace_texture_busy(trace_texture_busy), .trace_texture_stall(trace_texture_stall)
 `ifdef RS_EXTERNAL_MEMORY
   // rastersim_core (or a port with its parameters and ports) with the frame memory outside: the
   // memory model with the profile's latency and back-pressure pattern on its memory port.
@@ -102,6 +109,8 @@ module rastersim_vectors_tb;
   wire [Z_BITS-1:0] mem_rd_depth, mem_wr_depth;
   wire [23:0] mem_wr_rgb;
   wire [31:0] refused_reads, bad_accesses;
+  wire tex_rd_valid;
+  wire [4*18-1:0] tex_rd_addr;
   rastersim_core #(
     .WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
     .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MEMORY_LATENCY),
@@ -111,7 +120,8 @@ module rastersim_vectors_tb;
     .mem_clear_done(mem_clear_done), .mem_rd_valid(mem_rd_valid), .mem_rd_ready(mem_rd_ready),
     .mem_rd_addr(mem_rd_addr), .mem_rd_depth(mem_rd_depth), .mem_wr_depth_en(mem_wr_depth_en),
     .mem_wr_color_en(mem_wr_color_en), .mem_wr_addr(mem_wr_addr), .mem_wr_depth(mem_wr_depth),
-    .mem_wr_rgb(mem_wr_rgb));
+    .mem_wr_rgb(mem_wr_rgb), .tex_rd_valid(tex_rd_valid), .tex_rd_ready(1'b0), .tex_rd_addr(tex_rd_addr),
+    .tex_rd_texels(96'd0));
   rastersim_memory_model #(
     .WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .ADDR_BITS(ADDR_BITS), .LATENCY(MEMORY_LATENCY),
     .STALL_PERCENT(MEMORY_STALL_PERCENT), .STALL_SEED(MEMORY_STALL_SEED)
@@ -131,6 +141,7 @@ module rastersim_vectors_tb;
   ) dut (
     `RS_PIPELINE_PORTS,
     .cfg_depth_clear(CFG_DEPTH_CLEAR),
+    .texture_load_en(1'b0), .texture_load_x(10'd0), .texture_load_y(10'd0), .texture_load_rgb(24'd0), .texture_refuse(1'b0),
     .readback_addr(readback_addr), .readback_depth(readback_depth), .readback_rgb(readback_rgb));
 `endif
 

@@ -504,16 +504,25 @@ TEST(CliRender, FloorSceneDiffersWithoutPerspective) {
 }
 
 #ifdef RASTERSIM_HAVE_RTL
-// The RTL has no texture unit yet: the backends say so instead of drawing something else.
-TEST(CliRtl, RtlBackendRefusesTheTextureUnit) {
+// The RTL has the texture unit (configuration small_texture): the textured floor scene renders
+// through the RTL and the co-simulation byte for byte as through the model; the vector packages,
+// which carry no texture memory image yet, refuse it.
+TEST(CliRtl, TexturedSceneThroughTheRtlEqualsTheModel) {
   ScratchDir dir;
-  for (const std::string backend : {"rtl", "cosim"}) {
-    const RunResult r = run_rastersim(dir, {"render", "--backend", backend, "--scene", "fan", "--width", "64",
-                                            "--height", "48", "--texture-unit", "true", "-o", "x.png"});
-    EXPECT_EQ(r.exit_code, 2) << backend;
-    EXPECT_TRUE(contains(r.err, "the RTL has no texture unit yet")) << r.err;
+  for (const std::string backend : {"model", "rtl", "cosim"}) {
+    const RunResult r = run_rastersim(dir, {"render", "--backend", backend, "--scene", "floor", "--width", "64",
+                                            "--height", "48", "--texture-unit", "true", "-o", backend + ".png",
+                                            "--fragments", backend + ".csv"});
+    ASSERT_EQ(r.exit_code, 0) << backend << ": " << r.err;
   }
-  EXPECT_TRUE(dir.listing().empty());
+  EXPECT_EQ(read_text(dir.path("rtl.png")), read_text(dir.path("model.png")));
+  EXPECT_EQ(read_text(dir.path("rtl.csv")), read_text(dir.path("model.csv")));
+  EXPECT_EQ(read_text(dir.path("cosim.csv")), read_text(dir.path("model.csv")));
+  const RunResult v = run_rastersim(dir, {"vectors", "--suite", "depth", "--width", "16", "--height", "12",
+                                          "--texture-unit", "true", "--out", "package"});
+  EXPECT_EQ(v.exit_code, 2);
+  EXPECT_TRUE(contains(v.err, "no texture memory image")) << v.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path("package")));
 }
 #endif
 

@@ -454,11 +454,11 @@ TEST_F(IcarusPackage, MismatchesArePrintedEarliestFirst) {
 TEST_F(IcarusPackage, AnExtraSetupStageFailsCycleExactAndPassesFunctional) {
   const std::string vvp = build_variant("extra_stage", [](std::string core) {
     const std::string declared = "  wire setup_valid;\n  wire [RECORD_BITS-1:0] setup_record;\n";
-    const std::string outputs = "    .out_valid(setup_valid),\n    .out_record(setup_record));\n";
+    const std::string outputs = "    .out_valid(setup_valid),\n    .out_record(setup_record), .out_texture(setup_texture));\n";
     const size_t d = core.find(declared), o = core.find(outputs);
     if (d == std::string::npos || o == std::string::npos) return core;
     core.replace(o, outputs.size(),
-                 "    .out_valid(setup_valid_stage),\n    .out_record(setup_record_stage));\n"
+                 "    .out_valid(setup_valid_stage),\n    .out_record(setup_record_stage), .out_texture(setup_texture));\n"
                  "  reg setup_valid_late;\n  reg [RECORD_BITS-1:0] setup_record_late;\n"
                  "  always @(posedge clk) begin\n    setup_valid_late <= !rst && setup_valid_stage;\n"
                  "    setup_record_late <= setup_record_stage;\n  end\n"
@@ -484,29 +484,18 @@ TEST_F(IcarusPackage, AnExtraSetupStageFailsCycleExactAndPassesFunctional) {
 // mismatch, naming the triangle and the pixel; what follows from it is counted apart.
 TEST_F(IcarusPackage, ADroppedFragmentIsOneFunctionalMismatchNamingTriangleAndPixel) {
   const std::string vvp = build_variant("dropped_fragment", [](std::string core) {
-    const std::string walker_port = "    .frag_valid(frag_valid), .frag_ready(frag_ready), .frag_x(frag_x), .frag_y(frag_y),\n"
-                                    "    .busy(trace_walker_busy)";
-    const std::string zbuffer_port = "    .frag_valid(frag_valid), .frag_ready(frag_ready), .frag_x(frag_x), .frag_y(frag_y),\n"
-                                     "    .frag_z(frag_z)";
-    const std::string trace = "  assign trace_frag_valid = frag_valid;\n";
-    const size_t w = core.find(walker_port);
+    // The walker's fragments reach the z-buffer through two assigns (a core without the texture unit).
+    const std::string wiring = "      assign frag_valid = walker_frag_valid;\n      assign walker_frag_ready = frag_ready;\n";
+    const size_t w = core.find(wiring);
     if (w == std::string::npos) return core;
-    core.replace(w, walker_port.size(),
-                 "    .frag_valid(frag_valid), .frag_ready(frag_ready_walker), .frag_x(frag_x), .frag_y(frag_y),\n"
-                 "    .busy(trace_walker_busy)");
-    const size_t z = core.find(zbuffer_port);
-    const size_t t = core.find(trace);
-    if (z == std::string::npos || t == std::string::npos) return std::string();
-    core.replace(z, zbuffer_port.size(),
-                 "    .frag_valid(frag_kept), .frag_ready(frag_ready), .frag_x(frag_x), .frag_y(frag_y),\n"
-                 "    .frag_z(frag_z)");
-    core.replace(core.find(trace), trace.size(), "  assign trace_frag_valid = frag_kept;\n");
+    core.replace(w, wiring.size(),
+                 "      assign frag_valid = walker_frag_valid && !dropped;\n"
+                 "      assign walker_frag_ready = frag_ready || dropped;\n");
     const std::string anchor = "  scanline_walker #(";
     core.insert(core.find(anchor),
-                "  reg [31:0] offered_q;\n  wire dropped = frag_valid && offered_q == 32'd40;\n"
-                "  wire frag_kept = frag_valid && !dropped;\n  wire frag_ready_walker = frag_ready || dropped;\n"
+                "  reg [31:0] offered_q;\n  wire dropped = walker_frag_valid && offered_q == 32'd40;\n"
                 "  always @(posedge clk)\n    if (rst) offered_q <= 32'd0;\n"
-                "    else if (frag_valid && frag_ready_walker) offered_q <= offered_q + 32'd1;\n");
+                "    else if (walker_frag_valid && walker_frag_ready) offered_q <= offered_q + 32'd1;\n");
     return core;
   });
   // The 41st expected fragment, read from the package's words (not from the testbench).
