@@ -30,12 +30,14 @@ namespace {
 bool caught(const CosimCase& c, uint64_t seed, const std::string& replay_dir, const std::string& suite) {
   RtlOptions options;
   options.seed = seed;
-  const RtlResult model = run_model(c.profile, c.triangles);
+  options.texture = c.texture;
+  const RtlResult model = run_model(c.profile, c.triangles, c.texture);
   const RtlResult rtl = detail::run_verilated<Vmutant>(c.profile, c.triangles, options);
   const Divergence d = compare(model, rtl);
   if (!d.found) return false;
   const std::string prefix = replay_dir + "/mutant_replay";
-  write_replay(prefix, c.profile, c.triangles, seed);
+  // A .tri replay carries no texture: a textured frame is not replayed alone.
+  if (!c.profile.texture_unit) write_replay(prefix, c.profile, c.triangles, seed);
   // The frame again, with a waveform window around the divergence (as `cosim` writes it).
   RtlOptions wave = options;
   std::tie(wave.wave_from, wave.wave_to) = divergence_window(d, model);
@@ -45,7 +47,8 @@ bool caught(const CosimCase& c, uint64_t seed, const std::string& replay_dir, co
   detail::run_verilated<Vmutant>(c.profile, c.triangles, wave);
   std::printf("caught by %s in %s (traversal %s, memory_latency %d):\n%s\n", suite.c_str(), c.name.c_str(),
               to_string(c.profile.traversal), c.profile.memory_latency, d.sentence.c_str());
-  std::printf("replay: mutant_check --replay %s %llu\n", prefix.c_str(), (unsigned long long)seed);
+  if (c.profile.texture_unit) std::printf("replay: none (a textured frame)\n");
+  else std::printf("replay: mutant_check --replay %s %llu\n", prefix.c_str(), (unsigned long long)seed);
   std::printf("waveform: %s.vcd frame cycles %lld..%lld, divergence cycle %lld\n", prefix.c_str(),
               (long long)wave.wave_from, (long long)wave.wave_to, (long long)d.cycle);
   return true;
@@ -98,6 +101,7 @@ int main(int argc, char** argv) {
   p.subpixel_bits = int(Core::P_SUBPIXEL_BITS);
   p.z_bits = int(Core::P_Z_BITS);
   p.setup_interval = int(Core::P_SETUP_INTERVAL);
+  p.texture_unit = int(Core::P_TEXTURE) != 0;
 
   // As `cosim`: frame k's power-on seed is seed + k, seed 1.
   const CosimPlan plan(p, {}, max_latency, 1, 16, true);
