@@ -119,7 +119,10 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
     if (windowed) dumping = cycle >= std::max<int64_t>(0, options.wave_from) && (options.wave_to < 0 || cycle <= options.wave_to);
     const size_t next = observer.next_triangle();
     top->cmd_valid = next < tris.size();
-    if (next < tris.size()) drive_command(*top, tris[next], coord_bits), drive_texture_command(*top, tris[next]);
+    if (next < tris.size()) {
+      drive_command(*top, tris[next], coord_bits);
+      if (textures) drive_texture_command(*top, tris[next]);  // a bit loop: only where the core uses it
+    }
     // The texture memory's back-pressure: the profile's stall pattern (docs/cycle-model.md).
     if (textures) top->texture_refuse = memory_stalls(uint64_t(p.texture_stall_seed), p.texture_stall_percent, cycle);
     half_cycle(0);
