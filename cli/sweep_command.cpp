@@ -241,16 +241,23 @@ void pixel_weights(const SnappedTriangle& t, int subpixel_bits, int x, int y, lo
   for (int k = 0; k < 3; ++k) weight[k] = static_cast<long double>(w[k]) / area;
 }
 
+// A depth word as a fraction of the plane's range: its value (the smallest plane output with that
+// word) over 2^Np - 1; the all-ones word is 1.
+long double depth_word_fraction(const Profile& p, uint32_t word) {
+  if (word == p.depth_max()) return 1;
+  return static_cast<long double>(DepthWord(p).decode(word)) / static_cast<long double>((uint64_t(1) << p.depth_plane_bits()) - 1);
+}
+
 DepthErrorMeter::DepthErrorMeter(const std::vector<ScreenTriangle>& screen, const std::vector<SnappedTriangle>& snapped,
                                  const Profile& profile)
     : screen_(screen), snapped_(snapped), profile_(profile),
-      ideal_depth_(size_t(profile.width) * profile.height,
-                   static_cast<long double>(profile.depth_clear_value()) / profile.depth_max()) {}
+      ideal_depth_(size_t(profile.width) * profile.height, depth_word_fraction(profile, profile.depth_clear_value())),
+      word_(profile) {}
 
 void DepthErrorMeter::on_fragment(const Fragment& f) {
   if (f.tri < 0 || size_t(f.tri) >= snapped_.size()) return;
   const SnappedTriangle& t = snapped_[size_t(f.tri)];
-  max_ = std::max(max_, depth_error_lsb(t, profile_.subpixel_bits, f.x, f.y, f.z));
+  max_ = std::max(max_, depth_error_lsb(t, profile_.subpixel_bits, f.x, f.y, uint32_t(word_.decode(f.z))));
   long double w[3];
   pixel_weights(t, profile_.subpixel_bits, f.x, f.y, w);
   const ScreenTriangle& s = screen_[size_t(f.tri)];

@@ -40,8 +40,10 @@ struct SweepAxis {
 SweepAxis parse_sweep_axis(const std::string& text);
 
 // Precision figures of a frame from its fragments (in emission order):
-//  - max_depth_error(): the largest |z - exact| in depth LSBs, exact being the plane through the
-//    snapped triangle's three vertex depths at the pixel centre (the rounding of the Z adders);
+//  - max_depth_error(): the largest |z - exact| in depth plane LSBs, exact being the plane through
+//    the snapped triangle's three vertex depths at the pixel centre (the rounding of the Z adders;
+//    with a floating-point depth word z is the word's value, so its truncation counts too, and a
+//    depth bias counts in full);
 //  - wrong_depth_tests(): fragments whose depth-test result differs from an ideal z-buffer's, one
 //    that holds the unquantized depth (the screen triangle's z in [0, 1] interpolated in long
 //    double at the same pixel centre) and applies the same depth function and write rule: the
@@ -59,6 +61,7 @@ class DepthErrorMeter : public FragmentSink {
   const std::vector<SnappedTriangle>& snapped_;
   Profile profile_;
   std::vector<long double> ideal_depth_;
+  DepthWord word_;
   double max_ = 0;
   int64_t wrong_ = 0;
 };

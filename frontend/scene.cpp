@@ -32,6 +32,10 @@ std::vector<ScreenTriangle> render_scene(const Scene& scene, const Camera& camer
   const Mat4 view_projection = camera.projection() * camera.view();
   const Vec3 view_direction = normalize(camera.target - camera.eye);
   const Clipper clipper(profile);
+  const bool inverse_w = profile.depth_buffer == DepthBuffer::InverseW;
+  if (inverse_w && camera.ortho)
+    throw InputError("depth_buffer inverse_w needs a perspective camera: with an orthographic one every w is 1 "
+                     "(docs/arithmetic.md section 6)");
   std::vector<ScreenTriangle> out;
   std::vector<CornerSources>* corners = trace ? &trace->corners : nullptr;
   for (size_t index = 0; index < scene.objects.size(); ++index) {
@@ -77,6 +81,10 @@ std::vector<ScreenTriangle> render_scene(const Scene& scene, const Camera& camer
       }
       for (size_t t = before; t < out.size(); ++t) {
         out[t].textured = mesh.textured();
+        // The 1/w buffer's depth: near / w, 1 at the near plane (w within [near, far] after clipping,
+        // up to rounding).
+        if (inverse_w)
+          for (ScreenVertex& v : out[t].v) v.z = std::clamp(camera.near / v.w, 0.0, 1.0);
         // Clipping keeps every w within [near, far]; a textured triangle may still span a wider w
         // ratio than the texture divide's bound allows (docs/arithmetic.md section 5).
         if (out[t].textured && profile.texture_unit) {

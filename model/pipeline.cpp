@@ -11,11 +11,12 @@ Pipeline::Pipeline(const Profile& profile)
       setup_(profile),
       timing_(rastersim::setup_timing(profile)),
       walker_(profile, setup_.widths()),
-      adders_(setup_.widths(), profile.z_bits, profile.shading == Shading::Gouraud),
+      adders_(setup_.widths(), profile),
       zbuffer_(profile),
       texture_unit_(profile),
       credit_release_(size_t(profile.setup_fifo_depth), -1) {
   avx512_walk_ = FastWalk::avx512_applies(*this);
+  fast_walk_applies_ = !profile.texture_unit && adders_.plain_depth_output();
 }
 
 void Pipeline::reset() {
@@ -88,10 +89,11 @@ void Pipeline::submit(const SnappedTriangle& tri) {
     walker_idle_load_ = record.walker_load > walker_free_;
     credit_release_[size_t(drawn_++ % int64_t(credit_release_.size()))] = record.walker_load;
     zbuffer_.begin_triangle(record.walker_load);  // the walker presents fragments after loading
-    // The fast path's runs go straight to the z-buffer: with a texture unit, one at a time.
-    record.walker_end = sink_                    ? walk_stepwise<true>(s, record.walker_load, record)
-                        : profile_.texture_unit ? walk_stepwise<false>(s, record.walker_load, record)
-                                                : FastWalk::walk(*this, s, record.walker_load, record);
+    // The fast path's runs go straight to the z-buffer with the plain depth output: with a texture
+    // unit, a floating-point depth word or a depth bias, one at a time.
+    record.walker_end = sink_                   ? walk_stepwise<true>(s, record.walker_load, record)
+                        : !fast_walk_applies_ ? walk_stepwise<false>(s, record.walker_load, record)
+                                              : FastWalk::walk(*this, s, record.walker_load, record);
     walker_free_ = record.walker_end;
     if (record.fragments > 0) record.last_write = zbuffer_.last_busy_cycle();
     last_busy_ = std::max({last_busy_, record.setup_done, record.walker_end, zbuffer_.last_busy_cycle(),

@@ -98,6 +98,7 @@ class Pipeline {
   template <bool Trace>
   int64_t walk_stepwise(const SetupResult& s, int64_t load_cycle, TriangleRecord& record);
   bool avx512_walk_ = false;  // the fast path's choice, made once (FastWalk::avx512_applies)
+  bool fast_walk_applies_ = true;  // no texture unit and the plain depth output (ZAdder)
 
   // The walker's fragment output, wired to the z-buffer's input (through the texture unit when there
   // is one): the cycle the walker's candidate is taken, the fragment's depth test and write; with

@@ -29,6 +29,14 @@ const char* const kCullNames[] = {"none", "back", "front"};
 const char* const kFrontFaceNames[] = {"ccw", "cw"};
 const char* const kTraversalNames[] = {"bbox", "span"};
 const char* const kShadingNames[] = {"flat", "gouraud"};
+const char* const kDepthBufferNames[] = {"z", "inverse_w"};
+
+// A slope factor held in sixteenths, as a decimal (exact: 1/16 has a finite decimal).
+std::string slope_text(int sixteenths) {
+  std::ostringstream out;
+  out << sixteenths / 16.0;
+  return out.str();
+}
 
 template <size_t N>
 std::string choices(const char* const (&names)[N]) {
@@ -62,16 +70,20 @@ const char* to_string(CullMode v) { return kCullNames[int(v)]; }
 const char* to_string(FrontFace v) { return kFrontFaceNames[int(v)]; }
 const char* to_string(Traversal v) { return kTraversalNames[int(v)]; }
 const char* to_string(Shading v) { return kShadingNames[int(v)]; }
+const char* to_string(DepthBuffer v) { return kDepthBufferNames[int(v)]; }
 std::optional<DepthFunc> parse_depth_func(const std::string& s) { return parse_enum<DepthFunc>(s, kDepthFuncNames); }
 std::optional<CullMode> parse_cull(const std::string& s) { return parse_enum<CullMode>(s, kCullNames); }
 std::optional<FrontFace> parse_front_face(const std::string& s) { return parse_enum<FrontFace>(s, kFrontFaceNames); }
 std::optional<Traversal> parse_traversal(const std::string& s) { return parse_enum<Traversal>(s, kTraversalNames); }
 std::optional<Shading> parse_shading(const std::string& s) { return parse_enum<Shading>(s, kShadingNames); }
+std::optional<DepthBuffer> parse_depth_buffer(const std::string& s) {
+  return parse_enum<DepthBuffer>(s, kDepthBufferNames);
+}
 
 const std::vector<std::string>& profile_keys() {
   static const std::vector<std::string> keys = {
       "width", "height", "subpixel_bits", "z_bits", "z_guard_bits", "depth_func", "depth_write",
-      "depth_clear", "cull", "front_face", "traversal", "shading", "memory_latency",
+      "depth_clear", "depth_buffer", "depth_exponent_bits", "depth_bias_constant", "depth_bias_slope", "cull", "front_face", "traversal", "shading", "memory_latency",
       "memory_stall_percent", "memory_stall_seed", "setup_fifo_depth", "setup_interval", "texture_unit",
       "perspective", "texture_latency", "texture_stall_percent", "texture_stall_seed"};
   return keys;
@@ -101,6 +113,21 @@ std::vector<std::string> validate(const Profile& p) {
     errors.push_back("depth_clear is " + std::to_string(p.depth_clear) + "; it must be in 0.." +
                      std::to_string(p.depth_max()) + " for z_bits " + std::to_string(p.z_bits));
   if (p.depth_clear < -1) errors.push_back("depth_clear must not be negative");
+  range("depth_exponent_bits", p.depth_exponent_bits, 0, 4);
+  if (p.z_bits >= 16 && p.z_bits <= 32 && p.depth_exponent_bits >= 1 && p.depth_exponent_bits <= 4 &&
+      p.depth_plane_bits() > 32)
+    errors.push_back("depth_exponent_bits " + std::to_string(p.depth_exponent_bits) + " with z_bits " +
+                     std::to_string(p.z_bits) + " makes a depth plane of " + std::to_string(p.depth_plane_bits()) +
+                     " bits; it must be at most 32");
+  else if (p.z_bits >= 16 && p.z_bits <= 32 && p.depth_exponent_bits >= 0 && p.depth_exponent_bits <= 4) {
+    const int64_t limit = (int64_t(1) << p.depth_plane_bits()) - 1;
+    range("depth_bias_constant", p.depth_bias_constant, -limit, limit);
+  }
+  if (p.depth_bias_slope < -128 || p.depth_bias_slope > 127)
+    errors.push_back("depth_bias_slope is " + slope_text(p.depth_bias_slope) + "; it must be in -8..7.9375");
+  if (p.depth_buffer == DepthBuffer::InverseW && (p.depth_func == DepthFunc::Less || p.depth_func == DepthFunc::LEqual))
+    errors.push_back(std::string("depth_func is ") + to_string(p.depth_func) +
+                     "; a 1/w buffer (depth_buffer inverse_w) keeps the nearer fragment with greater or gequal");
   return errors;
 }
 
@@ -144,6 +171,24 @@ std::string set_profile_key(Profile& p, const std::string& key, const std::strin
   };
   if (key == "depth_write") return boolean(p.depth_write);
   if (key == "texture_unit") return boolean(p.texture_unit);
+  if (key == "depth_exponent_bits") return integer(p.depth_exponent_bits);
+  if (key == "depth_bias_constant") {
+    if (!parse_int(value, n)) return key + " takes an integer, not '" + value + "'";
+    p.depth_bias_constant = n;
+    return "";
+  }
+  if (key == "depth_bias_slope") {
+    // A decimal number: exactly a multiple of 1/16 (s4.4).
+    char* end = nullptr;
+    const double slope = value.empty() ? 0 : std::strtod(value.c_str(), &end);
+    if (value.empty() || *end != '\0' || !std::isfinite(slope))
+      return key + " takes a number, not '" + value + "'";
+    const double sixteenths = slope * 16;
+    if (sixteenths < -1e6 || sixteenths > 1e6 || sixteenths != std::floor(sixteenths))
+      return key + " is " + value + "; it must be a multiple of 1/16 (0.0625) in -8..7.9375";
+    p.depth_bias_slope = int(sixteenths);
+    return "";
+  }
   if (key == "perspective") return boolean(p.perspective);
   if (key == "texture_latency") return integer(p.texture_latency);
   if (key == "texture_stall_percent") return integer(p.texture_stall_percent);
@@ -153,6 +198,8 @@ std::string set_profile_key(Profile& p, const std::string& key, const std::strin
   if (key == "front_face") return enumeration(parse_front_face(value), p.front_face, choices(kFrontFaceNames));
   if (key == "traversal") return enumeration(parse_traversal(value), p.traversal, choices(kTraversalNames));
   if (key == "shading") return enumeration(parse_shading(value), p.shading, choices(kShadingNames));
+  if (key == "depth_buffer")
+    return enumeration(parse_depth_buffer(value), p.depth_buffer, choices(kDepthBufferNames));
   return "unknown profile key '" + key + "'";
 }
 
@@ -170,13 +217,15 @@ void load_profile_text(Profile& profile, const std::string& text, const std::str
     static const std::set<std::string> integers = {"width", "height", "subpixel_bits", "z_bits", "memory_latency",
                                                    "memory_stall_percent", "memory_stall_seed", "setup_fifo_depth",
                                                    "setup_interval", "texture_latency", "texture_stall_percent",
-                                                   "texture_stall_seed"};
+                                                   "texture_stall_seed", "depth_exponent_bits",
+                                                   "depth_bias_constant"};
     const bool is_integer = v.is_number_integer() || v.is_number_unsigned();
     if (integers.count(key)) return is_integer ? "" : key + " must be a JSON integer, not " + v.dump();
     if (key == "z_guard_bits" || key == "depth_clear") {
       const char* word = key == "z_guard_bits" ? "\"auto\"" : "\"max\"";
       return is_integer || v.is_string() ? "" : key + " must be a JSON integer or " + word + ", not " + v.dump();
     }
+    if (key == "depth_bias_slope") return v.is_number() ? "" : key + " must be a JSON number, not " + v.dump();
     if (key == "depth_write" || key == "texture_unit" || key == "perspective")
       return v.is_boolean() ? "" : key + " must be true or false, not " + v.dump();
     return v.is_string() ? "" : key + " must be a JSON string, not " + v.dump();
@@ -192,6 +241,7 @@ void load_profile_text(Profile& profile, const std::string& text, const std::str
     else if (it->is_boolean()) value = it->get<bool>() ? "true" : "false";
     else if (it->is_number_unsigned()) value = std::to_string(it->get<uint64_t>());  // above INT64_MAX too
     else if (it->is_number_integer()) value = std::to_string(it->get<int64_t>());
+    else if (it->is_number_float()) value = it->dump();
     else throw InputError(file_name, line, "profile key '" + it.key() + "' must be a string, integer or boolean");
     std::string error = set_profile_key(profile, it.key(), value);
     if (error.empty() && (it->is_string() || it->is_boolean() || it->is_number()) &&
@@ -217,6 +267,10 @@ std::string profile_to_json(const Profile& p, int indent) {
   j["depth_func"] = to_string(p.depth_func);
   j["depth_write"] = p.depth_write;
   j["depth_clear"] = p.depth_clear_value();
+  j["depth_buffer"] = to_string(p.depth_buffer);
+  j["depth_exponent_bits"] = p.depth_exponent_bits;
+  j["depth_bias_constant"] = p.depth_bias_constant;
+  j["depth_bias_slope"] = p.depth_bias_slope / 16.0;  // exact: a multiple of 1/16
   j["cull"] = to_string(p.cull);
   j["front_face"] = to_string(p.front_face);
   j["traversal"] = to_string(p.traversal);

@@ -15,6 +15,9 @@ enum class FrontFace { CCW, CW };
 // span: per row the edges' exact crossings bound the span; empty pixels cost no cycles.
 enum class Traversal { BBox, Span };
 enum class Shading { Flat, Gouraud };
+// What the 3D front end puts in the depth plane: the projected z, or near / w (docs/arithmetic.md
+// section 6).
+enum class DepthBuffer { Z, InverseW };
 
 constexpr int kMaxSetupFifoDepth = 16;  // the RTL's MAX_SETUP_FIFO_DEPTH default
 constexpr int kMinSetupInterval = 2, kMaxSetupInterval = 64;  // the pipelined setup unit's range
@@ -27,7 +30,13 @@ struct Profile {
   int z_guard_bits = 0;       // F, fraction bits of the plane registers; 0 = derive (proven minimum)
   DepthFunc depth_func = DepthFunc::Less;
   bool depth_write = true;
-  int64_t depth_clear = -1;   // -1 = 2^N - 1
+  int64_t depth_clear = -1;   // -1 = 2^N - 1, or 0 with depth_buffer inverse_w
+  DepthBuffer depth_buffer = DepthBuffer::Z;
+  // Ne: 0 = the fixed-point depth word; 1..4 = an unsigned floating-point word of z_bits bits with
+  // Ne exponent bits, the depth plane then depth_plane_bits() wide (docs/arithmetic.md section 6).
+  int depth_exponent_bits = 0;
+  int64_t depth_bias_constant = 0;  // c, depth plane LSBs, |c| < 2^depth_plane_bits()
+  int depth_bias_slope = 0;         // f = 16 x the slope factor: s4.4, -128..127
   CullMode cull = CullMode::None;
   FrontFace front_face = FrontFace::CCW;
   Traversal traversal = Traversal::Span;
@@ -54,7 +63,14 @@ struct Profile {
   int texture_stall_seed = 1;     // 0..2^31-1
 
   uint32_t depth_max() const { return uint32_t((uint64_t(1) << z_bits) - 1); }
-  uint32_t depth_clear_value() const { return depth_clear < 0 ? depth_max() : uint32_t(depth_clear); }
+  uint32_t depth_clear_value() const {
+    return depth_clear >= 0 ? uint32_t(depth_clear) : depth_buffer == DepthBuffer::InverseW ? 0 : depth_max();
+  }
+  // Np: the depth plane's bits (z_bits with the fixed-point word).
+  int depth_plane_bits() const {
+    return depth_exponent_bits == 0 ? z_bits : z_bits - depth_exponent_bits + (1 << depth_exponent_bits) - 1;
+  }
+  bool depth_biased() const { return depth_bias_constant != 0 || depth_bias_slope != 0; }
 };
 
 // Why the vector packages and the SystemC system refuse a profile with the texture unit: the model
@@ -67,6 +83,20 @@ inline constexpr const char* kNoTextureUnitInSystemc =
     "texture_unit: the SystemC system has no texture memory model yet (the model and --backend rtl have the "
     "texture unit)";
 
+// Why the RTL (and so the SystemC system and the vector packages) refuses a profile's depth output
+// stage, or "": the model has the floating-point depth word and the depth bias (docs/arithmetic.md
+// section 6), the RTL's Z adder not yet (docs/design/texturing.md, step 5). Ne = 1 is the
+// fixed-point word bit for bit, which the RTL has.
+inline std::string depth_output_not_in_rtl(const Profile& p) {
+  std::string what;
+  if (p.depth_exponent_bits >= 2) what = "depth_exponent_bits " + std::to_string(p.depth_exponent_bits);
+  if (p.depth_bias_constant != 0 || p.depth_bias_slope != 0)
+    what += (what.empty() ? "" : " and ") + std::string("a depth bias");
+  if (what.empty()) return "";
+  return what + ": the RTL's Z adder has neither the floating-point depth word nor the depth bias yet "
+                "(the model has both, docs/arithmetic.md section 6)";
+}
+
 // Every error found, each a sentence naming the key; empty when the profile is valid.
 std::vector<std::string> validate(const Profile& profile);
 
@@ -76,11 +106,13 @@ const char* to_string(CullMode v);
 const char* to_string(FrontFace v);
 const char* to_string(Traversal v);
 const char* to_string(Shading v);
+const char* to_string(DepthBuffer v);
 std::optional<DepthFunc> parse_depth_func(const std::string& s);
 std::optional<CullMode> parse_cull(const std::string& s);
 std::optional<FrontFace> parse_front_face(const std::string& s);
 std::optional<Traversal> parse_traversal(const std::string& s);
 std::optional<Shading> parse_shading(const std::string& s);
+std::optional<DepthBuffer> parse_depth_buffer(const std::string& s);
 
 // The keys of the profile, in the order they are documented and written.
 const std::vector<std::string>& profile_keys();

@@ -121,7 +121,7 @@ SnappedTriangle snap(const ScreenTriangle& tri, const Profile& p) {
   for (int k = 0; k < 3; ++k) {
     out.v[k].x = int32_t(snap_coordinate(tri.v[k].x, p.subpixel_bits));
     out.v[k].y = int32_t(snap_coordinate(tri.v[k].y, p.subpixel_bits));
-    out.v[k].z = quantize_depth(tri.v[k].z, p.z_bits);
+    out.v[k].z = quantize_depth(tri.v[k].z, p.depth_plane_bits());
     out.v[k].color = tri.v[k].color;
   }
   out.textured = tri.textured && p.texture_unit;

@@ -83,7 +83,7 @@ constexpr Widths derive_widths(int width, int height, int subpixel_bits, int z_b
 }
 
 inline Widths derive_widths(const Profile& p) {
-  return derive_widths(p.width, p.height, p.subpixel_bits, p.z_bits, p.z_guard_bits);
+  return derive_widths(p.width, p.height, p.subpixel_bits, p.depth_plane_bits(), p.z_guard_bits);
 }
 
 // When the setup unit handles a triangle (docs/cycle-model.md). `setup_interval` 0 is the serial
@@ -186,7 +186,7 @@ constexpr SetupTiming setup_timing(const Widths& w, int subpixel_bits, int z_bit
 }
 
 inline SetupTiming setup_timing(const Profile& p) {
-  return setup_timing(derive_widths(p), p.subpixel_bits, p.z_bits, p.setup_interval, p.texture_unit);
+  return setup_timing(derive_widths(p), p.subpixel_bits, p.depth_plane_bits(), p.setup_interval, p.texture_unit);
 }
 
 // The docs' worked example and the default profile (docs/cycle-model.md).

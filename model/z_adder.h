@@ -6,6 +6,7 @@
 // (docs/arithmetic.md).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "texture_divide.h"
@@ -61,17 +62,83 @@ class PlaneRegister {
   PlaneFormat format_;
 };
 
+// The depth word (docs/arithmetic.md section 6): the plane output X (0 <= X < 2^Np) as it is stored,
+// X itself for the fixed-point word (Ne = 0), else an unsigned float of z_bits bits, Ne exponent bits
+// above Nm = z_bits - Ne mantissa bits, truncated.
+class DepthWord {
+ public:
+  DepthWord(int z_bits, int exponent_bits) : exponent_bits_(exponent_bits), mantissa_bits_(z_bits - exponent_bits) {}
+  explicit DepthWord(const Profile& p) : DepthWord(p.z_bits, p.depth_exponent_bits) {}
+
+  uint32_t encode(uint64_t x) const {
+    if (exponent_bits_ == 0 || x < (uint64_t(1) << mantissa_bits_)) return uint32_t(x);
+    const int e = 63 - __builtin_clzll(x) - mantissa_bits_ + 1;
+    return uint32_t((uint64_t(e) << mantissa_bits_) + (x >> (e - 1)) - (uint64_t(1) << mantissa_bits_));
+  }
+  // The smallest X with this word (every X of the word lies below decode + 2^(e-1)).
+  uint64_t decode(uint32_t word) const {
+    if (exponent_bits_ == 0) return word;
+    const int e = int(word >> mantissa_bits_);
+    const uint64_t mantissa = word & ((uint64_t(1) << mantissa_bits_) - 1);
+    return e == 0 ? mantissa : ((uint64_t(1) << mantissa_bits_) + mantissa) << (e - 1);
+  }
+  bool fixed_point() const { return exponent_bits_ == 0; }
+
+ private:
+  int exponent_bits_, mantissa_bits_;
+};
+
+// The depth output stage: a triangle's depth bias B from its depth plane's steps, and a depth
+// register value V to the depth word: X = clamp((V + B + 2^(F-1)) >> F, 0, 2^Np - 1), encoded
+// (docs/arithmetic.md section 6). Logic between the register and the fragment, no cycles.
+class DepthOutput {
+ public:
+  DepthOutput(const PlaneFormat& plane, const Profile& p)
+      : plane_(plane), word_(p), constant_(p.depth_bias_constant), slope_factor_(p.depth_bias_slope) {}
+
+  // Without a bias and with the fixed-point word the output is the plane register's own.
+  bool plain() const { return word_.fixed_point() && constant_ == 0 && slope_factor_ == 0; }
+
+  // B = clamp(c 2^F + floor(f max(|step_x|, |step_y|) / 16), -2^(Np+F), 2^(Np+F)), the steps read as
+  // the register holds them.
+  int64_t bias(uint64_t step_x, uint64_t step_y) const {
+    if (constant_ == 0 && slope_factor_ == 0) return 0;
+    const int64_t sx = plane_.wrap(step_x), sy = plane_.wrap(step_y);
+    const __int128 slope = std::max(sx < 0 ? -__int128(sx) : __int128(sx), sy < 0 ? -__int128(sy) : __int128(sy));
+    const __int128 limit = __int128(1) << (plane_.reg_bits() - 1);  // 2^(Np+F)
+    const __int128 b = __int128(constant_) * (__int128(1) << plane_.guard_bits()) + ((slope_factor_ * slope) >> 4);
+    return int64_t(std::clamp(b, -limit, limit));
+  }
+  uint32_t word(uint64_t value, int64_t bias) const {
+    if (bias == 0) return word_.encode(uint64_t(plane_.output(value)));
+    const __int128 sum = __int128(plane_.wrap(value)) + bias + (__int128(1) << (plane_.guard_bits() - 1));
+    const __int128 rounded = sum >> plane_.guard_bits();  // arithmetic: floor
+    return word_.encode(uint64_t(std::clamp(rounded, __int128(0), __int128(plane_.out_max()))));
+  }
+
+ private:
+  PlaneFormat plane_;
+  DepthWord word_;
+  int64_t constant_;
+  int slope_factor_;
+};
+
 // The unit: the depth register and three colour registers (used for Gouraud shading), and for a
 // textured triangle the S, T, Q registers (docs/arithmetic.md section 5), stepped together. The
 // model accumulates modulo 2^64 and reduces to the register width when a value is read:
 // 2^reg_bits divides 2^64, so this equals wrapping at every step, with fewer operations.
 class ZAdder {
  public:
-  ZAdder(const Widths& widths, int z_bits, bool gouraud)
-      : gouraud_(gouraud),
-        depth_format_{widths.z_reg_bits, widths.guard_bits, (int64_t(1) << z_bits) - 1},
+  ZAdder(const Widths& widths, const Profile& profile)
+      : gouraud_(profile.shading == Shading::Gouraud),
+        depth_format_{widths.z_reg_bits, widths.guard_bits, (int64_t(1) << profile.depth_plane_bits()) - 1},
         color_format_{widths.color_reg_bits, widths.guard_bits, 255},
-        texture_format_{widths.texture_reg_bits, widths.texture_guard_bits, 0} {}
+        texture_format_{widths.texture_reg_bits, widths.texture_guard_bits, 0},
+        depth_output_{depth_format_, profile} {}
+
+  // The depth output is the depth register's rounded value (no bias, the fixed-point word): what the
+  // fast path's run kernels compute (ZAdder::Run).
+  bool plain_depth_output() const { return depth_output_.plain(); }
 
   void load(const SetupResult& s) {
     const PlaneSetup* planes[kPlanes] = {&s.depth, &s.color[0], &s.color[1], &s.color[2]};
@@ -86,6 +153,7 @@ class ZAdder {
         along_step_[j][k] = used ? uint64_t(along.step) : 0;
       }
     }
+    depth_bias_ = depth_output_.bias(step_x_[0], step_y_[0]);
     flat_ = s.flat_color;
     textured_ = s.textured;
     if (textured_) texture_.load(s);
@@ -143,7 +211,7 @@ class ZAdder {
   Rgb color() const { return color_at(0); }
   // The outputs i pixels to the right (the values after i step_x() calls), for a loop over a run
   // of pixels that steps the registers once at its end.
-  uint32_t depth_at(int64_t i) const { return uint32_t(depth_format_.output(value_[0] + uint64_t(i) * step_x_[0])); }
+  uint32_t depth_at(int64_t i) const { return depth_output_.word(value_[0] + uint64_t(i) * step_x_[0], depth_bias_); }
   Rgb color_at(int64_t i) const {
     if (!gouraud_) return flat_;
     auto channel = [&](int k) { return uint8_t(color_format_.output(value_[k] + uint64_t(i) * step_x_[k])); };
@@ -185,6 +253,8 @@ class ZAdder {
   bool gouraud_;
   bool textured_ = false;
   PlaneFormat depth_format_, color_format_, texture_format_;
+  DepthOutput depth_output_;
+  int64_t depth_bias_ = 0;  // the loaded triangle's B (DepthOutput::bias)
   TextureRegisters texture_;
   Rgb flat_;
   uint64_t step_x_[kPlanes] = {}, step_y_[kPlanes] = {}, row_[kPlanes] = {}, value_[kPlanes] = {};

@@ -93,6 +93,7 @@ int built_max_memory_latency(const Profile& p) {
 std::string configuration_error(const Profile& p) {
   const std::vector<std::string> errors = validate(p);
   if (!errors.empty()) return "invalid profile: " + errors.front();
+  if (std::string depth = depth_output_not_in_rtl(p); !depth.empty()) return depth;
   // Whatever the geometry: rastersim_top's on-chip memories have no stall pattern.
   if (p.memory_stall_percent > 0)
     return "memory_stall_percent " + std::to_string(p.memory_stall_percent) +

@@ -81,7 +81,7 @@ TEST_P(AbsoluteForm, RegistersEqualTheAbsoluteFormBitForBit) {
   SCOPED_TRACE(::testing::Message() << test::describe(p) << " z_guard_bits " << p.z_guard_bits << " seed " << seed);
   const TriangleSetup setup(p);
   const ScanlineWalker walker(p, setup.widths());
-  ZAdder adders(setup.widths(), p.z_bits, true);
+  ZAdder adders(setup.widths(), p);  // make_profile: Gouraud
   RegisterSink sink;
   sink.widths = setup.widths();
   sink.z_bits = p.z_bits;

@@ -137,6 +137,23 @@ void check_timeline(const std::string& block) {
   }
 }
 
+// The floating-point depth word's example (arithmetic.md, "The depth word").
+TEST(Docs, DepthWordExampleMatchesTheModel) {
+  Profile p;
+  int checked = 0;
+  for (const auto& [key, value] : doc_block("arithmetic.md", "example-depth-word")) {
+    SCOPED_TRACE(key + " = " + value);
+    if (key == "z_bits") p.z_bits = std::stoi(value);
+    else if (key == "depth_exponent_bits") p.depth_exponent_bits = std::stoi(value);
+    else if (key == "plane_bits") EXPECT_EQ(std::to_string(p.depth_plane_bits()), value);
+    else {
+      EXPECT_EQ(std::to_string(DepthWord(p).encode(std::stoull(key))), value);
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 6);
+}
+
 // The two reasons an empty box is rejected (arithmetic.md, "Bounding box"), at 64 x 48, S = 4.
 TEST(Docs, ArithmeticEmptyBoxExample) {
   Profile p;

@@ -90,7 +90,7 @@ class TriangleGen {
     SnappedVertex v;
     v.x = int32_t(clamp_x(x));
     v.y = int32_t(clamp_y(y));
-    v.z = uint32_t(uniform(0, int64_t(p_.depth_max())));
+    v.z = uint32_t(uniform(0, (int64_t(1) << p_.depth_plane_bits()) - 1));
     v.color = Rgb{uint8_t(uniform(0, 255)), uint8_t(uniform(0, 255)), uint8_t(uniform(0, 255))};
     return v;
   }

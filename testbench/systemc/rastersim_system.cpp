@@ -55,6 +55,7 @@ std::string RastersimSystem::geometry_error(const Profile& p) {
 
 std::string RastersimSystem::configuration_error(const Profile& p) {
   if (p.texture_unit) return kNoTextureUnitInSystemc;
+  if (std::string depth = depth_output_not_in_rtl(p); !depth.empty()) return depth;
   if (std::string error = geometry_error(p); !error.empty()) return error;
   if (p.setup_fifo_depth > int(Core::P_MAX_SETUP_FIFO_DEPTH))
     return "setup_fifo_depth " + std::to_string(p.setup_fifo_depth) + " exceeds the SystemC core's maximum " +

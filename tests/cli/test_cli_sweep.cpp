@@ -176,6 +176,72 @@ TEST(CliSweep, BadAxesAreInputErrors) {
   }
 }
 
+// The 1/w buffer (docs/arithmetic.md section 6): two parallel squares facing the camera 60 units away,
+// 0.1 apart, the far one drawn first, near plane 0.01. A 16-bit z word cannot tell them apart
+// (0.02 LSB apart) and neither can a 16-bit fixed-point 1/w word (the same spacing); a 16-bit
+// floating-point 1/w word (4 exponent bits: 12 mantissa bits, relative spacing 2^-12, the squares
+// 2^-9 apart) orders every pixel. And on the default scene the floating-point 1/w buffer draws the
+// same image as the z buffer, with no wrong depth test.
+TEST(CliSweep, AFloatingPointInverseWBufferOrdersWhereA16BitZBufferFights) {
+  ScratchDir dir;
+  dir.write("parallel.json", R"({
+  "camera": {"eye": [0, 0, 60], "target": [0, 0, 0], "up": [0, 1, 0], "fov": 20, "near": 0.01, "far": 100},
+  "objects": [
+    {"surface": "plane", "params": {"width": 12, "depth": 12}, "rotate": [90, 0, 0], "color": [200, 80, 60]},
+    {"surface": "plane", "params": {"width": 12, "depth": 12}, "rotate": [90, 0, 0], "translate": [0, 0, 0.1],
+     "color": [60, 120, 200]}
+  ]
+})");
+  auto wrong_tests = [&](const std::vector<std::string>& depth) {
+    std::vector<std::string> args = {"sweep", "parallel.json", "--width", "160", "--height", "120", "--z-bits", "16",
+                                     "--vary", "near=0.01", "--out", "p", "--no-plots"};
+    args.insert(args.end(), depth.begin(), depth.end());
+    const RunResult r = run_rastersim(dir, args);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    const auto rows = read_csv(dir.path("p/sweep.csv"));
+    EXPECT_EQ(rows.size(), 1u);
+    fs::remove_all(dir.path("p"));
+    return rows.empty() ? -1 : std::stoll(rows[0].at("wrong_depth_tests"));
+  };
+  const int64_t z = wrong_tests({});
+  const int64_t fixed = wrong_tests({"--depth-buffer", "inverse_w", "--depth-func", "greater"});
+  const int64_t floating =
+      wrong_tests({"--depth-buffer", "inverse_w", "--depth-func", "greater", "--depth-exponent-bits", "4"});
+  EXPECT_GT(z, 4000);  // the near square covers 4,624 pixels: every one wrong
+  EXPECT_GT(fixed, 4000);
+  EXPECT_EQ(floating, 0);
+
+  for (const auto& depth : {std::vector<std::string>{"--out", "z.png"},
+                            std::vector<std::string>{"--depth-buffer", "inverse_w", "--depth-func", "greater",
+                                                     "--depth-exponent-bits", "3", "--out", "w.png"}}) {
+    std::vector<std::string> args = {"render", "--scene", "default", "--width", "160", "--height", "120",
+                                     "--stats", "s.json"};
+    args.insert(args.end(), depth.begin(), depth.end());
+    args[args.size() - 2] = "-o";
+    const RunResult r = run_rastersim(dir, args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  EXPECT_EQ(read_text(dir.path("z.png")), read_text(dir.path("w.png")));
+  const RunResult sweep = run_rastersim(dir, {"sweep", "--scene", "default", "--width", "160", "--height", "120",
+                                              "--vary", "depth_exponent_bits=3", "--depth-buffer", "inverse_w",
+                                              "--depth-func", "greater", "--out", "d", "--no-plots"});
+  ASSERT_EQ(sweep.exit_code, 0) << sweep.err;
+  EXPECT_EQ(read_csv(dir.path("d/sweep.csv")).at(0).at("wrong_depth_tests"), "0");
+}
+
+// A 1/w buffer needs a perspective camera and a depth function that keeps the larger value.
+TEST(CliSweep, AnInverseWBufferRefusesAnOrthographicCameraAndLess) {
+  ScratchDir dir;
+  const RunResult less = run_rastersim(dir, {"render", "--scene", "default", "--depth-buffer", "inverse_w", "-o", "a.png"});
+  EXPECT_EQ(less.exit_code, 2);
+  EXPECT_TRUE(contains(less.err, "greater or gequal")) << less.err;
+  const RunResult ortho = run_rastersim(dir, {"render", "--scene", "default", "--ortho", "--depth-buffer", "inverse_w",
+                                              "--depth-func", "greater", "-o", "a.png"});
+  EXPECT_EQ(ortho.exit_code, 2);
+  EXPECT_TRUE(contains(ortho.err, "perspective camera")) << ortho.err;
+  EXPECT_FALSE(fs::exists(dir.path("a.png")));
+}
+
 // The exact plane of the sweep's depth error is the reference's (tests/reference.h).
 TEST(CliSweep, DepthErrorAgainstTheReferencePlane) {
   SnappedTriangle t;

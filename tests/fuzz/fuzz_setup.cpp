@@ -199,7 +199,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     Profile walked = p;
     walked.traversal = traversal;
     const ScanlineWalker walker(walked, w);
-    ZAdder adders(w, p.z_bits, p.shading == Shading::Gouraud);
+    ZAdder adders(w, p);
     WalkSink sink{&check, p.shading == Shading::Gouraud, {}};
     WalkerCounters counters;
     walker.walk(s, adders, 0, true, sink, counters);

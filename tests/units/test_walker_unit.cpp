@@ -61,7 +61,7 @@ ModelWalk model_walk(const Profile& p, const std::vector<SetupResult>& records, 
                      const ReadyScript& script) {
   const Widths w = derive_widths(p);
   const ScanlineWalker walker(p, w);
-  ZAdder adders(w, p.z_bits, p.shading == Shading::Gouraud);
+  ZAdder adders(w, p);
   ModelWalk m;
   CollectingSink sink{m.fragments, script};
   int64_t previous_end = -1, previous_load = -1;
