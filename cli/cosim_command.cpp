@@ -236,7 +236,9 @@ int run_cosim(const CosimOptions& o) {
   std::set<std::string> pinned =
       o.fixed_settings ? std::set<std::string>(rtl::runtime_setting_keys().begin(), rtl::runtime_setting_keys().end())
                        : given_profile_keys(o.profile);
-  if (o.fixed_settings) pinned.insert({"texture_latency", "texture_stall_percent", "texture_stall_seed"});
+  if (o.fixed_settings)
+    pinned.insert({"texture_latency", "texture_stall_percent", "texture_stall_seed", "depth_bias_constant",
+                   "depth_bias_slope"});
   const int max_latency = rtl::built_max_memory_latency(profile);
   const rtl::CosimPlan plan(profile, pinned, max_latency, o.seed, o.triangles, o.directed);
   const std::vector<std::string>& varied = plan.varied();

@@ -12,8 +12,6 @@
 #include <stdexcept>
 #include <vector>
 
-#include "model/input_error.h"
-
 namespace rastersim {
 namespace {
 
@@ -74,11 +72,12 @@ std::string hardware_parameters(const Profile& p) {
          " Z_GUARD_BITS=" + std::to_string(p.z_guard_bits) + " MAX_MEMORY_LATENCY=" + std::to_string(p.memory_latency) +
          " MAX_SETUP_FIFO_DEPTH=" + std::to_string(p.setup_fifo_depth) +
          " SETUP_INTERVAL=" + std::to_string(p.setup_interval) +
-         (p.texture_unit ? " TEXTURE=1 MAX_TEXTURE_LATENCY=" + std::to_string(p.texture_latency) : "");
+         (p.texture_unit ? " TEXTURE=1 MAX_TEXTURE_LATENCY=" + std::to_string(p.texture_latency) : "") +
+         (p.depth_exponent_bits >= 2 ? " DEPTH_EXPONENT_BITS=" + std::to_string(p.depth_exponent_bits) : "") +
+         (p.depth_biased() ? " DEPTH_BIAS=1" : "");
 }
 
 HardwareCost hardware_cost(const Profile& p, const std::string& rtl_dir, const std::string& cache_dir_or_empty) {
-  if (std::string depth = depth_output_not_in_rtl(p); !depth.empty()) throw InputError("--hw-cost: " + depth);
   std::vector<fs::path> sources;
   std::error_code ec;
   for (const fs::directory_entry& e : fs::directory_iterator(rtl_dir, ec))

@@ -66,7 +66,7 @@ int run_vectors(const VectorsOptions& o) {
   if (!o.top.empty() && o.top != "rastersim_top" && o.top != "rastersim_core")
     throw InputError("--top must be rastersim_top or rastersim_core, not '" + o.top + "'");
   if (profile.texture_unit) throw InputError(std::string("vectors: ") + kNoTextureUnitInVectors);
-  if (std::string depth = depth_output_not_in_rtl(profile); !depth.empty()) throw InputError("vectors: " + depth);
+  if (std::string depth = depth_output_not_in_vectors(profile); !depth.empty()) throw InputError("vectors: " + depth);
   if (o.top == "rastersim_top" && profile.memory_stall_percent > 0)
     throw InputError("--top rastersim_top with memory_stall_percent " + std::to_string(profile.memory_stall_percent) +
                      ": its on-chip memory has no back-pressure; use --top rastersim_core");

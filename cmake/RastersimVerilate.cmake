@@ -20,22 +20,32 @@ set(RASTERSIM_RTL_SOURCES
 # The debug monitor bound into rastersim_top for waveforms (frame cycle, triangle per unit).
 set(RASTERSIM_RTL_DEBUG_SOURCES ${RASTERSIM_SOURCE_ROOT}/testbench/rtl/rastersim_debug.sv)
 
-# A configuration entry "name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency[:setup_interval]"
-# (z_guard_bits 0 = derived) into <prefix>_NAME, _WIDTH, _HEIGHT, _SUBPIXEL_BITS, _Z_BITS,
-# _Z_GUARD_BITS, _MAX_LATENCY, _SETUP_INTERVAL and _GENERICS (the -G arguments of rastersim_core).
+# A configuration entry "name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency
+# [:setup_interval[:texture[:depth_exponent_bits[:depth_bias]]]]" (z_guard_bits 0 = derived) into
+# <prefix>_NAME, _WIDTH, _HEIGHT, _SUBPIXEL_BITS, _Z_BITS, _Z_GUARD_BITS, _MAX_LATENCY,
+# _SETUP_INTERVAL, _TEXTURE, _DEPTH_EXPONENT_BITS, _DEPTH_BIAS and _GENERICS (the -G arguments of
+# rastersim_core).
 function(rastersim_parse_config config prefix)
   string(REPLACE ":" ";" fields "${config}")
   list(LENGTH fields field_count)
-  if(field_count LESS 7 OR field_count GREATER 9)
-    message(FATAL_ERROR "RTL configuration '${config}' is not name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency[:setup_interval[:texture]]")
+  if(field_count LESS 7 OR field_count GREATER 11)
+    message(FATAL_ERROR "RTL configuration '${config}' is not name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency[:setup_interval[:texture[:depth_exponent_bits[:depth_bias]]]]")
   endif()
-  set(setup_interval 4)  # an entry from before setup_interval: the default setup
-  set(texture 0)         # an entry from before the texture unit: none
+  set(setup_interval 4)       # an entry from before setup_interval: the default setup
+  set(texture 0)              # an entry from before the texture unit: none
+  set(depth_exponent_bits 0)  # and from before the depth word and bias: the fixed-point word, no bias
+  set(depth_bias 0)
   if(field_count GREATER_EQUAL 8)
     list(GET fields 7 setup_interval)
   endif()
-  if(field_count EQUAL 9)
+  if(field_count GREATER_EQUAL 9)
     list(GET fields 8 texture)
+  endif()
+  if(field_count GREATER_EQUAL 10)
+    list(GET fields 9 depth_exponent_bits)
+  endif()
+  if(field_count EQUAL 11)
+    list(GET fields 10 depth_bias)
   endif()
   list(GET fields 0 name)
   list(GET fields 1 width)
@@ -44,14 +54,15 @@ function(rastersim_parse_config config prefix)
   list(GET fields 4 z_bits)
   list(GET fields 5 z_guard_bits)
   list(GET fields 6 max_latency)
-  foreach(field name width height subpixel_bits z_bits z_guard_bits max_latency setup_interval texture)
+  foreach(field name width height subpixel_bits z_bits z_guard_bits max_latency setup_interval texture
+          depth_exponent_bits depth_bias)
     string(TOUPPER ${field} upper)
     set(${prefix}_${upper} ${${field}} PARENT_SCOPE)
   endforeach()
   set(${prefix}_GENERICS
       -GWIDTH=${width} -GHEIGHT=${height} -GSUBPIXEL_BITS=${subpixel_bits} -GZ_BITS=${z_bits}
       -GZ_GUARD_BITS=${z_guard_bits} -GMAX_MEMORY_LATENCY=${max_latency} -GSETUP_INTERVAL=${setup_interval}
-      -GTEXTURE=${texture}
+      -GTEXTURE=${texture} -GDEPTH_EXPONENT_BITS=${depth_exponent_bits} -GDEPTH_BIAS=${depth_bias}
       PARENT_SCOPE)
 endfunction()
 

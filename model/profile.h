@@ -22,6 +22,12 @@ enum class DepthBuffer { Z, InverseW };
 constexpr int kMaxSetupFifoDepth = 16;  // the RTL's MAX_SETUP_FIFO_DEPTH default
 constexpr int kMinSetupInterval = 2, kMaxSetupInterval = 64;  // the pipelined setup unit's range
 
+// Np, the depth plane's bits for a depth word of z_bits with exponent_bits (docs/arithmetic.md
+// section 6): z_bits for the fixed-point word (0).
+constexpr int depth_plane_bits(int z_bits, int exponent_bits) {
+  return exponent_bits == 0 ? z_bits : z_bits - exponent_bits + (1 << exponent_bits) - 1;
+}
+
 struct Profile {
   int width = 640;            // pixels, 1..4096
   int height = 480;           // pixels, 1..4096
@@ -67,9 +73,7 @@ struct Profile {
     return depth_clear >= 0 ? uint32_t(depth_clear) : depth_buffer == DepthBuffer::InverseW ? 0 : depth_max();
   }
   // Np: the depth plane's bits (z_bits with the fixed-point word).
-  int depth_plane_bits() const {
-    return depth_exponent_bits == 0 ? z_bits : z_bits - depth_exponent_bits + (1 << depth_exponent_bits) - 1;
-  }
+  int depth_plane_bits() const { return rastersim::depth_plane_bits(z_bits, depth_exponent_bits); }
   bool depth_biased() const { return depth_bias_constant != 0 || depth_bias_slope != 0; }
 };
 
@@ -83,18 +87,17 @@ inline constexpr const char* kNoTextureUnitInSystemc =
     "texture_unit: the SystemC system has no texture memory model yet (the model and --backend rtl have the "
     "texture unit)";
 
-// Why the RTL (and so the SystemC system and the vector packages) refuses a profile's depth output
-// stage, or "": the model has the floating-point depth word and the depth bias (docs/arithmetic.md
-// section 6), the RTL's Z adder not yet (docs/design/texturing.md, step 5). Ne = 1 is the
-// fixed-point word bit for bit, which the RTL has.
-inline std::string depth_output_not_in_rtl(const Profile& p) {
+// Why a vector package refuses a profile's depth output stage, or "": the model and the RTL have
+// the floating-point depth word and the depth bias (docs/arithmetic.md section 6), the packages'
+// testbench not yet (it instantiates the core without them). Ne = 1 is the fixed-point word bit
+// for bit.
+inline std::string depth_output_not_in_vectors(const Profile& p) {
   std::string what;
   if (p.depth_exponent_bits >= 2) what = "depth_exponent_bits " + std::to_string(p.depth_exponent_bits);
-  if (p.depth_bias_constant != 0 || p.depth_bias_slope != 0)
-    what += (what.empty() ? "" : " and ") + std::string("a depth bias");
+  if (p.depth_biased()) what += (what.empty() ? "" : " and ") + std::string("a depth bias");
   if (what.empty()) return "";
-  return what + ": the RTL's Z adder has neither the floating-point depth word nor the depth bias yet "
-                "(the model has both, docs/arithmetic.md section 6)";
+  return what + ": vector packages carry neither the floating-point depth word nor the depth bias yet (the model "
+                "and --backend rtl have both)";
 }
 
 // Every error found, each a sentence naming the key; empty when the profile is valid.

@@ -10,6 +10,9 @@
 // With TEXTURE = 1 the texture unit sits between the walker and the z-buffer (its memory on the
 // tex_rd_* port, rtl/texture_unit.sv) and the setup computes the texture planes; with TEXTURE = 0
 // the texture ports are unused and tied off, and the core is as it was without them.
+// DEPTH_EXPONENT_BITS >= 2 makes the depth word floating point, the depth plane then wider than
+// the word (DEPTH_PLANE_BITS); DEPTH_BIAS = 1 adds the depth bias of cfg_depth_bias_* (docs/
+// arithmetic.md section 6). Both only change the Z adder's output stage and the plane's width.
 module rastersim_core #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
@@ -20,7 +23,9 @@ module rastersim_core #(
   parameter integer MAX_SETUP_FIFO_DEPTH = 16,  // record FIFO entries; cfg_setup_fifo_depth <= this
   parameter integer SETUP_INTERVAL = 0,        // 0: serial setup; 2..64: pipelined (profile setup_interval)
   parameter integer TEXTURE = 0,               // 1: the texture unit (profile texture_unit)
-  parameter integer MAX_TEXTURE_LATENCY = 64   // cfg_texture_latency <= this
+  parameter integer MAX_TEXTURE_LATENCY = 64,  // cfg_texture_latency <= this
+  parameter integer DEPTH_EXPONENT_BITS = 0,   // Ne: 0 (or 1) the fixed-point depth word, 2..4 floating point
+  parameter integer DEPTH_BIAS = 0             // 1: the depth bias (cfg_depth_bias_*)
 ) (
   input  wire clk,
   input  wire rst,
@@ -37,12 +42,14 @@ module rastersim_core #(
   input  wire [3:0] cfg_texture_log2_height,
   input  wire       cfg_texture_bilinear,  // 0: nearest
   input  wire       cfg_texture_clamp,     // 0: repeat
+  input  wire [32:0] cfg_depth_bias_constant,  // c, plane LSBs, two's complement (DEPTH_BIAS builds)
+  input  wire [7:0]  cfg_depth_bias_slope,     // f, s4.4 (16 x the slope factor)
   output wire frame_ready,
-  // Triangle command: snapped vertices, x and y s(COORD_BITS-S).S, z uN, rgb {r, g, b}.
+  // Triangle command: snapped vertices, x and y s(COORD_BITS-S).S, z u(DEPTH_PLANE_BITS), rgb {r, g, b}.
   input  wire cmd_valid,
   output wire cmd_ready,
   input  wire [rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] cmd_x0, cmd_y0, cmd_x1, cmd_y1, cmd_x2, cmd_y2,
-  input  wire [Z_BITS-1:0] cmd_z0, cmd_z1, cmd_z2,
+  input  wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)-1:0] cmd_z0, cmd_z1, cmd_z2,
   input  wire [23:0] cmd_rgb0, cmd_rgb1, cmd_rgb2,
   // Texture coordinates (TEXTURE builds): S at [0 +: 50], T at [50 +: 50], Q at [100 +: 50] (S, T
   // s8.41, Q u1.41: RS_TEXTURE_VERTEX_BITS), used when cmd_textured.
@@ -95,6 +102,9 @@ module rastersim_core #(
 `include "rastersim_widths.vh"
   `RS_REQUIRE(illegal_setup_fifo_depth, MAX_SETUP_FIFO_DEPTH >= 1, "rastersim_core: MAX_SETUP_FIFO_DEPTH must be at least 1")
   `RS_REQUIRE(illegal_texture, TEXTURE == 0 || TEXTURE == 1, "rastersim_core: TEXTURE must be 0 or 1")
+  `RS_REQUIRE(illegal_depth_bias, DEPTH_BIAS == 0 || DEPTH_BIAS == 1, "rastersim_core: DEPTH_BIAS must be 0 or 1")
+  `RS_REQUIRE(illegal_depth_exponent_bits, DEPTH_EXPONENT_BITS >= 0 && DEPTH_EXPONENT_BITS <= 4 && rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS) <= 32,
+              "rastersim_core: DEPTH_EXPONENT_BITS must be 0..4, with a depth plane of at most 32 bits")
 
   // Derived widths, the same formulas as model/widths.h; the C++ build static_asserts these
   // (public, so Verilator emits them as static constexpr) against rastersim::derive_widths.
@@ -108,9 +118,10 @@ module rastersim_core #(
   localparam integer EDGE_STEP_X_BITS /*verilator public*/ = rs_edge_step_x_bits(HEIGHT, SUBPIXEL_BITS);
   localparam integer EDGE_STEP_Y_BITS /*verilator public*/ = rs_edge_step_y_bits(WIDTH, SUBPIXEL_BITS);
   localparam integer SPAN_REM_BITS /*verilator public*/ = rs_span_rem_bits(HEIGHT, SUBPIXEL_BITS);
+  localparam integer DEPTH_PLANE_BITS /*verilator public*/ = rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS);
   localparam integer DIVIDER_BITS /*verilator public*/ =
-      rs_divider_bits(WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
-  localparam integer Z_REG_BITS /*verilator public*/ = Z_BITS + GUARD_BITS + 1;
+      rs_divider_bits(WIDTH, HEIGHT, SUBPIXEL_BITS, DEPTH_PLANE_BITS, Z_GUARD_BITS);
+  localparam integer Z_REG_BITS /*verilator public*/ = DEPTH_PLANE_BITS + GUARD_BITS + 1;
   localparam integer COLOR_REG_BITS /*verilator public*/ = 8 + GUARD_BITS + 1;
   localparam integer LEFT_BITS = 2 * (Z_REG_BITS + 3 * COLOR_REG_BITS);  // rec_left_start, rec_left_step: two slots
   localparam integer X_BITS /*verilator public*/ = rs_ubits32(WIDTH - 1);
@@ -118,9 +129,9 @@ module rastersim_core #(
   localparam integer ADDR_BITS /*verilator public*/ = rs_ubits32(WIDTH * HEIGHT - 1);
   // Untextured and textured triangles (equal unless the serial unit is built with TEXTURE).
   localparam integer SETUP_DRAWN_LATENCY /*verilator public*/ =
-      rs_setup_texture_drawn_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS, SETUP_INTERVAL, TEXTURE, 0);
+      rs_setup_texture_drawn_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, DEPTH_PLANE_BITS, Z_GUARD_BITS, SETUP_INTERVAL, TEXTURE, 0);
   localparam integer SETUP_TEXTURED_DRAWN_LATENCY /*verilator public*/ =
-      rs_setup_texture_drawn_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS, SETUP_INTERVAL, TEXTURE, 1);
+      rs_setup_texture_drawn_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, DEPTH_PLANE_BITS, Z_GUARD_BITS, SETUP_INTERVAL, TEXTURE, 1);
   localparam integer SETUP_REJECTED_LATENCY /*verilator public*/ =
       rs_setup_rejected_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, SETUP_INTERVAL);
   localparam integer WALKER_LOAD_CYCLES /*verilator public*/ = 1;
@@ -144,6 +155,8 @@ module rastersim_core #(
   localparam integer P_SETUP_INTERVAL /*verilator public*/ = SETUP_INTERVAL;
   localparam integer P_TEXTURE /*verilator public*/ = TEXTURE;
   localparam integer P_MAX_TEXTURE_LATENCY /*verilator public*/ = MAX_TEXTURE_LATENCY;
+  localparam integer P_DEPTH_EXPONENT_BITS /*verilator public*/ = DEPTH_EXPONENT_BITS;
+  localparam integer P_DEPTH_BIAS /*verilator public*/ = DEPTH_BIAS;
   localparam integer TEXTURE_REG_BITS /*verilator public*/ = rs_texture_reg_bits(WIDTH, HEIGHT);
   /* verilator lint_on UNUSEDPARAM */
 
@@ -157,8 +170,12 @@ module rastersim_core #(
   reg [6:0] texture_latency_q;
   reg [3:0] texture_log2_width_q, texture_log2_height_q;
   reg texture_bilinear_q, texture_clamp_q;
+  reg [32:0] depth_bias_constant_q;
+  reg [7:0] depth_bias_slope_q;
   always @(posedge clk) begin
     if (rst) begin
+      depth_bias_constant_q <= cfg_depth_bias_constant;
+      depth_bias_slope_q <= cfg_depth_bias_slope;
       texture_latency_q <= cfg_texture_latency;
       texture_log2_width_q <= cfg_texture_log2_width;
       texture_log2_height_q <= cfg_texture_log2_height;
@@ -176,7 +193,8 @@ module rastersim_core #(
   end
 
   // The setup record, packed (rs_rec_lsb in rastersim_widths.vh).
-  localparam integer RECORD_BITS = rs_rec_lsb(20, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS);
+  localparam integer RECORD_Z_BITS = DEPTH_PLANE_BITS;
+  localparam integer RECORD_BITS = rs_rec_lsb(20, WIDTH, HEIGHT, SUBPIXEL_BITS, RECORD_Z_BITS, Z_GUARD_BITS);
   localparam integer WALKER_RECORD_BITS = rs_rec_walker_bits(WIDTH, HEIGHT, SUBPIXEL_BITS);
   `include "rastersim_record.vh"
   wire setup_valid;
@@ -205,7 +223,7 @@ module rastersim_core #(
   assign trace_setup_stall = cmd_valid && frame_ready && setup_free && !accept;
   assign trace_setup_done = setup_valid;
 
-  triangle_setup #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
+  triangle_setup #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(DEPTH_PLANE_BITS),
                    .Z_GUARD_BITS(Z_GUARD_BITS), .SETUP_INTERVAL(SETUP_INTERVAL), .TEXTURE(TEXTURE)) setup (
     .clk(clk), .rst(rst), .run(frame_ready), .free(setup_free), .cfg_cull(cull_q), .cfg_front_face(front_face_q),
     .in_valid(cmd_valid && frame_ready && credit_free), .in_ready(setup_ready),
@@ -327,8 +345,10 @@ module rastersim_core #(
     .frag_valid(walker_frag_valid), .frag_ready(walker_frag_ready), .frag_x(walker_frag_x), .frag_y(walker_frag_y),
     .busy(trace_walker_busy), .candidate(trace_walker_candidate), .last(trace_walker_last));
 
-  z_adder #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS), .TEXTURE(TEXTURE)) adders (
-    .clk(clk), .cfg_shading(shading_q), .load(adder_load), .step_x(adder_step_x),
+  z_adder #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS), .TEXTURE(TEXTURE),
+            .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS), .DEPTH_BIAS(DEPTH_BIAS)) adders (
+    .clk(clk), .cfg_shading(shading_q), .cfg_depth_bias_constant(depth_bias_constant_q),
+    .cfg_depth_bias_slope(depth_bias_slope_q), .load(adder_load), .step_x(adder_step_x),
     .next_row(adder_next_row), .row_enter(adder_row_enter), .enter_left(adder_enter_left),
     .enter_slot(adder_enter_slot), .left_carry(adder_left_carry),
     .depth_start(fifo_head[PLANES_AT + LSB_DEPTH_START +: Z_REG_BITS]), .depth_step_x(fifo_head[PLANES_AT + LSB_DEPTH_STEP_X +: Z_REG_BITS]),

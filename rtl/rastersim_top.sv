@@ -15,7 +15,9 @@ module rastersim_top #(
   parameter integer MAX_SETUP_FIFO_DEPTH = 16,  // record FIFO entries; cfg_setup_fifo_depth <= this
   parameter integer SETUP_INTERVAL = 0,        // 0: serial setup; 2..64: pipelined
   parameter integer TEXTURE = 0,               // 1: the texture unit and its memory
-  parameter integer MAX_TEXTURE_LATENCY = 64
+  parameter integer MAX_TEXTURE_LATENCY = 64,
+  parameter integer DEPTH_EXPONENT_BITS = 0,   // as rastersim_core's
+  parameter integer DEPTH_BIAS = 0
 ) (
   input  wire clk,
   input  wire rst,
@@ -33,6 +35,8 @@ module rastersim_top #(
   input  wire [3:0] cfg_texture_log2_height,
   input  wire       cfg_texture_bilinear,
   input  wire       cfg_texture_clamp,
+  input  wire [32:0] cfg_depth_bias_constant,  // as rastersim_core's (DEPTH_BIAS builds)
+  input  wire [7:0]  cfg_depth_bias_slope,
   // Texture load port: texel (column, row), written at the end of the cycle (TEXTURE builds).
   input  wire texture_load_en,
   input  wire [9:0] texture_load_x,
@@ -42,11 +46,11 @@ module rastersim_top #(
   // drives the profile's stall pattern on it); tie it to 0.
   input  wire texture_refuse,
   output wire frame_ready,
-  // Triangle command: snapped vertices, x and y s(COORD_BITS-S).S, z uN, rgb {r, g, b}.
+  // Triangle command: snapped vertices, x and y s(COORD_BITS-S).S, z u(depth plane bits), rgb {r, g, b}.
   input  wire cmd_valid,
   output wire cmd_ready,
   input  wire [rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] cmd_x0, cmd_y0, cmd_x1, cmd_y1, cmd_x2, cmd_y2,
-  input  wire [Z_BITS-1:0] cmd_z0, cmd_z1, cmd_z2,
+  input  wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)-1:0] cmd_z0, cmd_z1, cmd_z2,
   input  wire [23:0] cmd_rgb0, cmd_rgb1, cmd_rgb2,
   input  wire cmd_textured,
   input  wire [149:0] cmd_texture0, cmd_texture1, cmd_texture2,  // S, T, Q as rastersim_core's
@@ -93,13 +97,15 @@ module rastersim_top #(
   rastersim_core #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
                    .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY),
                    .MAX_SETUP_FIFO_DEPTH(MAX_SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL), .TEXTURE(TEXTURE),
-                   .MAX_TEXTURE_LATENCY(MAX_TEXTURE_LATENCY)) core (
+                   .MAX_TEXTURE_LATENCY(MAX_TEXTURE_LATENCY), .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS),
+                   .DEPTH_BIAS(DEPTH_BIAS)) core (
     .clk(clk), .rst(rst), .cfg_depth_func(cfg_depth_func), .cfg_depth_write(cfg_depth_write),
     .cfg_cull(cfg_cull), .cfg_front_face(cfg_front_face), .cfg_traversal(cfg_traversal),
     .cfg_shading(cfg_shading), .cfg_memory_latency(cfg_memory_latency),
     .cfg_setup_fifo_depth(cfg_setup_fifo_depth), .cfg_texture_latency(cfg_texture_latency),
     .cfg_texture_log2_width(cfg_texture_log2_width), .cfg_texture_log2_height(cfg_texture_log2_height),
-    .cfg_texture_bilinear(cfg_texture_bilinear), .cfg_texture_clamp(cfg_texture_clamp), .frame_ready(frame_ready),
+    .cfg_texture_bilinear(cfg_texture_bilinear), .cfg_texture_clamp(cfg_texture_clamp),
+    .cfg_depth_bias_constant(cfg_depth_bias_constant), .cfg_depth_bias_slope(cfg_depth_bias_slope), .frame_ready(frame_ready),
     .cmd_valid(cmd_valid), .cmd_ready(cmd_ready),
     .cmd_x0(cmd_x0), .cmd_y0(cmd_y0), .cmd_x1(cmd_x1), .cmd_y1(cmd_y1), .cmd_x2(cmd_x2), .cmd_y2(cmd_y2),
     .cmd_z0(cmd_z0), .cmd_z1(cmd_z1), .cmd_z2(cmd_z2), .cmd_rgb0(cmd_rgb0), .cmd_rgb1(cmd_rgb1), .cmd_rgb2(cmd_rgb2),

@@ -132,6 +132,12 @@ function automatic integer rs_span_rem_bits(input integer h, input integer s);
   end
 endfunction
 
+// The depth plane's bits Np (docs/arithmetic.md section 6): z_bits for the fixed-point depth word
+// (exponent bits 0), z_bits - Ne + 2^Ne - 1 for the floating-point one.
+function automatic integer rs_depth_plane_bits(input integer word_bits, input integer exponent_bits);
+  rs_depth_plane_bits = exponent_bits == 0 ? word_bits : word_bits - exponent_bits + (1 << exponent_bits) - 1;
+endfunction
+
 // Widest dividend magnitude, 36 Zmax W H M^2 2^F: also the divider's cycle count.
 function automatic integer rs_divider_bits(input integer w, input integer h, input integer s,
                                            input integer z_bits, input integer z_guard_bits);

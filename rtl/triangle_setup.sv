@@ -19,7 +19,7 @@ module triangle_setup #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
   parameter integer SUBPIXEL_BITS = 4,
-  parameter integer Z_BITS = 24,
+  parameter integer Z_BITS = 24,         // the depth plane's bits (docs/arithmetic.md section 6)
   parameter integer Z_GUARD_BITS = 0,
   parameter integer SETUP_INTERVAL = 0,  // 0: serial (one shared datapath); 2..64: pipelined, initiation interval
   parameter integer TEXTURE = 0          // 1: the S, T, Q planes (profile texture_unit)
@@ -104,6 +104,7 @@ module triangle_setup #(
   // The record (rastersim_widths.vh): both schedules give fields 0..17 packed in out_base and the
   // 16 PRODUCT results in out_along (n = 4p + 2j + t: plane p, left-edge slot j, t start / step),
   // packed below.
+  localparam integer RECORD_Z_BITS = Z_BITS;  // the depth plane's (the core passes them as Z_BITS)
   `include "rastersim_record.vh"
   localparam integer BASE_BITS = LSB_LEFT_START;
   localparam integer Z_REG_BITS = Z_BITS + rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS) + 1;

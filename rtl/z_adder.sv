@@ -1,16 +1,24 @@
 // Z register adder (model/z_adder.h): the depth plane register and, for Gouraud shading, the
-// r, g, b plane registers, stepped in lockstep with the walker. No multiplication.
-// Depth registers are s(N+1).F, colour registers s9.F (F = guard bits), all wrapping. With TEXTURE
+// r, g, b plane registers, stepped in lockstep with the walker. No multiplication in the steps.
+// Depth registers are s(Np+1).F, colour registers s9.F (F = guard bits), all wrapping. With TEXTURE
 // the S, T, Q plane registers too (s9.(P+Ft), docs/arithmetic.md section 5), for the texture unit.
+// The depth output stage (model/z_adder.h DepthOutput, docs/arithmetic.md section 6): with
+// DEPTH_BIAS the triangle's bias, computed at the load from the record's depth steps (the one
+// product), added before the rounding; with DEPTH_EXPONENT_BITS >= 2 the output encoded as the
+// floating-point depth word. Logic between the register and the fragment: no cycles.
 module z_adder #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
-  parameter integer Z_BITS = 24,
+  parameter integer Z_BITS = 24,     // N, the depth word's bits
   parameter integer Z_GUARD_BITS = 0,
-  parameter integer TEXTURE = 0     // 1: the texture planes (rs_texture_record_bits), else none
+  parameter integer TEXTURE = 0,    // 1: the texture planes (rs_texture_record_bits), else none
+  parameter integer DEPTH_EXPONENT_BITS = 0,  // Ne: the depth plane has rs_depth_plane_bits(N, Ne) bits
+  parameter integer DEPTH_BIAS = 0            // 1: the depth bias
 ) (
   input  wire clk,
   input  wire cfg_shading,  // RS_SHADING_* (rastersim_widths.vh); flat: the provoking vertex colour
+  input  wire [32:0] cfg_depth_bias_constant,  // c, two's complement, |c| < 2^Np (DEPTH_BIAS)
+  input  wire [7:0] cfg_depth_bias_slope,      // f, s4.4
   input  wire load,
   input  wire step_x,
   input  wire next_row,
@@ -18,20 +26,20 @@ module z_adder #(
   input  wire enter_left,         // load, row_enter: the span starts at a left edge (scanline_walker)
   input  wire enter_slot,         // its left-edge slot
   input  wire [1:0] left_carry,   // each slot's DDA carry into the row after the one entered
-  input  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_start,
-  input  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_step_x,
-  input  wire [Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_step_y,
+  input  wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_start,
+  input  wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_step_x,
+  input  wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_step_y,
   input  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] color_start,   // r, g, b at [c*B +: B]
   input  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] color_step_x,
   input  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] color_step_y,
   input  wire [23:0] flat_rgb,
   // The planes along the left edges: slot j at [j*(Z_REG_BITS + 3 COLOR_REG_BITS)], depth first,
   // then r, g, b (rastersim_widths.vh, record fields 18 and 19).
-  input  wire [2*(Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)+1+3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)))-1:0] left_start,
-  input  wire [2*(Z_BITS+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)+1+3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)))-1:0] left_step,
+  input  wire [2*(rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)+1+3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)))-1:0] left_start,
+  input  wire [2*(rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)+1+3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)))-1:0] left_step,
   // The texture record (rs_texture_record_bits of rastersim_widths.vh; unused without TEXTURE).
   input  wire [1+21*(50+$clog2(2*(WIDTH+HEIGHT-1)))-1:0] texture_record,
-  output wire [Z_BITS-1:0] depth,  // uN
+  output wire [Z_BITS-1:0] depth,  // the depth word, N bits
   output wire [23:0] rgb,          // {r, g, b}, u8 each
   output wire triangle_textured,   // the record's texture flag (0 without TEXTURE)
   output wire [3*(50+$clog2(2*(WIDTH+HEIGHT-1)))-1:0] stq  // the S, T, Q registers at [c*TR +: TR]
@@ -40,24 +48,82 @@ module z_adder #(
   `RS_REQUIRE(illegal_z_bits, Z_BITS >= 16 && Z_BITS <= 32, "z_adder: Z_BITS must be 16..32")
   `RS_REQUIRE(illegal_z_guard_bits, Z_GUARD_BITS >= 0 && Z_GUARD_BITS <= 24, "z_adder: Z_GUARD_BITS must be 0 (derived) or 1..24")
 
+  `RS_REQUIRE(illegal_depth_exponent_bits, DEPTH_EXPONENT_BITS >= 0 && DEPTH_EXPONENT_BITS <= 4, "z_adder: DEPTH_EXPONENT_BITS must be 0..4")
+
   localparam integer F = rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS);
-  localparam integer Z_REG_BITS = Z_BITS + F + 1;
+  localparam integer NP = rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS);  // the depth plane's bits
+  localparam integer Z_REG_BITS = NP + F + 1;
   localparam integer COLOR_REG_BITS = 9 + F;
   localparam integer SLOT_BITS = Z_REG_BITS + 3 * COLOR_REG_BITS;
 
   reg [23:0] flat_q;
   always @(posedge clk) if (load) flat_q <= flat_rgb;
 
-  /* verilator lint_off UNUSEDSIGNAL */
-  wire [Z_REG_BITS-1:0] depth_value_unused;
-  /* verilator lint_on UNUSEDSIGNAL */
-  plane_register #(.REG_BITS(Z_REG_BITS), .GUARD_BITS(F), .OUT_BITS(Z_BITS)) depth_plane (
+  wire [NP-1:0] depth_rounded;  // clamp((V + 2^(F-1)) >> F, 0, 2^Np - 1)
+  wire [Z_REG_BITS-1:0] depth_value;
+  plane_register #(.REG_BITS(Z_REG_BITS), .GUARD_BITS(F), .OUT_BITS(NP)) depth_plane (
     .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter),
     .enter_left(enter_left), .enter_slot(enter_slot), .left_carry(left_carry),
     .start(depth_start), .step_x_in(depth_step_x), .step_y_in(depth_step_y),
     .left_start({left_start[SLOT_BITS +: Z_REG_BITS], left_start[0 +: Z_REG_BITS]}),
     .left_step({left_step[SLOT_BITS +: Z_REG_BITS], left_step[0 +: Z_REG_BITS]}),
-    .out(depth), .value(depth_value_unused));
+    .out(depth_rounded), .value(depth_value));
+
+  // The plane output X with the triangle's bias B: clamp((V + B + 2^(F-1)) >> F, 0, 2^Np - 1).
+  wire [NP-1:0] depth_x;
+  generate
+    if (DEPTH_BIAS != 0) begin : bias
+      // B = clamp(c 2^F + floor(f max(|step_x|, |step_y|) / 16), -2^(Np+F), 2^(Np+F)), taken at the
+      // load from the record's steps (s(Np+1).F; |-2^(Np+F)| fits the unsigned magnitude).
+      // The sum's width: |f slope| <= 2^(Np+F+7), and the 33-bit c shifted by F.
+      localparam integer PB = Z_REG_BITS + 10 > 34 + F ? Z_REG_BITS + 10 : 34 + F;
+      wire [Z_REG_BITS-1:0] magnitude_x = depth_step_x[Z_REG_BITS-1] ? -depth_step_x : depth_step_x;
+      wire [Z_REG_BITS-1:0] magnitude_y = depth_step_y[Z_REG_BITS-1] ? -depth_step_y : depth_step_y;
+      wire [Z_REG_BITS-1:0] slope = magnitude_x > magnitude_y ? magnitude_x : magnitude_y;
+      wire signed [PB-1:0] product = $signed({{(PB-8){cfg_depth_bias_slope[7]}}, cfg_depth_bias_slope}) *
+                                     $signed({{(PB-Z_REG_BITS){1'b0}}, slope});
+      wire signed [PB-1:0] constant_part = $signed({{(PB-33-F){cfg_depth_bias_constant[32]}}, cfg_depth_bias_constant, {F{1'b0}}});
+      wire signed [PB-1:0] unclamped = constant_part + (product >>> 4);
+      wire signed [PB-1:0] limit = $signed({{(PB-Z_REG_BITS){1'b0}}, 1'b1, {(Z_REG_BITS-1){1'b0}}});  // 2^(Np+F)
+      wire signed [PB-1:0] clamped = unclamped > limit ? limit : unclamped < -limit ? -limit : unclamped;
+      reg signed [Z_REG_BITS:0] bias_q;  // [-2^(Np+F), 2^(Np+F)]
+      always @(posedge clk) if (load) bias_q <= clamped[Z_REG_BITS:0];
+      // V + B + 2^(F-1) in Np + F + 3 bits, then the rounding shift and the clamp.
+      wire signed [Z_REG_BITS+1:0] sum = $signed({{2{depth_value[Z_REG_BITS-1]}}, depth_value}) +
+                                         $signed({bias_q[Z_REG_BITS], bias_q}) +
+                                         $signed({{(Z_REG_BITS+2-F){1'b0}}, 1'b1, {(F-1){1'b0}}});
+      wire signed [Z_REG_BITS+1-F:0] rounded = sum[Z_REG_BITS+1:F];
+      wire signed [Z_REG_BITS+1-F:0] out_max = $signed({{(Z_REG_BITS+2-F-NP){1'b0}}, {NP{1'b1}}});
+      assign depth_x = rounded[Z_REG_BITS+1-F] ? {NP{1'b0}} : rounded > out_max ? {NP{1'b1}} : rounded[NP-1:0];
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire rounded_unused = ^depth_rounded ^ ^clamped[PB-1:Z_REG_BITS+1] ^ ^sum[F-1:0];
+      /* verilator lint_on UNUSEDSIGNAL */
+    end else begin : no_bias
+      assign depth_x = depth_rounded;
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire bias_unused = ^cfg_depth_bias_constant ^ ^cfg_depth_bias_slope ^ ^depth_value;
+      /* verilator lint_on UNUSEDSIGNAL */
+    end
+  endgenerate
+
+  // The depth word: X itself, or with Ne >= 2 exponent bits the floating-point word {e, mantissa}
+  // (X < 2^Nm: e = 0 and X; else e = floor(log2 X) - Nm + 1 and the bits below X's leading one).
+  generate
+    if (DEPTH_EXPONENT_BITS >= 2) begin : float_word
+      localparam integer NE = DEPTH_EXPONENT_BITS;
+      localparam integer NM = Z_BITS - NE;
+      reg [Z_BITS-1:0] word;
+      integer e;
+      always @* begin
+        word = {{NE{1'b0}}, depth_x[NM-1:0]};
+        for (e = 1; e < (1 << NE); e = e + 1)  // the highest set bit at NM + e - 1 wins
+          if (depth_x[NM + e - 1]) word = {e[NE-1:0], depth_x[e - 1 +: NM]};
+      end
+      assign depth = word;
+    end else begin : fixed_word
+      assign depth = depth_x;  // Ne = 1 is the same word
+    end
+  endgenerate
 
   wire [23:0] gouraud_rgb;
   genvar c;

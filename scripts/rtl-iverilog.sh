@@ -33,5 +33,12 @@ for interval in 0 4; do
     status=1
   fi
 done
+# The floating-point depth word and the depth bias (the Z adder's output stage).
+if ! out=$(iverilog -g2012 -Wall -Wno-sensitivity-entire-array -I"$rtl" -s rastersim_top -Prastersim_top.Z_BITS=16 \
+    -Prastersim_top.DEPTH_EXPONENT_BITS=4 -Prastersim_top.DEPTH_BIAS=1 -o "$work/top_depth.vvp" "$rtl"/*.sv 2>&1) || [ -n "$out" ]; then
+  echo "iverilog failed or warned: rastersim_top Z_BITS=16 DEPTH_EXPONENT_BITS=4 DEPTH_BIAS=1"
+  echo "$out"
+  status=1
+fi
 [ $status -eq 0 ] && echo "rtl-iverilog: every unit compiles"
 exit $status

@@ -26,6 +26,9 @@ mutants=("$@")
 # rtl.injected_texture_bugs_are_caught, label long, runs them by name):
 texture_mutants=(texture_capacity texture_bank_route texture_stall_ignored texture_untextured_waits
                  texture_left_slots)
+# The depth output stage's (DEPTH_EXPONENT_BITS 3, DEPTH_BIAS 1; ctest rtl.injected_depth_bugs_are_caught,
+# label long):
+depth_mutants=(depth_bias_shift depth_bias_smaller_step depth_float_mantissa)
 # name -> file, text to replace, replacement (fixed strings); params: extra verilator -G settings;
 # check: mutant_check's mode (--cosim-only: the frames of `rastersim cosim --count 100` must catch it).
 declare -A file from to params check
@@ -182,6 +185,18 @@ to[setup_offscreen_rows]='wire offscreen = bx1_raw < 0 ||'  # a box above the sc
 file[setup_credit_count]=rastersim_core.sv
 from[setup_credit_count]='credits_held_q < setup_fifo_depth_q;'
 to[setup_credit_count]='credits_held_q <= setup_fifo_depth_q;'  # one record credit too many
+# The Z adder's depth output stage (a biased profile's cosim frames: bias constants and slopes).
+for m in "${depth_mutants[@]}"; do
+  file[$m]=z_adder.sv
+  params[$m]="-GSETUP_INTERVAL=4 -GDEPTH_EXPONENT_BITS=3 -GDEPTH_BIAS=1"
+  check[$m]=--cosim-only
+done
+from[depth_bias_shift]='wire signed [PB-1:0] unclamped = constant_part + (product >>> 4);'
+to[depth_bias_shift]='wire signed [PB-1:0] unclamped = constant_part + (product >>> 3);'  # the slope factor read as s5.3
+from[depth_bias_smaller_step]='wire [Z_REG_BITS-1:0] slope = magnitude_x > magnitude_y ? magnitude_x : magnitude_y;'
+to[depth_bias_smaller_step]='wire [Z_REG_BITS-1:0] slope = magnitude_x > magnitude_y ? magnitude_y : magnitude_x;'  # the smaller step
+from[depth_float_mantissa]='if (depth_x[NM + e - 1]) word = {e[NE-1:0], depth_x[e - 1 +: NM]};'
+to[depth_float_mantissa]='if (depth_x[NM + e - 1]) word = {e[NE-1:0], depth_x[e +: NM]};'  # the mantissa one bit too high
 file[setup_fifo_empty]=setup_fifo.sv
 from[setup_fifo_empty]='assign empty = count_q == {COUNT_BITS{1'"'"'b0}};'
 to[setup_fifo_empty]='assign empty = count_q <= {{(COUNT_BITS-1){1'"'"'b0}}, 1'"'"'b1};'  # one record looks like none

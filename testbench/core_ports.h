@@ -181,8 +181,9 @@ std::function<int64_t(const Core&)> record_field_reader(const SetupRecordField& 
 template <class Core>
 SetupResult read_setup_record(const Core& t, bool gouraud) {
   using Reader = std::pair<const SetupRecordField*, std::function<int64_t(const Core&)>>;
-  static const Widths widths = derive_widths(int(Core::P_WIDTH), int(Core::P_HEIGHT), int(Core::P_SUBPIXEL_BITS),
-                                             int(Core::P_Z_BITS), int(Core::P_Z_GUARD_BITS));
+  static const Widths widths =
+      derive_widths(int(Core::P_WIDTH), int(Core::P_HEIGHT), int(Core::P_SUBPIXEL_BITS),
+                    depth_plane_bits(int(Core::P_Z_BITS), int(Core::P_DEPTH_EXPONENT_BITS)), int(Core::P_Z_GUARD_BITS));
   static const std::vector<SetupRecordField> all = setup_record_fields(widths, true);
   static const std::vector<SetupRecordField> flat = setup_record_fields(widths, false);
   auto readers = [](const std::vector<SetupRecordField>& fields) {

@@ -13,7 +13,7 @@ namespace {
 class Generator {
  public:
   Generator(const Profile& p, uint64_t seed)
-      : p_(p), rng_(seed), one_(int64_t(1) << p.subpixel_bits), z_max_(p.depth_max()) {}
+      : p_(p), rng_(seed), one_(int64_t(1) << p.subpixel_bits), z_max_((int64_t(1) << p.depth_plane_bits()) - 1) {}
 
   int64_t uniform(int64_t lo, int64_t hi) { return std::uniform_int_distribution<int64_t>(lo, hi)(rng_); }
   // Guard band in subpixels: x in [-W, 2W], y in [-H, 2H] pixels.
@@ -254,6 +254,17 @@ Profile random_settings(const Profile& profile, uint64_t seed, const std::set<st
   if (p.texture_unit && free("texture_latency")) p.texture_latency = texture_latency;
   if (p.texture_unit && free("texture_stall_percent")) p.texture_stall_percent = texture_stall_percent;
   if (p.texture_unit && free("texture_stall_seed")) p.texture_stall_seed = texture_stall_seed;
+  // A biased profile runs on a build with the depth bias, whose values are runtime registers: drawn,
+  // a quarter of the frames unbiased and some at the constant's extremes.
+  const int64_t plane_max = (int64_t(1) << p.depth_plane_bits()) - 1;
+  const int64_t bias_kind = uniform(0, 7);
+  const int64_t bias_constant = bias_kind == 0 ? plane_max : bias_kind == 1 ? -plane_max : uniform(-300, 300);
+  const int bias_slope = int(uniform(-128, 127));
+  const bool unbiased = uniform(0, 3) == 0;
+  if (profile.depth_biased()) {
+    if (free("depth_bias_constant")) p.depth_bias_constant = unbiased ? 0 : bias_constant;
+    if (free("depth_bias_slope")) p.depth_bias_slope = unbiased ? 0 : bias_slope;
+  }
   return p;
 }
 

@@ -67,7 +67,8 @@ std::string sources_digest() {
 std::string config_entry(const Geometry& g) {
   std::ostringstream s;
   s << "module:" << g.width << ":" << g.height << ":" << g.subpixel_bits << ":" << g.z_bits << ":" << g.z_guard_bits
-    << ":" << g.max_memory_latency << ":" << g.setup_interval << ":" << g.texture;
+    << ":" << g.max_memory_latency << ":" << g.setup_interval << ":" << g.texture << ":" << g.depth_exponent_bits
+    << ":" << g.depth_bias;
   return s.str();
 }
 
@@ -76,7 +77,9 @@ std::string describe(Kind kind, const Geometry& g) {
   s << (kind == Kind::Rtl ? "the verilated RTL" : "the SystemC core") << " for " << g.width << "x" << g.height
     << " subpixel_bits " << g.subpixel_bits << " z_bits " << g.z_bits << " z_guard_bits "
     << (g.z_guard_bits ? std::to_string(g.z_guard_bits) : "auto") << " memory_latency 1.." << g.max_memory_latency
-    << " setup_interval " << g.setup_interval << (g.texture ? " texture unit" : "");
+    << " setup_interval " << g.setup_interval << (g.texture ? " texture unit" : "")
+    << (g.depth_exponent_bits ? " depth_exponent_bits " + std::to_string(g.depth_exponent_bits) : "")
+    << (g.depth_bias ? " depth bias" : "");
   return s.str();
 }
 
@@ -154,7 +157,8 @@ class FileLock {
 
 Geometry geometry_for(const Profile& p) {
   return Geometry{p.width, p.height, p.subpixel_bits, p.z_bits, p.z_guard_bits, std::max(64, p.memory_latency),
-                  p.setup_interval, p.texture_unit ? 1 : 0};
+                  p.setup_interval, p.texture_unit ? 1 : 0, p.depth_exponent_bits >= 2 ? p.depth_exponent_bits : 0,
+                  p.depth_biased() ? 1 : 0};
 }
 
 std::string cache_root() {
@@ -174,7 +178,8 @@ std::string module_library(Kind kind, const Geometry& g, const Progress& progres
   key.add(sources_digest());
   std::ostringstream name;
   name << (kind == Kind::Rtl ? "rtl-" : "systemc-") << g.width << "x" << g.height << "-s" << g.subpixel_bits << "-z"
-       << g.z_bits << "-g" << g.z_guard_bits << "-l" << g.max_memory_latency << "-i" << g.setup_interval << "-t" << g.texture << "-"
+       << g.z_bits << "-g" << g.z_guard_bits << "-l" << g.max_memory_latency << "-i" << g.setup_interval << "-t" << g.texture << "-e"
+       << g.depth_exponent_bits << "-b" << g.depth_bias << "-"
        << key.hex();
   const fs::path modules = fs::path(cache_root()) / "modules";
   const fs::path entry = modules / name.str();

@@ -20,10 +20,12 @@ struct Geometry {
   int width = 0, height = 0, subpixel_bits = 0, z_bits = 0, z_guard_bits = 0;
   int max_memory_latency = 0, setup_interval = 0;
   int texture = 0;  // 1: with the texture unit (profile texture_unit)
+  int depth_exponent_bits = 0, depth_bias = 0;  // the depth word (profile's, 0 for 1) and 1: the depth bias
 };
 
 // The module that runs `profile`: its geometry, z_guard_bits as the profile gives it (0: derived),
-// memory latency up to 64 (or the profile's, when larger), its setup_interval and texture unit.
+// memory latency up to 64 (or the profile's, when larger), its setup_interval, texture unit, depth
+// word and depth bias (when the profile has one).
 Geometry geometry_for(const Profile& profile);
 
 // The cache: $RASTERSIM_CACHE_DIR, else $XDG_CACHE_HOME/rastersim, else $HOME/.cache/rastersim.

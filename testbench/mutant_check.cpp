@@ -102,6 +102,8 @@ int main(int argc, char** argv) {
   p.z_bits = int(Core::P_Z_BITS);
   p.setup_interval = int(Core::P_SETUP_INTERVAL);
   p.texture_unit = int(Core::P_TEXTURE) != 0;
+  p.depth_exponent_bits = int(Core::P_DEPTH_EXPONENT_BITS);
+  if (int(Core::P_DEPTH_BIAS) != 0) p.depth_bias_slope = 16;  // biased: random frames draw the bias's values
 
   // As `cosim`: frame k's power-on seed is seed + k, seed 1.
   const CosimPlan plan(p, {}, max_latency, 1, 16, true);

@@ -44,7 +44,9 @@ const BuiltConfiguration* find_configuration(const Profile& p) {
   for (const BuiltConfiguration* c : all_configurations()) {
     const int built_guard = derive_widths(c->width, c->height, c->subpixel_bits, c->z_bits, c->z_guard_bits).guard_bits;
     if (c->width == p.width && c->height == p.height && c->subpixel_bits == p.subpixel_bits && c->z_bits == p.z_bits &&
-        built_guard == guard && c->setup_interval == p.setup_interval && (c->texture != 0) == p.texture_unit) {
+        built_guard == guard && c->setup_interval == p.setup_interval && (c->texture != 0) == p.texture_unit &&
+        depth_plane_bits(c->z_bits, c->depth_exponent_bits) == p.depth_plane_bits() &&
+        (c->depth_exponent_bits >= 2) == (p.depth_exponent_bits >= 2) && (c->depth_bias != 0 || !p.depth_biased())) {
       if (p.memory_latency <= c->max_memory_latency) return c;
       if (!found) found = c;
     }
@@ -61,7 +63,9 @@ std::vector<std::string> built_configurations() {
     s << c->name << ": " << c->width << "x" << c->height << " subpixel_bits " << c->subpixel_bits << " z_bits "
       << c->z_bits << " z_guard_bits " << (c->z_guard_bits ? std::to_string(c->z_guard_bits) : "auto")
       << " memory_latency 1.." << c->max_memory_latency << " setup_interval " << c->setup_interval
-      << (c->texture ? " texture unit" : "");
+      << (c->texture ? " texture unit" : "")
+      << (c->depth_exponent_bits ? " depth_exponent_bits " + std::to_string(c->depth_exponent_bits) : "")
+      << (c->depth_bias ? " depth bias" : "");
     out.push_back(s.str());
   }
   return out;
@@ -93,7 +97,6 @@ int built_max_memory_latency(const Profile& p) {
 std::string configuration_error(const Profile& p) {
   const std::vector<std::string> errors = validate(p);
   if (!errors.empty()) return "invalid profile: " + errors.front();
-  if (std::string depth = depth_output_not_in_rtl(p); !depth.empty()) return depth;
   // Whatever the geometry: rastersim_top's on-chip memories have no stall pattern.
   if (p.memory_stall_percent > 0)
     return "memory_stall_percent " + std::to_string(p.memory_stall_percent) +
@@ -105,11 +108,14 @@ std::string configuration_error(const Profile& p) {
                           std::to_string(p.height) + ", subpixel_bits " + std::to_string(p.subpixel_bits) +
                           ", z_bits " + std::to_string(p.z_bits) + ", guard bits " +
                           std::to_string(derive_widths(p).guard_bits) + ", setup_interval " +
-                          std::to_string(p.setup_interval) + (p.texture_unit ? ", texture unit" : "") + "; built:";
+                          std::to_string(p.setup_interval) + (p.texture_unit ? ", texture unit" : "") +
+                          (p.depth_exponent_bits >= 2 ? ", depth_exponent_bits " + std::to_string(p.depth_exponent_bits) : "") +
+                          (p.depth_biased() ? ", depth bias" : "") + "; built:";
     for (const std::string& b : built_configurations()) message += " [" + b + "]";
     return message + ". rastersim verilates it on demand (--backend rtl, cosim); to build it in, add an entry to "
                      "RASTERSIM_RTL_CONFIGS in testbench/CMakeLists.txt "
-                     "(name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency:setup_interval:texture).";
+                     "(name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency:setup_interval:texture"
+                     ":depth_exponent_bits:depth_bias).";
   }
   if (p.memory_latency > c->max_memory_latency)
     return "memory_latency " + std::to_string(p.memory_latency) + " exceeds the built RTL's maximum " +
@@ -335,7 +341,7 @@ Divergence compare(const RtlResult& model, const RtlResult& rtl) {
 std::string write_replay(const std::string& prefix, const Profile& profile,
                          const std::vector<SnappedTriangle>& triangles, uint64_t seed) {
   const double scale = std::ldexp(1.0, profile.subpixel_bits);
-  const double z_max = double(profile.depth_max());
+  const double z_max = std::ldexp(1.0, profile.depth_plane_bits()) - 1;  // the depth plane's 2^N - 1
   std::ostringstream tri;
   tri << "# rastersim replay: snapped vertices written back as pixels (x / 2^S) and depths Z / (2^N - 1)\n";
   char buffer[64];

@@ -12,8 +12,10 @@ namespace rastersim::rtl::detail {
 // they must equal rastersim::derive_widths of the same profile parameters, field by field.
 template <class Top>
 constexpr bool widths_agree() {
-  constexpr Widths w = derive_widths(int(Top::P_WIDTH), int(Top::P_HEIGHT), int(Top::P_SUBPIXEL_BITS),
-                                     int(Top::P_Z_BITS), int(Top::P_Z_GUARD_BITS));
+  constexpr int plane_bits = depth_plane_bits(int(Top::P_Z_BITS), int(Top::P_DEPTH_EXPONENT_BITS));
+  static_assert(int(Top::DEPTH_PLANE_BITS) == plane_bits, "RTL depth plane bits differ from the profile's");
+  constexpr Widths w = derive_widths(int(Top::P_WIDTH), int(Top::P_HEIGHT), int(Top::P_SUBPIXEL_BITS), plane_bits,
+                                     int(Top::P_Z_GUARD_BITS));
   static_assert(int(Top::GUARD_BITS) == w.guard_bits, "RTL guard_bits differs from derive_widths");
   static_assert(int(Top::COORD_BITS) == w.coord_bits, "RTL coord_bits differs from derive_widths");
   static_assert(int(Top::DELTA_BITS) == w.delta_bits, "RTL delta_bits differs from derive_widths");
@@ -28,7 +30,7 @@ constexpr bool widths_agree() {
   static_assert(int(Top::X_BITS) == w.x_bits, "RTL x_bits differs from derive_widths");
   static_assert(int(Top::Y_BITS) == w.y_bits, "RTL y_bits differs from derive_widths");
   static_assert(int(Top::ADDR_BITS) == w.addr_bits, "RTL addr_bits differs from derive_widths");
-  constexpr SetupTiming t = setup_timing(w, int(Top::P_SUBPIXEL_BITS), int(Top::P_Z_BITS), int(Top::P_SETUP_INTERVAL),
+  constexpr SetupTiming t = setup_timing(w, int(Top::P_SUBPIXEL_BITS), plane_bits, int(Top::P_SETUP_INTERVAL),
                                          int(Top::P_TEXTURE) != 0);
   static_assert(int(Top::SETUP_DRAWN_LATENCY) == t.drawn_latency, "RTL setup latency differs from setup_timing");
   static_assert(int(Top::SETUP_TEXTURED_DRAWN_LATENCY) == t.textured_drawn_latency,

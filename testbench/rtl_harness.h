@@ -30,6 +30,11 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
     throw std::invalid_argument("rastersim_top's on-chip memory has no back-pressure (memory_stall_percent)");
   if (p.texture_unit != (int(Core::P_TEXTURE) != 0) || p.texture_latency > int(Core::P_MAX_TEXTURE_LATENCY))
     throw std::invalid_argument("the RTL configuration's texture unit differs from the profile's");
+  if (depth_plane_bits(p.z_bits, p.depth_exponent_bits) !=
+          depth_plane_bits(int(Core::P_Z_BITS), int(Core::P_DEPTH_EXPONENT_BITS)) ||
+      (p.depth_exponent_bits >= 2) != (int(Core::P_DEPTH_EXPONENT_BITS) >= 2) ||
+      (p.depth_biased() && int(Core::P_DEPTH_BIAS) == 0))
+    throw std::invalid_argument("the RTL configuration's depth word or depth bias differs from the profile's");
   if (p.setup_fifo_depth > int(Core::P_MAX_SETUP_FIFO_DEPTH))
     throw std::invalid_argument("setup_fifo_depth " + std::to_string(p.setup_fifo_depth) +
                                 " exceeds the RTL's MAX_SETUP_FIFO_DEPTH " + std::to_string(int(Core::P_MAX_SETUP_FIFO_DEPTH)));
@@ -81,6 +86,9 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
   top->cfg_texture_clamp = textures && options.texture.wrap == TextureWrap::Clamp;
   top->texture_load_en = 0, top->texture_load_x = 0, top->texture_load_y = 0, top->texture_load_rgb = 0;
   top->texture_refuse = 0;
+  // The depth bias (0 without DEPTH_BIAS: rtl_backend.cpp refuses a biased profile for such a core).
+  top->cfg_depth_bias_constant = uint64_t(p.depth_bias_constant) & ((uint64_t(1) << 33) - 1);
+  top->cfg_depth_bias_slope = uint8_t(p.depth_bias_slope);
   drive_texture_command(*top, SnappedTriangle{});
   top->cmd_valid = 0;
   top->readback_addr = 0;

@@ -139,7 +139,8 @@ module scoreboard_tb #(
     .trace_result_pass(result_pass), .trace_zbuffer_busy(), .trace_zbuffer_stall(),
     // Built without the texture unit: its ports tied off.
     .cfg_texture_latency(7'd1), .cfg_texture_log2_width(4'd0), .cfg_texture_log2_height(4'd0),
-    .cfg_texture_bilinear(1'b0), .cfg_texture_clamp(1'b0), .texture_load_en(1'b0), .texture_load_x(10'd0),
+    .cfg_texture_bilinear(1'b0), .cfg_texture_clamp(1'b0), .cfg_depth_bias_constant(33'd0),
+    .cfg_depth_bias_slope(8'd0), .texture_load_en(1'b0), .texture_load_x(10'd0),
     .texture_load_y(10'd0), .texture_load_rgb(24'd0), .texture_refuse(1'b0), .cmd_textured(1'b0), .cmd_texture0('0), .cmd_texture1('0),
     .cmd_texture2('0), .trace_walker_frag_valid(), .trace_walker_frag_ready(), .trace_texture_busy(),
     .trace_texture_stall(),

@@ -14,7 +14,7 @@ extern "C" __attribute__((visibility("default"))) const rastersim::rtl::BuiltCon
   static const rastersim::rtl::BuiltConfiguration configuration = {
       "on demand", int(Core::P_WIDTH), int(Core::P_HEIGHT), int(Core::P_SUBPIXEL_BITS), int(Core::P_Z_BITS),
       int(Core::P_Z_GUARD_BITS), int(Core::P_MAX_MEMORY_LATENCY), int(Core::P_SETUP_INTERVAL), int(Core::P_TEXTURE),
-      &rastersim::rtl::detail::run_configuration<Vrastersim_module>};
+      int(Core::P_DEPTH_EXPONENT_BITS), int(Core::P_DEPTH_BIAS), &rastersim::rtl::detail::run_configuration<Vrastersim_module>};
   return &configuration;
 }
 

@@ -84,6 +84,8 @@ int sc_main(int, char*[]) {
   sc_signal<uint32_t> cfg_texture_latency, cfg_texture_log2_width, cfg_texture_log2_height;
   sc_signal<bool> cfg_texture_bilinear, cfg_texture_clamp, cmd_textured, walker_frag_valid, walker_frag_ready;
   sc_signal<bool> texture_busy, texture_stall, tex_rd_valid, tex_rd_ready;
+  sc_signal<uint64_t> cfg_depth_bias_constant;  // and without the depth bias
+  sc_signal<uint32_t> cfg_depth_bias_slope;
   sc_signal<sc_dt::sc_bv<150>> cmd_texture[3];
   sc_signal<sc_dt::sc_bv<72>> tex_rd_addr;
   sc_signal<sc_dt::sc_bv<96>> tex_rd_texels;
@@ -122,6 +124,7 @@ int sc_main(int, char*[]) {
   core.cfg_texture_latency(cfg_texture_latency), core.cfg_texture_log2_width(cfg_texture_log2_width);
   core.cfg_texture_log2_height(cfg_texture_log2_height), core.cfg_texture_bilinear(cfg_texture_bilinear);
   core.cfg_texture_clamp(cfg_texture_clamp), core.cmd_textured(cmd_textured);
+  core.cfg_depth_bias_constant(cfg_depth_bias_constant), core.cfg_depth_bias_slope(cfg_depth_bias_slope);
   core.cmd_texture0(cmd_texture[0]), core.cmd_texture1(cmd_texture[1]), core.cmd_texture2(cmd_texture[2]);
   core.trace_walker_frag_valid(walker_frag_valid), core.trace_walker_frag_ready(walker_frag_ready);
   core.trace_texture_busy(texture_busy), core.trace_texture_stall(texture_stall);

@@ -23,6 +23,7 @@ Profile RastersimSystem::built_geometry() {
   p.subpixel_bits = int(Core::P_SUBPIXEL_BITS);
   p.z_bits = int(Core::P_Z_BITS);
   p.z_guard_bits = int(Core::P_Z_GUARD_BITS);
+  p.depth_exponent_bits = int(Core::P_DEPTH_EXPONENT_BITS);
   return p;
 }
 
@@ -44,6 +45,11 @@ std::string RastersimSystem::geometry_error(const Profile& p) {
            std::to_string(p.width) + ", height " + std::to_string(p.height) + ", subpixel_bits " +
            std::to_string(p.subpixel_bits) + ", z_bits " + std::to_string(p.z_bits) +
            "); RASTERSIM_SYSTEMC_CONFIG in testbench/systemc/CMakeLists.txt names the configuration it is built for";
+  if (depth_plane_bits(p.z_bits, p.depth_exponent_bits) != depth_plane_bits(p.z_bits, int(Core::P_DEPTH_EXPONENT_BITS)) ||
+      (p.depth_exponent_bits >= 2) != (int(Core::P_DEPTH_EXPONENT_BITS) >= 2))
+    return "depth_exponent_bits " + std::to_string(p.depth_exponent_bits) + ": the SystemC core is built with " +
+           std::to_string(int(Core::P_DEPTH_EXPONENT_BITS));
+  if (p.depth_biased() && int(Core::P_DEPTH_BIAS) == 0) return "a depth bias: the SystemC core is built without one";
   if (p.memory_latency > max_memory_latency())
     return "memory_latency " + std::to_string(p.memory_latency) + " exceeds the SystemC core's maximum " +
            std::to_string(max_memory_latency());
@@ -55,7 +61,6 @@ std::string RastersimSystem::geometry_error(const Profile& p) {
 
 std::string RastersimSystem::configuration_error(const Profile& p) {
   if (p.texture_unit) return kNoTextureUnitInSystemc;
-  if (std::string depth = depth_output_not_in_rtl(p); !depth.empty()) return depth;
   if (std::string error = geometry_error(p); !error.empty()) return error;
   if (p.setup_fifo_depth > int(Core::P_MAX_SETUP_FIFO_DEPTH))
     return "setup_fifo_depth " + std::to_string(p.setup_fifo_depth) + " exceeds the SystemC core's maximum " +
@@ -120,6 +125,7 @@ RastersimSystem::RastersimSystem(sc_core::sc_module_name name, int fifo_depth)
   core_.cfg_texture_log2_height(cfg_texture_log2_height_);
   core_.cfg_texture_bilinear(cfg_texture_bilinear_);
   core_.cfg_texture_clamp(cfg_texture_clamp_);
+  core_.cfg_depth_bias_constant(cfg_depth_bias_constant_), core_.cfg_depth_bias_slope(cfg_depth_bias_slope_);
   core_.cmd_textured(cmd_textured_);
   core_.cmd_texture0(cmd_texture0_), core_.cmd_texture1(cmd_texture1_), core_.cmd_texture2(cmd_texture2_);
   core_.trace_walker_frag_valid(trace_walker_frag_valid_);
@@ -179,6 +185,8 @@ void RastersimSystem::host() {
     cfg_shading_.write(p.shading == Shading::Gouraud);
     cfg_memory_latency_.write(uint32_t(p.memory_latency));
     cfg_setup_fifo_depth_.write(uint32_t(p.setup_fifo_depth));
+    cfg_depth_bias_constant_.write(uint64_t(p.depth_bias_constant) & ((uint64_t(1) << 33) - 1));
+    cfg_depth_bias_slope_.write(uint32_t(uint8_t(p.depth_bias_slope)));
     rst_.write(true);
     for (int i = 0; i < kResetCycles; ++i) wait();
     // The memory dropped clear_done at the first reset edge; the frame starts when it rises again.

@@ -76,6 +76,8 @@ class RastersimSystem : public sc_core::sc_module {
   // texture_unit).
   sc_core::sc_signal<uint32_t> cfg_texture_latency_, cfg_texture_log2_width_, cfg_texture_log2_height_;
   sc_core::sc_signal<bool> cfg_texture_bilinear_, cfg_texture_clamp_, cmd_textured_;
+  sc_core::sc_signal<uint64_t> cfg_depth_bias_constant_;  // the profile's (unused by a core without DEPTH_BIAS)
+  sc_core::sc_signal<uint32_t> cfg_depth_bias_slope_;
   sc_core::sc_signal<sc_dt::sc_bv<150>> cmd_texture0_, cmd_texture1_, cmd_texture2_;
   sc_core::sc_signal<bool> trace_walker_frag_valid_, trace_walker_frag_ready_, trace_texture_busy_, trace_texture_stall_;
   sc_core::sc_signal<bool> tex_rd_valid_, tex_rd_ready_;

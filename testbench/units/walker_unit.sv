@@ -27,6 +27,7 @@ module walker_unit #(
   output wire last
 );
 `include "rastersim_widths.vh"
+  localparam integer RECORD_Z_BITS = Z_BITS;  // the fixed-point depth word: the plane's bits
   `include "rastersim_record.vh"
   localparam integer F = rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS);
   localparam integer Z_REG_BITS = Z_BITS + F + 1;
@@ -58,8 +59,8 @@ module walker_unit #(
   wire [3*rs_texture_reg_bits(WIDTH, HEIGHT)-1:0] stq_unused;
   /* verilator lint_on UNUSEDSIGNAL */
   z_adder #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS)) adders (
-    .clk(clk), .cfg_shading(cfg_shading), .load(load), .step_x(adder_step_x),
-    .next_row(adder_next_row), .row_enter(adder_row_enter), .enter_left(adder_enter_left),
+    .clk(clk), .cfg_shading(cfg_shading), .cfg_depth_bias_constant(33'd0), .cfg_depth_bias_slope(8'd0),  // no bias
+    .load(load), .step_x(adder_step_x), .next_row(adder_next_row), .row_enter(adder_row_enter), .enter_left(adder_enter_left),
     .enter_slot(adder_enter_slot), .left_carry(adder_left_carry),
     .depth_start(in_record[LSB_DEPTH_START +: Z_REG_BITS]),
     .depth_step_x(in_record[LSB_DEPTH_STEP_X +: Z_REG_BITS]),

@@ -125,6 +125,8 @@ module rastersim_selftest (
     // Built without the texture unit: its ports tied off.
     .cfg_texture_latency(7'd1), .cfg_texture_log2_width(4'd0), .cfg_texture_log2_height(4'd0),
     .cfg_texture_bilinear(1'b0), .cfg_texture_clamp(1'b0),
+    // and without the depth bias
+    .cfg_depth_bias_constant(33'd0), .cfg_depth_bias_slope(8'd0),
     .cmd_textured(1'b0), .cmd_texture0(150'd0), .cmd_texture1(150'd0), .cmd_texture2(150'd0),
     .trace_walker_frag_valid(trace_walker_frag_valid), .trace_walker_frag_ready(trace_walker_frag_ready),
     .trace_texture_busy(trace_texture_busy), .trace_texture_stall(trace_texture_stall),
