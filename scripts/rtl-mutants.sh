@@ -145,12 +145,18 @@ from[serial_swap_deltas]='dx_q[d] <= -dx_q[2 - d];'
 to[serial_swap_deltas]='dx_q[d] <= dx_q[2 - d];'  # the swapped edges keep their x direction
 from[serial_product_step_x]='product_step_x_q <= product_step_x;'
 to[serial_product_step_x]='product_step_x_q <= depth_q[1];'  # the colour planes along the left edges step by the depth's step_x
+# Mutants of one file, built with the same parameters, that the cosim frames alone must catch.
+cosim_only_mutants() {
+  local in=$1 with=$2
+  shift 2
+  for m in "$@"; do
+    file[$m]=$in
+    params[$m]=$with
+    check[$m]=--cosim-only
+  done
+}
 # The texture unit (a textured profile's cosim frames: textures, filters, wraps, stall patterns).
-for m in "${texture_mutants[@]}"; do
-  file[$m]=texture_unit.sv
-  params[$m]="-GSETUP_INTERVAL=4 -GTEXTURE=1"
-  check[$m]=--cosim-only
-done
+cosim_only_mutants texture_unit.sv "-GSETUP_INTERVAL=4 -GTEXTURE=1" "${texture_mutants[@]}"
 from[texture_capacity]="(COUNT_BITS+1)'(34);"
 to[texture_capacity]="(COUNT_BITS+1)'(33);"  # the unit holds one fragment fewer: the walker waits a cycle early
 from[texture_bank_route]='wire [23:0] texel10 = tex_rd_texels[24*{py[1], px[0]} +: 24];'
@@ -186,11 +192,7 @@ file[setup_credit_count]=rastersim_core.sv
 from[setup_credit_count]='credits_held_q < setup_fifo_depth_q;'
 to[setup_credit_count]='credits_held_q <= setup_fifo_depth_q;'  # one record credit too many
 # The Z adder's depth output stage (a biased profile's cosim frames: bias constants and slopes).
-for m in "${depth_mutants[@]}"; do
-  file[$m]=z_adder.sv
-  params[$m]="-GSETUP_INTERVAL=4 -GDEPTH_EXPONENT_BITS=3 -GDEPTH_BIAS=1"
-  check[$m]=--cosim-only
-done
+cosim_only_mutants z_adder.sv "-GSETUP_INTERVAL=4 -GDEPTH_EXPONENT_BITS=3 -GDEPTH_BIAS=1" "${depth_mutants[@]}"
 from[depth_bias_shift]='wire signed [PB-1:0] unclamped = constant_part + (product >>> 4);'
 to[depth_bias_shift]='wire signed [PB-1:0] unclamped = constant_part + (product >>> 3);'  # the slope factor read as s5.3
 from[depth_bias_smaller_step]='wire [Z_REG_BITS-1:0] slope = magnitude_x > magnitude_y ? magnitude_x : magnitude_y;'
