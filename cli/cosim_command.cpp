@@ -68,6 +68,7 @@ struct FrameResult {
 std::string profile_summary(const Profile& p) {
   std::ostringstream s;
   s << p.width << "x" << p.height << " S=" << p.subpixel_bits << " N=" << p.z_bits;
+  if (p.depth_exponent_bits >= 2) s << " Ne=" << p.depth_exponent_bits;
   return s.str();
 }
 
@@ -398,6 +399,8 @@ int run_cosim(const CosimOptions& o) {
   if (profile.texture_unit)
     info << "; with the texture unit, random frames draw textured triangles, a texture, its filter and wrap mode,"
          << " texture_latency and the texture memory's stall pattern";
+  if (profile.depth_biased())
+    info << "; with the depth bias, random frames draw its constant and slope factor unless given or fixed";
   info << "\n";
   if (!holes.empty()) {
     info << "coverage: " << holes.size() << " reachable bin" << (holes.size() == 1 ? "" : "s") << " not hit:";
