@@ -83,9 +83,10 @@ std::optional<DepthBuffer> parse_depth_buffer(const std::string& s) {
 const std::vector<std::string>& profile_keys() {
   static const std::vector<std::string> keys = {
       "width", "height", "subpixel_bits", "z_bits", "z_guard_bits", "depth_func", "depth_write",
-      "depth_clear", "depth_buffer", "depth_exponent_bits", "depth_bias_constant", "depth_bias_slope", "cull", "front_face", "traversal", "shading", "memory_latency",
-      "memory_stall_percent", "memory_stall_seed", "setup_fifo_depth", "setup_interval", "texture_unit",
-      "perspective", "texture_latency", "texture_stall_percent", "texture_stall_seed"};
+      "depth_clear", "depth_buffer", "depth_exponent_bits", "depth_bias_constant", "depth_bias_slope", "cull",
+      "front_face", "traversal", "shading", "memory_latency", "memory_stall_percent", "memory_stall_seed",
+      "setup_fifo_depth", "setup_interval", "texture_unit", "perspective", "texture_latency",
+      "texture_stall_percent", "texture_stall_seed"};
   return keys;
 }
 

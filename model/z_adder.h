@@ -82,7 +82,8 @@ class DepthWord {
     const uint64_t mantissa = word & ((uint64_t(1) << mantissa_bits_) - 1);
     return e == 0 ? mantissa : ((uint64_t(1) << mantissa_bits_) + mantissa) << (e - 1);
   }
-  bool fixed_point() const { return exponent_bits_ == 0; }
+  // One exponent bit is the fixed-point word bit for bit (exponent 1 is X's top bit).
+  bool fixed_point() const { return exponent_bits_ <= 1; }
 
  private:
   int exponent_bits_, mantissa_bits_;
