@@ -83,16 +83,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
                   "stall pattern, in SystemC)")
       ->check(CLI::IsMember(backend_names()))
       ->type_name("NAME");
-  cmd->add_option("--texture", o.texture,
-                  "texture image for textured triangles (with the profile's texture_unit; a power of two "
-                  "up to 1024 on each side; default: the built-in scene's)")
-      ->type_name("FILE");
-  cmd->add_option("--texture-filter", o.texture_filter, "nearest or bilinear (default bilinear)")
-      ->check(CLI::IsMember({"nearest", "bilinear"}))
-      ->type_name("NAME");
-  cmd->add_option("--texture-wrap", o.texture_wrap, "repeat or clamp (default repeat)")
-      ->check(CLI::IsMember({"repeat", "clamp"}))
-      ->type_name("NAME");
+  add_texture_options(*cmd, o);
   cmd->add_option("--dump-tri", o.dump_tri_out,
                   "write the screen-space triangles the input produced (before snapping) as a .tri file")
       ->type_name("FILE");
@@ -107,6 +98,38 @@ void add_scene_options(CLI::App& app, RenderOptions& o) {
   cmd->add_option("--scene", o.scene, "built-in scene to render when no INPUT is given (see `rastersim scenes`)")
       ->type_name("NAME");
   add_camera_options(app, o);
+}
+
+void add_texture_options(CLI::App& cmd, RenderOptions& o) {
+  cmd.add_option("--texture", o.texture,
+                 "texture image for textured triangles (with the profile's texture_unit; a power of two "
+                 "up to 1024 on each side; default: the built-in scene's)")
+      ->type_name("FILE");
+  cmd.add_option("--texture-filter", o.texture_filter, "nearest or bilinear (default bilinear)")
+      ->check(CLI::IsMember({"nearest", "bilinear"}))
+      ->type_name("NAME");
+  cmd.add_option("--texture-wrap", o.texture_wrap, "repeat or clamp (default repeat)")
+      ->check(CLI::IsMember({"repeat", "clamp"}))
+      ->type_name("NAME");
+}
+
+TextureBinding texture_binding(const RenderOptions& o, const std::string& input, const std::string& scene,
+                               const Profile& profile) {
+  TextureBinding texture;
+  texture.filter = o.texture_filter == "nearest" ? TextureFilter::Nearest : TextureFilter::Bilinear;
+  texture.wrap = o.texture_wrap == "clamp" ? TextureWrap::Clamp : TextureWrap::Repeat;
+  if (!o.texture.empty()) texture.texture = std::make_shared<const Texture>(read_texture_file(o.texture));
+  else if (input.empty() && profile.texture_unit)  // (the scene is made once more for its texture)
+    texture.texture = builtin_scene_texture(scene.empty() ? "default" : scene);
+  return texture;
+}
+
+std::string texture_words(const RenderOptions& o) {
+  std::string words;
+  if (!o.texture.empty()) words += " --texture " + std::filesystem::path(o.texture).filename().string();
+  if (o.texture_filter != "bilinear") words += " --texture-filter " + o.texture_filter;
+  if (o.texture_wrap != "repeat") words += " --texture-wrap " + o.texture_wrap;
+  return words.empty() ? words : words.substr(1);
 }
 
 void add_camera_options(CLI::App& app, RenderOptions& o) {
@@ -193,12 +216,7 @@ int run_render(const RenderOptions& o) {
   }
 
   const std::vector<ScreenTriangle> screen = load_input(o.input, o.scene, profile, camera_options(o));
-  TextureBinding texture;
-  texture.filter = o.texture_filter == "nearest" ? TextureFilter::Nearest : TextureFilter::Bilinear;
-  texture.wrap = o.texture_wrap == "clamp" ? TextureWrap::Clamp : TextureWrap::Repeat;
-  if (!o.texture.empty()) texture.texture = std::make_shared<const Texture>(read_texture_file(o.texture));
-  else if (o.input.empty() && profile.texture_unit)  // (the scene is made once more for its texture)
-    texture.texture = builtin_scene_texture(o.scene.empty() ? "default" : o.scene);
+  const TextureBinding texture = texture_binding(o, o.input, o.scene, profile);
   std::vector<SnappedTriangle> snapped;
   snapped.reserve(screen.size());
   for (const ScreenTriangle& t : screen) snapped.push_back(snap(t, profile));

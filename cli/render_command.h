@@ -8,6 +8,8 @@
 #include <CLI/CLI.hpp>
 
 #include "frontend/frontend.h"
+#include "model/profile.h"
+#include "model/texture_unit.h"
 #include "outputs.h"
 #include "profile_options.h"
 
@@ -37,6 +39,13 @@ struct RenderOptions {
 CLI::App* add_render_command(CLI::App& app, RenderOptions& options);
 // INPUT, --scene and the camera flags (shared with `rastersim sweep`).
 void add_scene_options(CLI::App& command, RenderOptions& options);
+// --texture, --texture-filter, --texture-wrap (`rastersim vectors` takes them too), what they bind
+// for a profile (no --texture: the built-in scene's texture when there is no INPUT), and the flags
+// given as command-line words (the file by its bare name; empty when none is given).
+void add_texture_options(CLI::App& command, RenderOptions& options);
+TextureBinding texture_binding(const RenderOptions& options, const std::string& input, const std::string& scene,
+                               const Profile& profile);
+std::string texture_words(const RenderOptions& options);
 // The camera flags alone (`rastersim vectors` takes them too).
 void add_camera_options(CLI::App& command, RenderOptions& options);
 // The camera flags given, as command-line words ("--eye 3,2,4 --fov 40"; empty when none).

@@ -47,6 +47,7 @@ CLI::App* add_vectors_command(CLI::App& app, VectorsOptions& o) {
       ->type_name("MODULE");
   cmd->add_flag("--force", o.force, "replace the package already in --out");
   add_camera_options(*cmd, o.camera);
+  add_texture_options(*cmd, o.camera);
   add_profile_options(*cmd, o.profile);
   return cmd;
 }
@@ -65,8 +66,12 @@ int run_vectors(const VectorsOptions& o) {
     throw InputError("--rtl-path must be relative to the package folder (a package must not depend on where it was made)");
   if (!o.top.empty() && o.top != "rastersim_top" && o.top != "rastersim_core")
     throw InputError("--top must be rastersim_top or rastersim_core, not '" + o.top + "'");
-  if (profile.texture_unit) throw InputError(std::string("vectors: ") + kNoTextureUnitInVectors);
-  if (std::string depth = depth_output_not_in_vectors(profile); !depth.empty()) throw InputError("vectors: " + depth);
+  const std::string texture_flags = texture_words(o.camera);
+  if (!texture_flags.empty() && !profile.texture_unit)
+    throw InputError("the texture flags (" + texture_flags + ") need the profile's texture_unit");
+  if (!texture_flags.empty() && (random || !o.suite.empty()))
+    throw InputError("the texture flags apply to INPUT and --scene (--random draws its own texture, the suites are "
+                     "untextured)");
   if (o.top == "rastersim_top" && profile.memory_stall_percent > 0)
     throw InputError("--top rastersim_top with memory_stall_percent " + std::to_string(profile.memory_stall_percent) +
                      ": its on-chip memory has no back-pressure; use --top rastersim_core");
@@ -81,20 +86,25 @@ int run_vectors(const VectorsOptions& o) {
   vectors::check_package_dir(o.out, o.force);
   vectors::Source source;
   std::vector<SnappedTriangle> triangles;
+  TextureBinding texture;
   if (random) {
-    source = {"random", "", o.random, o.seed, ""};
-    triangles = rtl::random_case(profile, o.seed, int(o.random)).triangles;
+    source = {"random", "", o.random, o.seed, "", ""};
+    rtl::CosimCase drawn = rtl::random_case(profile, o.seed, int(o.random));
+    triangles = std::move(drawn.triangles);
+    texture = drawn.texture;
   } else if (!o.suite.empty()) {
-    source = {"suite", o.suite, 0, 0, ""};
+    source = {"suite", o.suite, 0, 0, "", ""};
     try {
       triangles = vectors::suite_triangles(o.suite, profile);
     } catch (const std::invalid_argument& e) {
       throw InputError(std::string("--suite: ") + e.what());
     }
   } else {
-    if (o.input.empty()) source = {"scene", o.scene.empty() ? "default" : o.scene, 0, 0, ""};
-    else source = {"file", std::filesystem::path(o.input).filename().string(), 0, 0, ""};
+    if (o.input.empty()) source = {"scene", o.scene.empty() ? "default" : o.scene, 0, 0, "", ""};
+    else source = {"file", std::filesystem::path(o.input).filename().string(), 0, 0, "", ""};
     source.camera = camera_words(o.camera);
+    source.texture = texture_flags;
+    texture = texture_binding(o.camera, o.input, o.scene, profile);
     for (const ScreenTriangle& t : load_input(o.input, o.scene, profile, camera_options(o.camera)))
       triangles.push_back(snap(t, profile));
   }
@@ -118,7 +128,7 @@ int run_vectors(const VectorsOptions& o) {
   options.rtl_path = o.rtl_path;
   options.testbench_path = o.testbench_path;
   options.external_memory = o.top == "rastersim_core" || (o.top.empty() && profile.memory_stall_percent > 0);
-  const vectors::Package package = vectors::build_package(profile, triangles, source, options);
+  const vectors::Package package = vectors::build_package(profile, triangles, source, options, texture);
   vectors::write_package(package, o.out, o.force, remember_temporary_folder);
   std::cout << "wrote " << o.out << ": " << package.triangles << " triangles (" << package.drawn << " drawn), "
             << package.fragments << " fragments, " << package.cycles << " cycles, " << profile.width << "x"

@@ -77,28 +77,12 @@ struct Profile {
   bool depth_biased() const { return depth_bias_constant != 0 || depth_bias_slope != 0; }
 };
 
-// Why the vector packages and the SystemC system refuse a profile with the texture unit: the model
-// and the RTL have it, their texture memory images and memory model are not built yet
+// Why the SystemC system refuses a profile with the texture unit: the model, the RTL and the vector
+// packages have it, the SystemC system's texture memory model is not built yet
 // (docs/design/texturing.md, step 4).
-inline constexpr const char* kNoTextureUnitInVectors =
-    "texture_unit: vector packages carry no texture memory image yet (the model and --backend rtl have the "
-    "texture unit)";
 inline constexpr const char* kNoTextureUnitInSystemc =
     "texture_unit: the SystemC system has no texture memory model yet (the model and --backend rtl have the "
     "texture unit)";
-
-// Why a vector package refuses a profile's depth output stage, or "": the model and the RTL have
-// the floating-point depth word and the depth bias (docs/arithmetic.md section 6), the packages'
-// testbench not yet (it instantiates the core without them). Ne = 1 is the fixed-point word bit
-// for bit.
-inline std::string depth_output_not_in_vectors(const Profile& p) {
-  std::string what;
-  if (p.depth_exponent_bits >= 2) what = "depth_exponent_bits " + std::to_string(p.depth_exponent_bits);
-  if (p.depth_biased()) what += (what.empty() ? "" : " and ") + std::string("a depth bias");
-  if (what.empty()) return "";
-  return what + ": vector packages carry neither the floating-point depth word nor the depth bias yet (the model "
-                "and --backend rtl have both)";
-}
 
 // Every error found, each a sentence naming the key; empty when the profile is valid.
 std::vector<std::string> validate(const Profile& profile);

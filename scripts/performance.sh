@@ -87,11 +87,11 @@ echo "co-simulation (RTL + traced model + comparison): $(value 'cycles' 6 "$out/
 package="$root/vectors/scene-default"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-testbench="$root/testbench/vectors/rastersim_vectors_tb.v"
+testbench=("$root/testbench/vectors/rastersim_vectors_tb.v" "$root/testbench/vectors/rastersim_memory_model.v")
 iverilog -g2012 -I "$package" -I "$root/rtl" -s rastersim_vectors_tb -s perf_clock_count -o "$work/tb.vvp" \
-  "$testbench" "$root/bench/perf_clock_count.v" "$root"/rtl/*.sv
+  "${testbench[@]}" "$root/bench/perf_clock_count.v" "$root"/rtl/*.sv
 verilator --binary -j 2 -O3 -Wno-fatal -Wno-lint -Wno-style --top-module rastersim_vectors_tb -I"$package" -I"$root/rtl" \
-  --Mdir "$work/obj" -o tb "$testbench" "$root/bench/perf_clock_count.v" "$root"/rtl/*.sv \
+  --Mdir "$work/obj" -o tb "${testbench[@]}" "$root/bench/perf_clock_count.v" "$root"/rtl/*.sv \
   > "$work/verilator.log" 2>&1
 cpu_seconds() { /usr/bin/time -f '%U %S' -o "$work/time" "$@" > "$work/log" 2>&1; awk '{ print $1 + $2 }' "$work/time"; }
 icarus=$(cd "$package" && cpu_seconds vvp -n "$work/tb.vvp")

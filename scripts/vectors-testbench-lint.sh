@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Verilator -Wall lint of the package testbench (testbench/vectors/rastersim_vectors_tb.v), memory
-# model (rastersim_memory_model.v) and board self-test (rastersim_selftest.v) with the parameter files of three packages this build
-# writes: Gouraud and flat shading (their setup layouts differ) and a package of rastersim_core
-# with back-pressure (the memory model on its memory port), each with and without the setup record. Waivers: testbench/vectors/lint_waivers.vlt
+# model (rastersim_memory_model.v) and board self-test (rastersim_selftest.v) with the parameter files of five packages this build
+# writes: Gouraud and flat shading (their setup layouts differ), a package of rastersim_core
+# with back-pressure (the memory model on its memory port), the floating-point depth word with a
+# depth bias, and the texture unit in rastersim_core (the texture memory beside it; no self-test),
+# each with and without the setup record. Waivers: testbench/vectors/lint_waivers.vlt
 # and rtl/lint_waivers.vlt, each with its reason. Exit 1 on any warning.
 # Usage: scripts/vectors-testbench-lint.sh [RASTERSIM]   (default: build/rastersim)
 set -euo pipefail
@@ -11,10 +13,12 @@ exe="${1:-$root/build/rastersim}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 status=0
-for variant in gouraud flat core; do
+for variant in gouraud flat core depth texture; do
   package="$work/$variant"
   case "$variant" in
     core) flags=(--memory-stall-percent 30) ;;
+    depth) flags=(--depth-exponent-bits 3 --depth-bias-constant -9 --depth-bias-slope 1) ;;
+    texture) flags=(--texture-unit true --texture-stall-percent 20 --top rastersim_core) ;;
     *) flags=(--shading "$variant") ;;
   esac
   "$exe" vectors --suite depth --width 16 --height 12 "${flags[@]}" --rtl-path ../../rtl \
@@ -31,6 +35,7 @@ for variant in gouraud flat core; do
     fi
   done
   # The board self-test (synthesizable: SYNTHESIS hides its simulation wrapper, as yosys does).
+  [ "$variant" = texture ] && continue  # a package with the texture unit has none
   if ! out=$(verilator --lint-only -Wall -DSYNTHESIS -I"$package" -I"$root/rtl" "$root/rtl/lint_waivers.vlt" \
                "$root/testbench/vectors/lint_waivers.vlt" --top-module rastersim_selftest \
                "$root/testbench/vectors/rastersim_selftest.v" "$root"/rtl/*.sv 2>&1); then

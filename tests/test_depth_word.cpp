@@ -231,14 +231,6 @@ TEST(DepthBias, ProfileKeysReadAndRefuse) {
   p.depth_func = DepthFunc::Greater;
   EXPECT_TRUE(validate(p).empty());
   EXPECT_EQ(p.depth_clear_value(), 0u);
-  // The vector packages have the fixed-point word (Ne 0 and 1) and no bias.
-  EXPECT_EQ(depth_output_not_in_vectors(p), "");
-  p.depth_exponent_bits = 1;
-  EXPECT_EQ(depth_output_not_in_vectors(p), "");
-  p.depth_exponent_bits = 2;
-  EXPECT_NE(depth_output_not_in_vectors(p), "");
-  p.depth_exponent_bits = 0, p.depth_bias_slope = 1;
-  EXPECT_NE(depth_output_not_in_vectors(p), "");
 }
 
 }  // namespace

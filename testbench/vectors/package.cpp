@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -47,8 +48,8 @@ std::string generator_name() { return std::string("rastersim ") + RASTERSIM_VERS
 
 std::string Source::arguments() const {
   if (kind == "random") return "--random " + std::to_string(count) + " --seed " + std::to_string(seed);
-  if (kind == "suite") return "--suite " + name;
-  const std::string camera_words = camera.empty() ? "" : " " + camera;
+  if (kind == "suite") return "--suite " + name + (texture.empty() ? "" : " " + texture);
+  const std::string camera_words = (camera.empty() ? "" : " " + camera) + (texture.empty() ? "" : " " + texture);
   if (kind == "scene") return "--scene " + name + camera_words;
   return name + camera_words;  // a file
 }
@@ -110,6 +111,25 @@ std::string json_text(const Json& j, int level = 0) {
   return out + std::string(size_t(2 * level), ' ') + (j.is_object() ? "}" : "]");
 }
 
+// The texture record's register 3 g + c (setup_record.h texture_record_field): "s_start",
+// "t_step_x", "left1_q_step", ...
+std::string texture_register_name(int g, int c) {
+  static const char* const groups[] = {"start", "step_x", "step_y", "start", "step", "start", "step"};
+  const std::string channel = std::string(1, "stq"[c]) + "_" + groups[g];
+  return g < 3 ? channel : "left" + std::to_string((g - 3) / 2) + "_" + channel;
+}
+std::string texture_register_meaning(int g, int c) {
+  const std::string plane = std::string(c == 0 ? "S" : c == 1 ? "T" : "Q");
+  switch (g) {
+    case 0: return plane + " at the first candidate";
+    case 1: return plane + " per pixel in x";
+    case 2: return plane + " per pixel in y";
+    default:
+      return "left-edge slot " + std::to_string((g - 3) / 2) + ": " + plane +
+             (g % 2 ? " at the edge's span start on the first row" : "'s change per row without the DDA carry");
+  }
+}
+
 }  // namespace
 
 Layouts make_layouts(const Profile& p) {
@@ -121,9 +141,21 @@ Layouts make_layouts(const Profile& p) {
     l.commands.add("y" + v, w.coord_bits, true, "vertex " + v + " y, subpixels (s.S)");
   }
   for (int k = 0; k < 3; ++k)
-    l.commands.add("z" + std::to_string(k), p.z_bits, false, "vertex " + std::to_string(k) + " depth (uN)");
+    l.commands.add("z" + std::to_string(k), p.depth_plane_bits(), false,
+                   "vertex " + std::to_string(k) + " depth (uNp, Np = the depth plane's bits)");
   for (int k = 0; k < 3; ++k)
     l.commands.add("rgb" + std::to_string(k), 24, false, "vertex " + std::to_string(k) + " colour 0xRRGGBB");
+  l.texture_unit = p.texture_unit;
+  if (p.texture_unit) {  // cmd_textured and cmd_texture0..2 (S, T, Q of docs/arithmetic.md section 5)
+    l.commands.add("textured", 1, false, "1: the triangle is textured (S, T, Q below); 0: they are ignored");
+    for (int k = 0; k < 3; ++k) {
+      const std::string v = std::to_string(k), P = std::to_string(kTextureFractionBits);
+      l.commands.add("s" + v, kTextureVertexBits, true, "vertex " + v + " S = u/w in the triangle's scale, s8." + P);
+      l.commands.add("t" + v, kTextureVertexBits, true, "vertex " + v + " T = v/w, s8." + P);
+      l.commands.add("q" + v, kTextureVertexBits, false, "vertex " + v + " Q = w_min/w, u1." + P + " (at most 1)");
+    }
+    l.texture.add("rgb", 24, false, "texel 0xRRGGBB; address row * texture width + column, row 0 at v = 0");
+  }
 
   const char* const none = "; -1 (all ones): none";
   l.triangles.add("status", 3, false, "setup decision: 0 drawn, 1 degenerate, 2 culled, 3 offscreen, 4 no centre");
@@ -138,6 +170,13 @@ Layouts make_layouts(const Profile& p) {
   l.setup.add("tri", 32, false, "triangle index (line of commands.hex)");
   for (const rtl::SetupRecordField& f : rtl::setup_record_fields(w, p.shading == Shading::Gouraud))
     l.setup.add(f.name, f.bits, f.is_signed, f.meaning);
+  if (p.texture_unit) {  // the texture record (rec_texture: setup_record.h), register 3 g + c
+    l.setup.add("textured", 1, false, "the texture record's flag (0: every texture register is 0)");
+    for (int g = 0; g < rtl::kTextureRecordGroups; ++g)
+      for (int c = 0; c < 3; ++c)
+        l.setup.add(texture_register_name(g, c), w.texture_reg_bits, true,
+                    "texture plane register, s9.(P+Ft), wrapped: " + texture_register_meaning(g, c));
+  }
 
   l.fragments.add("tri", 32, false, "triangle index");
   l.fragments.add("cycle", 32, true, "cycle the z-buffer took it (frag_valid and frag_ready)");
@@ -168,14 +207,17 @@ Layouts make_layouts(const Profile& p) {
       {"walker_stall", "cycles with trace_frag_valid and not trace_frag_ready"},
       {"zbuffer_busy", "cycles with trace_zbuffer_busy"},
       {"zbuffer_stall", "cycles with trace_zbuffer_stall (hazards, memory back-pressure)"},
+      {"texture_busy", "cycles with trace_texture_busy (0 without the texture unit)"},
+      {"texture_stall", "cycles with trace_texture_stall: a read waiting for the texture memory"},
   };
   for (const auto& [name, meaning] : frame_fields) l.frame.add(name, 32, false, meaning);
   return l;
 }
 
 std::vector<VectorFile> vector_files(const Layouts& l) {
-  return {
+  std::vector<VectorFile> files = {
       {"commands.hex", &l.commands, "input: one triangle command per line, in submission order"},
+      {"texture.hex", &l.texture, "input: the texture memory image, loaded through texture_load_* during reset"},
       {"triangles.hex", &l.triangles, "expected: one transaction record per triangle (decision and cycles)"},
       {"setup.hex", &l.setup, "expected: the setup record of every drawn triangle (in setup_done), in order"},
       {"fragments.hex", &l.fragments, "expected: every fragment the z-buffer takes, in order"},
@@ -183,6 +225,8 @@ std::vector<VectorFile> vector_files(const Layouts& l) {
       {"color.hex", &l.color, "expected: the final colour memory, one word per pixel"},
       {"frame.hex", &l.frame, "expected: the frame's counters (one line)"},
   };
+  if (!l.texture_unit) files.erase(files.begin() + 1);
+  return files;
 }
 
 namespace {
@@ -205,48 +249,65 @@ using rtl::rgb_word;
 }  // namespace
 
 Package build_package(const Profile& profile, const std::vector<SnappedTriangle>& tris, const Source& source,
-                      const PackageOptions& options) {
+                      const PackageOptions& options, const TextureBinding& texture) {
   const std::vector<std::string> problems = validate(profile);
   if (!problems.empty()) throw InputError("invalid profile: " + problems.front());
   if (profile.memory_stall_percent > 0 && !options.external_memory)
     throw InputError("memory_stall_percent " + std::to_string(profile.memory_stall_percent) +
                      ": rastersim_top's on-chip memory has no back-pressure; a package of rastersim_core "
                      "(--top rastersim_core) puts a memory model with the stall pattern on its memory port");
-  const rtl::RtlResult model = rtl::run_model(profile, tris);
+  const rtl::RtlResult model = rtl::run_model(profile, tris, texture);
   const Layouts layouts = make_layouts(profile);
   const Widths widths = derive_widths(profile);
   const std::vector<rtl::SetupRecordField> record_fields =
       rtl::setup_record_fields(widths, profile.shading == Shading::Gouraud);
 
-  std::vector<std::vector<int64_t>> commands, triangles, setups, fragments, depth, color;
+  std::map<std::string, std::vector<std::vector<int64_t>>> words;  // by file
   for (const SnappedTriangle& t : tris) {
     std::vector<int64_t> w;
     for (const SnappedVertex& v : t.v) w.push_back(v.x), w.push_back(v.y);
     for (const SnappedVertex& v : t.v) w.push_back(v.z);
     for (const SnappedVertex& v : t.v) w.push_back(rgb_word(v.color));
-    commands.push_back(w);
+    if (profile.texture_unit) {
+      w.push_back(t.textured ? 1 : 0);
+      for (const SnappedVertex& v : t.v) w.push_back(v.s), w.push_back(v.t), w.push_back(v.q);
+    }
+    words["commands.hex"].push_back(w);
   }
+  // The texture memory image (no texture bound: the one white texel the model samples then).
+  const int log2_texture_width = texture.texture ? texture.texture->log2_width() : 0;
+  const int log2_texture_height = texture.texture ? texture.texture->log2_height() : 0;
+  if (profile.texture_unit)
+    for (int j = 0; j < 1 << log2_texture_height; ++j)
+      for (int i = 0; i < 1 << log2_texture_width; ++i)
+        words["texture.hex"].push_back({int64_t(texture.texture ? texture.texture->texel(i, j) : 0xFFFFFFu)});
   int64_t drawn = 0;
   for (size_t i = 0; i < model.triangles.size(); ++i) {
     const TriangleRecord& r = model.triangles[i];
-    triangles.push_back({int64_t(r.status), cycle_field(r.setup_accept), cycle_field(r.setup_done),
-                         cycle_field(r.walker_load), cycle_field(r.walker_end), r.fragments, r.depth_pass,
-                         cycle_field(r.last_write)});
+    words["triangles.hex"].push_back({int64_t(r.status), cycle_field(r.setup_accept), cycle_field(r.setup_done),
+                                      cycle_field(r.walker_load), cycle_field(r.walker_end), r.fragments,
+                                      r.depth_pass, cycle_field(r.last_write)});
     if (r.status != SetupStatus::Drawn) continue;
     ++drawn;
     const SetupResult& s = model.setups[i];
     std::vector<int64_t> w = {int64_t(i)};
     for (const rtl::SetupRecordField& f : record_fields) w.push_back(f.get(s));
-    setups.push_back(w);
+    if (profile.texture_unit) {
+      w.push_back(s.textured ? 1 : 0);
+      for (int g = 0; g < rtl::kTextureRecordGroups; ++g)
+        for (int c = 0; c < 3; ++c) w.push_back(rtl::texture_record_field(s, g, c));
+    }
+    words["setup.hex"].push_back(w);
   }
   for (const Fragment& f : model.fragments)
-    fragments.push_back({f.tri, cycle_field(f.cycle), f.x, f.y, f.z, rgb_word(f.color), f.pass ? 1 : 0});
-  for (size_t a = 0; a < model.depth.size(); ++a) depth.push_back({model.depth[a]}), color.push_back({model.color[a]});
+    words["fragments.hex"].push_back({f.tri, cycle_field(f.cycle), f.x, f.y, f.z, rgb_word(f.color), f.pass ? 1 : 0});
+  for (size_t a = 0; a < model.depth.size(); ++a)
+    words["depth.hex"].push_back({model.depth[a]}), words["color.hex"].push_back({model.color[a]});
   const FrameStats& st = model.stats;
-  const std::vector<std::vector<int64_t>> frame = {
-      {cycle_field(st.cycles), st.triangles, st.triangles_drawn, st.triangles_degenerate, st.triangles_culled,
-       st.triangles_offscreen, st.triangles_no_centre, st.candidates, st.fragments, st.depth_pass, st.depth_fail, st.setup.busy,
-       st.setup.stall, st.walker.busy, st.walker.stall, st.zbuffer.busy, st.zbuffer.stall}};
+  words["frame.hex"] = {{cycle_field(st.cycles), st.triangles, st.triangles_drawn, st.triangles_degenerate,
+                         st.triangles_culled, st.triangles_offscreen, st.triangles_no_centre, st.candidates,
+                         st.fragments, st.depth_pass, st.depth_fail, st.setup.busy, st.setup.stall, st.walker.busy,
+                         st.walker.stall, st.zbuffer.busy, st.zbuffer.stall, st.texture.busy, st.texture.stall}};
 
   PackageFacts facts;
   facts.profile = profile;
@@ -257,6 +318,10 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   facts.fragments = int64_t(model.fragments.size());
   facts.cycles = st.cycles;
   facts.words = int64_t(profile.width) * profile.height;
+  facts.log2_texture_width = log2_texture_width;
+  facts.log2_texture_height = log2_texture_height;
+  facts.texture_filter = texture.filter;
+  facts.texture_wrap = texture.wrap;
   facts.source_text = source_text(source);
   facts.rtl_included = options.rtl_path.empty();
   facts.rtl_folder = facts.rtl_included ? "rtl" : options.rtl_path;
@@ -274,22 +339,25 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   package.fragments = facts.fragments;
   package.cycles = st.cycles;
   const std::vector<VectorFile> files = vector_files(layouts);
-  const std::vector<std::vector<int64_t>>* contents[] = {&commands, &triangles, &setups, &fragments,
-                                                         &depth,    &color,     &frame};
   package.files.push_back({"README.md", readme_text(facts), false});
   package.files.push_back({kParamsFile, params_text(facts), false});
   package.files.push_back({"run_icarus.sh", icarus_script(facts), true});
   package.files.push_back({"run_verilator.sh", verilator_script(facts), true});
-  package.files.push_back({"run_selftest_icarus.sh", selftest_icarus_script(facts), true});
-  package.files.push_back({"build_selftest_hx8k.sh", selftest_hx8k_script(facts), true});
-  package.files.push_back({kSelftestCrcFile, selftest_crcs(facts, model.depth, model.color), false});
-  package.files.push_back({kSelftestPinFile, selftest_pins(), false});
+  // The board self-test has no texture memory (a texture unit and its memory do not fit the HX8K).
+  const bool selftest = !profile.texture_unit;
+  if (selftest) {
+    package.files.push_back({"run_selftest_icarus.sh", selftest_icarus_script(facts), true});
+    package.files.push_back({"build_selftest_hx8k.sh", selftest_hx8k_script(facts), true});
+    package.files.push_back({kSelftestCrcFile, selftest_crcs(facts, model.depth, model.color), false});
+    package.files.push_back({kSelftestPinFile, selftest_pins(), false});
+  }
   for (const EmbeddedFile& f : embedded_package_tools()) {
     const bool testbench = f.name == kTestbenchFile || f.name == kMemoryModelFile || f.name == kSelftestFile;
     if (testbench && !options.testbench_path.empty()) continue;
+    if (f.name == kSelftestFile && !selftest) continue;
     package.files.push_back({f.name, std::string(reinterpret_cast<const char*>(f.data), f.size), !testbench});
   }
-  for (size_t k = 0; k < files.size(); ++k) package.files.push_back({files[k].path, lines(*files[k].layout, *contents[k]), false});
+  for (const VectorFile& f : files) package.files.push_back({f.path, lines(*f.layout, words[f.path]), false});
   if (facts.rtl_included)
     for (const EmbeddedFile& f : embedded_rtl())
       package.files.push_back({std::string("rtl/") + f.name, std::string(reinterpret_cast<const char*>(f.data), f.size), false});
@@ -307,6 +375,7 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   } else {
     m["source"]["name"] = source.name;
     if (!source.camera.empty()) m["source"]["camera"] = source.camera;
+    if (!source.texture.empty()) m["source"]["texture"] = source.texture;
   }
   m["regenerate"] = facts.regenerate_command;
   m["profile"] = Json::parse(profile_to_json(profile));
@@ -323,6 +392,7 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   wj["z_reg_bits"] = widths.z_reg_bits;
   wj["color_reg_bits"] = widths.color_reg_bits;
   wj["divider_bits"] = widths.divider_bits;
+  wj["depth_plane_bits"] = profile.depth_plane_bits();
   const SetupTiming setup = setup_timing(profile);
   wj["setup_drawn_latency"] = setup.drawn_latency;
   wj["setup_rejected_latency"] = setup.rejected_latency;
@@ -334,7 +404,13 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
                        {"SUBPIXEL_BITS", profile.subpixel_bits},
                        {"Z_BITS", profile.z_bits},
                        {"Z_GUARD_BITS", profile.z_guard_bits},
-                       {"MAX_MEMORY_LATENCY", profile.memory_latency}};
+                       {"MAX_MEMORY_LATENCY", profile.memory_latency},
+                       {"MAX_SETUP_FIFO_DEPTH", profile.setup_fifo_depth},
+                       {"SETUP_INTERVAL", profile.setup_interval},
+                       {"DEPTH_EXPONENT_BITS", profile.depth_exponent_bits},
+                       {"DEPTH_BIAS", profile.depth_biased() ? 1 : 0},
+                       {"TEXTURE", profile.texture_unit ? 1 : 0},
+                       {"MAX_TEXTURE_LATENCY", profile.texture_latency}};
   rtl["included"] = facts.rtl_included;
   rtl["folder"] = facts.rtl_folder;
   if (facts.rtl_included) {

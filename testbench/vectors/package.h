@@ -9,15 +9,19 @@
 #include <vector>
 
 #include "model/profile.h"
+#include "model/texture_unit.h"
 #include "model/triangle.h"
 #include "testbench/vectors/word_layout.h"
 
 namespace rastersim::vectors {
 
 // Bumped when a file, a layout or the testbench's contract changes incompatibly (docs/vectors.md).
-constexpr int kFormatVersion = 5;  // 2: check_manifest.py added; 3: status no_centre, its counter;
+constexpr int kFormatVersion = 6;  // 2: check_manifest.py added; 3: status no_centre, its counter;
                                    // 4: one testbench with a parameter file, +functional;
-                                   // 5: the planes along the left edges in setup.hex, setup cycles
+                                   // 5: the planes along the left edges in setup.hex, setup cycles;
+                                   // 6: commands' depths in the depth plane's bits, the depth word's
+                                   //    and the depth bias's parameters; the texture unit (texture.hex,
+                                   //    S, T, Q commands, the texture record), two frame counters
 
 // Where the triangles came from, recorded in the manifest and in the regeneration command.
 struct Source {
@@ -26,6 +30,7 @@ struct Source {
   int64_t count = 0;  // random: triangles
   uint64_t seed = 0;  // random: seed
   std::string camera; // scene or file: the camera flags given (3D inputs), as command-line words
+  std::string texture; // scene or file with the texture unit: the texture flags given, as words
   // The words of `rastersim vectors` that select these triangles (a file by its bare name).
   std::string arguments() const;
 };
@@ -44,9 +49,11 @@ struct PackageOptions {
   bool external_memory = false;
 };
 
-// The word layouts of the vector files for one profile.
+// The word layouts of the vector files for one profile; texture.hex (the texture memory image)
+// only in a package with the texture unit.
 struct Layouts {
-  WordLayout commands, triangles, setup, fragments, depth, color, frame;
+  WordLayout commands, texture, triangles, setup, fragments, depth, color, frame;
+  bool texture_unit = false;
 };
 Layouts make_layouts(const Profile& profile);
 
@@ -61,9 +68,10 @@ struct Package {
   int64_t triangles = 0, drawn = 0, fragments = 0, cycles = 0;
 };
 
-// Runs the model on the triangles (checked and snapped) and assembles every file in memory.
+// Runs the model on the triangles (checked and snapped) and assembles every file in memory. With
+// the profile's texture unit the texture unit samples `texture` (none: one white texel).
 Package build_package(const Profile& profile, const std::vector<SnappedTriangle>& triangles, const Source& source,
-                      const PackageOptions& options);
+                      const PackageOptions& options, const TextureBinding& texture = {});
 
 // Throws InputError (naming --out) unless out_dir can receive a package: its parent folder exists
 // and out_dir is missing, an empty folder, or (with `force`) a folder holding a package.

@@ -34,7 +34,8 @@ int64_t vector_words(const PackageFacts& k, const std::string& path) {
   const std::map<std::string, int64_t> words = {{"commands.hex", k.triangles}, {"triangles.hex", k.triangles},
                                                 {"setup.hex", k.drawn},        {"fragments.hex", k.fragments},
                                                 {"depth.hex", k.words},        {"color.hex", k.words},
-                                                {"frame.hex", 1}};
+                                                {"frame.hex", 1},
+                                                {"texture.hex", int64_t(1) << (k.log2_texture_width + k.log2_texture_height)}};
   return words.at(path);
 }
 
@@ -45,6 +46,7 @@ namespace {
 std::string layout_params(const std::string& prefix, const WordLayout& layout) {
   const std::vector<Field>& fields = layout.fields();
   const size_t n = fields.size();
+  if (n > 128) throw std::logic_error("params: more than 128 fields (the testbench's field_place) in " + prefix);
   std::ostringstream v;
   v << "localparam integer " << prefix << "_BITS = " << layout.word_bits() << ";\n"
     << "localparam integer " << prefix << "_FIELDS = " << n << ";\n";
@@ -102,6 +104,14 @@ std::string params_text(const PackageFacts& k) {
     << "localparam integer SETUP_INTERVAL = " << p.setup_interval << ";  // 0: serial setup; I: pipelined\n"
     << "localparam integer MEMORY_STALL_PERCENT = " << p.memory_stall_percent << ";  // the memory model's back-pressure\n"
     << "localparam integer MEMORY_STALL_SEED = " << p.memory_stall_seed << ";\n"
+    << "localparam integer DEPTH_EXPONENT_BITS = " << p.depth_exponent_bits
+    << ";  // 0: the fixed-point depth word; Ne: the floating-point word\n"
+    << "localparam integer DEPTH_BIAS = " << (p.depth_biased() ? 1 : 0) << ";  // 1: the core's depth bias stage\n"
+    << "localparam integer TEXTURE = " << (p.texture_unit ? 1 : 0) << ";  // 1: the texture unit and texture.hex\n"
+    << "localparam integer TEXTURE_LATENCY = " << p.texture_latency
+    << ";  // cfg_texture_latency and MAX_TEXTURE_LATENCY\n"
+    << "localparam integer TEXTURE_STALL_PERCENT = " << p.texture_stall_percent << ";  // texture_refuse's pattern\n"
+    << "localparam integer TEXTURE_STALL_SEED = " << p.texture_stall_seed << ";\n"
     << (k.external_memory ? "// The package tests rastersim_core with rastersim_memory_model.v on its memory port.\n"
                             "`define RS_EXTERNAL_MEMORY\n"
                           : "")
@@ -118,6 +128,8 @@ std::string params_text(const PackageFacts& k) {
     << "localparam integer SPAN_REM_BITS = " << w.span_rem_bits << ";\n"
     << "localparam integer Z_REG_BITS = " << w.z_reg_bits << ";\n"
     << "localparam integer COLOR_REG_BITS = " << w.color_reg_bits << ";\n"
+    << "localparam integer DEPTH_PLANE_BITS = " << p.depth_plane_bits() << ";  // the commands' depths (Z_BITS: fixed point)\n"
+    << "localparam integer TEXTURE_REG_BITS = " << w.texture_reg_bits << ";  // the texture record's registers\n"
     << "\n// The run-time keys, as the cfg_* inputs take them (sampled while rst is high).\n"
     << "localparam [2:0] CFG_DEPTH_FUNC = " << bits_literal(3, int(p.depth_func)) << ";  // " << to_string(p.depth_func) << "\n"
     << "localparam [0:0] CFG_DEPTH_WRITE = " << bits_literal(1, p.depth_write) << ";\n"
@@ -131,12 +143,25 @@ std::string params_text(const PackageFacts& k) {
     << to_string(p.shading) << "\n"
     << "localparam [LATENCY_BITS-1:0] CFG_MEMORY_LATENCY = " << bits_literal(latency_bits, p.memory_latency) << ";\n"
     << "localparam [FIFO_BITS-1:0] CFG_SETUP_FIFO_DEPTH = " << bits_literal(fifo_bits, p.setup_fifo_depth) << ";\n"
+    << "localparam [32:0] CFG_DEPTH_BIAS_CONSTANT = " << bits_literal(33, p.depth_bias_constant & ((int64_t(1) << 33) - 1))
+    << ";  // " << p.depth_bias_constant << " (two's complement)\n"
+    << "localparam [7:0] CFG_DEPTH_BIAS_SLOPE = " << bits_literal(8, p.depth_bias_slope & 255) << ";  // "
+    << p.depth_bias_slope << " / 16 (s4.4)\n"
+    << "localparam [6:0] CFG_TEXTURE_LATENCY = " << bits_literal(7, p.texture_unit ? p.texture_latency : 1) << ";\n"
+    << "localparam [3:0] CFG_TEXTURE_LOG2_WIDTH = " << bits_literal(4, k.log2_texture_width) << ";\n"
+    << "localparam [3:0] CFG_TEXTURE_LOG2_HEIGHT = " << bits_literal(4, k.log2_texture_height) << ";\n"
+    << "localparam [0:0] CFG_TEXTURE_BILINEAR = " << bits_literal(1, k.texture_filter == TextureFilter::Bilinear)
+    << ";  // " << (k.texture_filter == TextureFilter::Bilinear ? "bilinear" : "nearest") << "\n"
+    << "localparam [0:0] CFG_TEXTURE_CLAMP = " << bits_literal(1, k.texture_wrap == TextureWrap::Clamp) << ";  // "
+    << (k.texture_wrap == TextureWrap::Clamp ? "clamp" : "repeat") << "\n"
     << "\n// The vectors.\n"
     << "localparam integer TRIANGLES = " << k.triangles << ";  // commands.hex, triangles.hex\n"
     << "localparam integer DRAWN = " << k.drawn << ";  // setup.hex\n"
     << "localparam integer FRAGMENTS = " << k.fragments << ";  // fragments.hex\n"
     << "localparam integer WORDS = " << k.words << ";  // depth.hex, color.hex: WIDTH * HEIGHT\n"
     << "localparam integer CYCLES = " << k.cycles << ";  // the frame's cycles (frame.hex)\n"
+    << "localparam integer TEXELS = " << (int64_t(1) << (k.log2_texture_width + k.log2_texture_height))
+    << ";  // texture.hex (TEXTURE 1): 2^CFG_TEXTURE_LOG2_WIDTH x 2^CFG_TEXTURE_LOG2_HEIGHT\n"
     << "\n// Word layouts: each field's slot (lowest bit, slot bits), own width and signedness.\n"
     << "localparam integer MAX_WORD_BITS = " << max_word_bits << ";\n"
     << layout_params("COMMAND", l.commands) << layout_params("TRIANGLE", l.triangles)
@@ -330,7 +355,9 @@ std::string readme_text(const PackageFacts& k) {
     << "The testbench instantiates `" << top << "` with the parameters WIDTH = " << p.width << ", HEIGHT = " << p.height
     << ", SUBPIXEL_BITS = " << p.subpixel_bits << ",\nZ_BITS = " << p.z_bits << ", Z_GUARD_BITS = " << p.z_guard_bits
     << " (0: derived), MAX_MEMORY_LATENCY = " << p.memory_latency << ", MAX_SETUP_FIFO_DEPTH = " << p.setup_fifo_depth
-    << ", SETUP_INTERVAL = " << p.setup_interval
+    << ", SETUP_INTERVAL = " << p.setup_interval << ",\nDEPTH_EXPONENT_BITS = " << p.depth_exponent_bits
+    << ", DEPTH_BIAS = " << (p.depth_biased() ? 1 : 0) << ", TEXTURE = " << (p.texture_unit ? 1 : 0)
+    << ", MAX_TEXTURE_LATENCY = " << p.texture_latency
     << "\nand the ports of rastersim/rtl/" << top << ".sv. A port with the same module name, parameters and ports "
     << "runs unchanged:\n`RTL_DIR=path/to/port ./run_icarus.sh`. The setup record (setup.hex) is read from the "
     << "internal wires `" << (k.external_memory ? "dut" : "dut.core") << ".rec_*`\n(`SIM_FLAGS=-DRS_RECORD_PATH=dut.other` "
@@ -346,6 +373,16 @@ std::string readme_text(const PackageFacts& k) {
                   "memory, so the cycle numbers hold under back-pressure. The final memories are read\nthrough the "
                   "model's read-back port.\n"
             : "")
+    << (p.texture_unit
+            ? "\nThe texture unit reads the texture memory of rastersim/rtl/texture_memory.sv (in rastersim_top; beside "
+              "rastersim_core in a\npackage of the core), loaded before the frame with texture.hex: after the four reset "
+              "edges rst stays high\nwhile `texture_load_en` writes one texel per cycle, row by row (`texture_load_x` the "
+              "column, `texture_load_y`\nthe row). `texture_refuse` carries the profile's texture stall pattern: high in "
+              "frame cycle c when the stall\nhash of (seed " + std::to_string(p.texture_stall_seed) + ", c) modulo 100 is "
+              "below " + std::to_string(p.texture_stall_percent) + " (texture_stall_percent), low before cycle 0. "
+              "`cmd_textured` and\n`cmd_texture0..2` ({Q, T, S}, 50 bits each) come from commands.hex with the rest of "
+              "the command.\n"
+            : "")
     << "\n"
     << "What the testbench drives and expects, cycle by cycle:\n\n"
     << "- `rst` is high for four rising edges, with the `cfg_*` inputs at the profile's values (held for the frame).\n"
@@ -357,8 +394,11 @@ std::string readme_text(const PackageFacts& k) {
     << "so each sample is what the next rising edge sees. The cycle numbers in triangles.hex, fragments.hex and "
     << "frame.hex count these clock periods from cycle 0 and must be met exactly (cycle-exact mode).\n"
     << "- The frame ends after the first cycle with no command left to offer, `trace_setup_busy`, "
-    << "`trace_walker_busy`, `trace_zbuffer_busy` and `trace_frag_valid` low and no fragment awaiting its depth-test "
-    << "result.\n"
+    << "`trace_walker_busy`, `trace_texture_busy`, `trace_zbuffer_busy`, `trace_walker_frag_valid` and "
+    << "`trace_frag_valid` low and no fragment awaiting its depth-test result.\n"
+    << "- A fragment belongs to the walker's triangle when the walker hands it on: without the texture unit in the "
+    << "z-buffer's handshake; with it (`trace_walker_frag_valid && trace_walker_frag_ready`) the z-buffer's k-th "
+    << "fragment is the walker's k-th (the unit keeps their order).\n"
     << "- Then every word of the memories is read through the read-back port: the data for `readback_addr` set in "
     << "cycle c is on `readback_depth` / `readback_rgb` in cycle c + 1.\n\n"
     << "## Files\n\n"
@@ -371,13 +411,16 @@ std::string readme_text(const PackageFacts& k) {
     << "| " << kParamsFile << " | | | the testbench's parameters: profile, widths, vector counts, every field's place |\n"
     << "| " << kTestbenchFile << " | | | the self-checking testbench (top module " << kTestbenchTop << "), the same for "
     << "every package" << (k.testbench_folder == "." ? "" : "; in `" + k.testbench_folder + "/`") << " |\n"
-    << "| " << kMemoryModelFile << " | | | the frame memory model of packages of rastersim_core (latency, back-pressure)"
+    << "| " << kMemoryModelFile << " | | | the frame memory model of packages of rastersim_core (latency, back-pressure) "
+    << "and the stall pattern the testbench drives texture_refuse with"
     << (k.testbench_folder == "." ? "" : "; in `" + k.testbench_folder + "/`") << " |\n"
-    << "| run_icarus.sh, run_verilator.sh | | | build and run it |\n"
-    << "| " << kSelftestFile << ", " << kSelftestCrcFile << ", " << kSelftestPinFile << " | | | the board self-test "
-    << "(below), its expected CRC-32s, its pins" << (k.testbench_folder == "." ? "" : "; the .v in `" + k.testbench_folder + "/`")
-    << " |\n"
-    << "| run_selftest_icarus.sh, build_selftest_hx8k.sh | | | simulate the self-test; build its iCE40 HX8K bitstream |\n"
+    << "| run_icarus.sh, run_verilator.sh | | | build and run it |\n";
+  if (!p.texture_unit)
+    r << "| " << kSelftestFile << ", " << kSelftestCrcFile << ", " << kSelftestPinFile << " | | | the board self-test "
+      << "(below), its expected CRC-32s, its pins" << (k.testbench_folder == "." ? "" : "; the .v in `" + k.testbench_folder + "/`")
+      << " |\n"
+      << "| run_selftest_icarus.sh, build_selftest_hx8k.sh | | | simulate the self-test; build its iCE40 HX8K bitstream |\n";
+  r
     << "| check_manifest.py | | | checks every file's size and CRC-32 against manifest.json (the run scripts call it first) |\n"
     << (k.rtl_included ? "| rtl/ | | | the RTL it was generated against |\n" : "")
     << "\nEvery `.hex` file is read with `$readmemh`: one word per line, lowercase hex, no header; the line number "

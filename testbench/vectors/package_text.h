@@ -18,6 +18,9 @@ struct PackageFacts {
   Widths widths;
   Layouts layouts;
   int64_t triangles = 0, drawn = 0, fragments = 0, cycles = 0, words = 0;
+  int log2_texture_width = 0, log2_texture_height = 0;  // texture.hex's texture (texture unit)
+  TextureFilter texture_filter = TextureFilter::Nearest;
+  TextureWrap texture_wrap = TextureWrap::Repeat;
   std::string source_text;        // "the built-in scene default", "500 random triangles (seed 1)", ...
   std::string regenerate_command; // rastersim vectors ... --out DIR
   std::string rtl_folder;         // the RTL folder relative to the package: "rtl" or options.rtl_path

@@ -1,9 +1,8 @@
 `timescale 1ns / 1ps
 // Frame memory model for the test-vector packages of rastersim_core (docs/vectors.md): the depth
 // and colour words behind the core's memory port (contract in rtl/zbuffer.sv), with read latency
-// LATENCY and the model's back-pressure pattern (model/zbuffer_memory.h, memory_stalls): in frame
-// cycle c, rd_ready is low when splitmix64's finalizer of STALL_SEED * 0x9E3779B97F4A7C15 + c,
-// modulo 100, is below STALL_PERCENT. The same seed gives the same refused cycles as the model and
+// LATENCY and the model's back-pressure pattern (rastersim_stall_pattern below): in frame cycle c,
+// rd_ready is low when the pattern of (STALL_SEED, STALL_PERCENT) stalls c. The same seed gives the same refused cycles as the model and
 // the SystemC memory model, so a package of the core stays cycle-exact under back-pressure.
 // Simulation only (plain Verilog-2005, Icarus and Verilator): a board puts its own memory here.
 //
@@ -42,8 +41,6 @@ module rastersim_memory_model #(
   localparam integer WORDS = WIDTH * HEIGHT;
   // verilator lint_off WIDTH
   localparam [ADDR_BITS:0] WORDS_A = WORDS;  // word addresses are below this
-  localparam [63:0] SEED = STALL_SEED;       // non-negative: zero-extended
-  localparam [63:0] PERCENT = STALL_PERCENT;
   // verilator lint_on WIDTH
 
   reg [Z_BITS-1:0] depth_mem [0:WORDS-1];
@@ -52,18 +49,10 @@ module rastersim_memory_model #(
   reg [63:0] frame_cycle;                  // the frame cycle now running (valid with clear_done)
   integer a, k;
 
-  // model/zbuffer_memory.h memory_stalls(seed, percent, cycle).
-  function stalls;
-    input [63:0] frame_index;
-    reg [63:0] x;
-    begin
-      x = SEED * 64'h9E3779B97F4A7C15 + frame_index;
-      x = (x ^ (x >> 30)) * 64'hBF58476D1CE4E5B9;
-      x = (x ^ (x >> 27)) * 64'h94D049BB133111EB;
-      x = x ^ (x >> 31);
-      stalls = PERCENT > 64'd0 && (x % 64'd100) < PERCENT;
-    end
-  endfunction
+  // Whether the next frame cycle (0 until clear_done) refuses reads.
+  wire next_stalls;
+  rastersim_stall_pattern #(.SEED(STALL_SEED), .PERCENT(STALL_PERCENT)) pattern (
+    .frame_cycle(clear_done ? frame_cycle + 64'd1 : 64'd0), .stalls(next_stalls));
 
   wire read_in_range = {1'b0, rd_addr} < WORDS_A;
   wire write_in_range = {1'b0, wr_addr} < WORDS_A;
@@ -86,7 +75,7 @@ module rastersim_memory_model #(
       bad_accesses <= 32'd0;
     end else if (!clear_done) begin
       clear_done <= 1'b1;  // frame cycle 0 starts
-      rd_ready <= !stalls(64'd0);
+      rd_ready <= !next_stalls;
     end else begin
       // The cycle frame_cycle ends at this edge: its read (of the words before its write), its write.
       for (k = LATENCY; k >= 2; k = k - 1) read_pipe[k] = read_pipe[k - 1];
@@ -100,9 +89,30 @@ module rastersim_memory_model #(
       if (wr_depth_en && write_in_range) depth_mem[wr_addr] = wr_depth;
       if (wr_color_en && write_in_range) color_mem[wr_addr] = wr_rgb;
       frame_cycle <= frame_cycle + 64'd1;
-      rd_ready <= !stalls(frame_cycle + 64'd1);
+      rd_ready <= !next_stalls;
     end
     readback_depth <= readback_in_range ? depth_mem[readback_addr] : {Z_BITS{1'b0}};
     readback_rgb <= readback_in_range ? color_mem[readback_addr] : 24'd0;
   end
+endmodule
+
+// The model's back-pressure pattern (model/zbuffer_memory.h, memory_stalls): frame cycle c stalls
+// when splitmix64's finalizer of SEED * 0x9E3779B97F4A7C15 + c, modulo 100, is below PERCENT. The
+// frame memory model and the testbench's texture memory (texture_refuse) use it.
+module rastersim_stall_pattern #(
+  parameter integer SEED = 1,     // 0 .. 2^31 - 1
+  parameter integer PERCENT = 0   // 0 .. 90
+) (
+  input  wire [63:0] frame_cycle,
+  output wire stalls
+);
+  // verilator lint_off WIDTH
+  localparam [63:0] SEED64 = SEED;  // non-negative: zero-extended
+  localparam [63:0] PERCENT64 = PERCENT;
+  // verilator lint_on WIDTH
+  wire [63:0] x0 = SEED64 * 64'h9E3779B97F4A7C15 + frame_cycle;
+  wire [63:0] x1 = (x0 ^ (x0 >> 30)) * 64'hBF58476D1CE4E5B9;
+  wire [63:0] x2 = (x1 ^ (x1 >> 27)) * 64'h94D049BB133111EB;
+  wire [63:0] x3 = x2 ^ (x2 >> 31);
+  assign stalls = PERCENT64 > 64'd0 && (x3 % 64'd100) < PERCENT64;
 endmodule

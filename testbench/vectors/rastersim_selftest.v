@@ -100,7 +100,8 @@ module rastersim_selftest (
   rastersim_core #(
     .WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
     .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MEMORY_LATENCY),
-    .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL)
+    .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL),
+    .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS), .DEPTH_BIAS(DEPTH_BIAS)
   ) core (
     .clk(clk), .rst(rst),
     .cfg_depth_func(CFG_DEPTH_FUNC), .cfg_depth_write(CFG_DEPTH_WRITE), .cfg_cull(CFG_CULL),
@@ -111,7 +112,8 @@ module rastersim_selftest (
     .cmd_x0(command_fields[64*0 +: COORD_BITS]), .cmd_y0(command_fields[64*1 +: COORD_BITS]),
     .cmd_x1(command_fields[64*2 +: COORD_BITS]), .cmd_y1(command_fields[64*3 +: COORD_BITS]),
     .cmd_x2(command_fields[64*4 +: COORD_BITS]), .cmd_y2(command_fields[64*5 +: COORD_BITS]),
-    .cmd_z0(command_fields[64*6 +: Z_BITS]), .cmd_z1(command_fields[64*7 +: Z_BITS]), .cmd_z2(command_fields[64*8 +: Z_BITS]),
+    .cmd_z0(command_fields[64*6 +: DEPTH_PLANE_BITS]), .cmd_z1(command_fields[64*7 +: DEPTH_PLANE_BITS]),
+    .cmd_z2(command_fields[64*8 +: DEPTH_PLANE_BITS]),
     .cmd_rgb0(command_fields[64*9 +: 24]), .cmd_rgb1(command_fields[64*10 +: 24]), .cmd_rgb2(command_fields[64*11 +: 24]),
     .trace_setup_decided(trace_setup_decided), .trace_setup_status(trace_setup_status),
     .trace_setup_busy(trace_setup_busy), .trace_setup_stall(trace_setup_stall), .trace_setup_done(trace_setup_done),
@@ -125,8 +127,7 @@ module rastersim_selftest (
     // Built without the texture unit: its ports tied off.
     .cfg_texture_latency(7'd1), .cfg_texture_log2_width(4'd0), .cfg_texture_log2_height(4'd0),
     .cfg_texture_bilinear(1'b0), .cfg_texture_clamp(1'b0),
-    // and without the depth bias
-    .cfg_depth_bias_constant(33'd0), .cfg_depth_bias_slope(8'd0),
+    .cfg_depth_bias_constant(CFG_DEPTH_BIAS_CONSTANT), .cfg_depth_bias_slope(CFG_DEPTH_BIAS_SLOPE),
     .cmd_textured(1'b0), .cmd_texture0(150'd0), .cmd_texture1(150'd0), .cmd_texture2(150'd0),
     .trace_walker_frag_valid(trace_walker_frag_valid), .trace_walker_frag_ready(trace_walker_frag_ready),
     .trace_texture_busy(trace_texture_busy), .trace_texture_stall(trace_texture_stall),

@@ -58,8 +58,10 @@ module rastersim_vectors_tb;
   reg rst = 1'b1;
   reg cmd_valid = 1'b0;
   reg [COORD_BITS-1:0] cmd_x0 = 0, cmd_y0 = 0, cmd_x1 = 0, cmd_y1 = 0, cmd_x2 = 0, cmd_y2 = 0;
-  reg [Z_BITS-1:0] cmd_z0 = 0, cmd_z1 = 0, cmd_z2 = 0;
+  reg [DEPTH_PLANE_BITS-1:0] cmd_z0 = 0, cmd_z1 = 0, cmd_z2 = 0;
   reg [23:0] cmd_rgb0 = 0, cmd_rgb1 = 0, cmd_rgb2 = 0;
+  reg cmd_textured = 1'b0;
+  reg [149:0] cmd_texture0 = 0, cmd_texture1 = 0, cmd_texture2 = 0;  // {Q, T, S}, 50 bits each
   reg [ADDR_BITS-1:0] readback_addr = 0;
   wire frame_ready, cmd_ready;
   wire trace_setup_decided, trace_setup_busy, trace_setup_stall, trace_setup_done;
@@ -71,8 +73,20 @@ module rastersim_vectors_tb;
   wire [Z_BITS-1:0] trace_frag_z;
   wire [23:0] trace_frag_rgb;
   wire trace_result_valid, trace_result_pass, trace_zbuffer_busy, trace_zbuffer_stall;
-  // The texture unit's traces (packages are built without it: the walker's handshake is the z-buffer's).
+  // The texture unit's traces (without it the walker's handshake is the z-buffer's).
   wire trace_walker_frag_valid, trace_walker_frag_ready, trace_texture_busy, trace_texture_stall;
+  // The texture memory: loaded through texture_load_* during reset (TEXTURE 1); it refuses reads in
+  // frame cycle c when the profile's texture stall pattern says so (model/zbuffer_memory.h
+  // memory_stalls(texture_stall_seed, texture_stall_percent, c)), as the model's texture memory.
+  reg texture_load_en = 1'b0;
+  reg [9:0] texture_load_x = 0, texture_load_y = 0;
+  reg [23:0] texture_load_rgb = 0;
+  reg [63:0] texture_cycle = 64'd0;  // the frame cycle now running (with texture_cycle_valid)
+  reg texture_cycle_valid = 1'b0;
+  wire texture_stalls;
+  rastersim_stall_pattern #(.SEED(TEXTURE_STALL_SEED), .PERCENT(TEXTURE_STALL_PERCENT)) texture_pattern (
+    .frame_cycle(texture_cycle), .stalls(texture_stalls));
+  wire texture_refuse = texture_cycle_valid && texture_stalls;
   wire [Z_BITS-1:0] readback_depth;
   wire [23:0] readback_rgb;
 
@@ -96,10 +110,11 @@ module rastersim_vectors_tb;
     .trace_frag_rgb(trace_frag_rgb), \
     .trace_result_valid(trace_result_valid), .trace_result_pass(trace_result_pass), \
     .trace_zbuffer_busy(trace_zbuffer_busy), .trace_zbuffer_stall(trace_zbuffer_stall), \
-    .cfg_texture_latency(7'd1), .cfg_texture_log2_width(4'd0), .cfg_texture_log2_height(4'd0), \
-    .cfg_texture_bilinear(1'b0), .cfg_texture_clamp(1'b0), \
-    .cfg_depth_bias_constant(33'd0), .cfg_depth_bias_slope(8'd0), \
-    .cmd_textured(1'b0), .cmd_texture0(150'd0), .cmd_texture1(150'd0), .cmd_texture2(150'd0), \
+    .cfg_texture_latency(CFG_TEXTURE_LATENCY), .cfg_texture_log2_width(CFG_TEXTURE_LOG2_WIDTH), \
+    .cfg_texture_log2_height(CFG_TEXTURE_LOG2_HEIGHT), .cfg_texture_bilinear(CFG_TEXTURE_BILINEAR), \
+    .cfg_texture_clamp(CFG_TEXTURE_CLAMP), \
+    .cfg_depth_bias_constant(CFG_DEPTH_BIAS_CONSTANT), .cfg_depth_bias_slope(CFG_DEPTH_BIAS_SLOPE), \
+    .cmd_textured(cmd_textured), .cmd_texture0(cmd_texture0), .cmd_texture1(cmd_texture1), .cmd_texture2(cmd_texture2), \
     .trace_walker_frag_valid(trace_walker_frag_valid), .trace_walker_frag_ready(trace_walker_frag_ready), \
     .trace_texture_busy(trace_texture_busy), .trace_texture_stall(trace_texture_stall)
 `ifdef RS_EXTERNAL_MEMORY
@@ -110,19 +125,34 @@ module rastersim_vectors_tb;
   wire [Z_BITS-1:0] mem_rd_depth, mem_wr_depth;
   wire [23:0] mem_wr_rgb;
   wire [31:0] refused_reads, bad_accesses;
-  wire tex_rd_valid;
+  wire tex_rd_valid, tex_rd_ready;
   wire [4*18-1:0] tex_rd_addr;
+  wire [4*24-1:0] tex_rd_texels;
   rastersim_core #(
     .WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
     .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MEMORY_LATENCY),
-    .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL)
+    .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL),
+    .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS), .DEPTH_BIAS(DEPTH_BIAS),
+    .TEXTURE(TEXTURE), .MAX_TEXTURE_LATENCY(TEXTURE_LATENCY)
   ) dut (
     `RS_PIPELINE_PORTS,
     .mem_clear_done(mem_clear_done), .mem_rd_valid(mem_rd_valid), .mem_rd_ready(mem_rd_ready),
     .mem_rd_addr(mem_rd_addr), .mem_rd_depth(mem_rd_depth), .mem_wr_depth_en(mem_wr_depth_en),
     .mem_wr_color_en(mem_wr_color_en), .mem_wr_addr(mem_wr_addr), .mem_wr_depth(mem_wr_depth),
-    .mem_wr_rgb(mem_wr_rgb), .tex_rd_valid(tex_rd_valid), .tex_rd_ready(1'b0), .tex_rd_addr(tex_rd_addr),
-    .tex_rd_texels(96'd0));
+    .mem_wr_rgb(mem_wr_rgb), .tex_rd_valid(tex_rd_valid), .tex_rd_ready(tex_rd_ready), .tex_rd_addr(tex_rd_addr),
+    .tex_rd_texels(tex_rd_texels));
+  // The texture memory of rastersim_top beside the core (its read port has no board-side variant).
+  generate
+    if (TEXTURE != 0) begin : texturing
+      texture_memory #(.MAX_TEXTURE_LATENCY(TEXTURE_LATENCY)) tmem (
+        .clk(clk), .rst(rst), .cfg_texture_latency(CFG_TEXTURE_LATENCY), .refuse(texture_refuse),
+        .rd_valid(tex_rd_valid), .rd_ready(tex_rd_ready), .rd_addr(tex_rd_addr), .rd_texels(tex_rd_texels),
+        .load_en(texture_load_en), .load_x(texture_load_x), .load_y(texture_load_y), .load_rgb(texture_load_rgb));
+    end else begin : no_texture
+      assign tex_rd_ready = 1'b0;
+      assign tex_rd_texels = 96'd0;
+    end
+  endgenerate
   rastersim_memory_model #(
     .WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .ADDR_BITS(ADDR_BITS), .LATENCY(MEMORY_LATENCY),
     .STALL_PERCENT(MEMORY_STALL_PERCENT), .STALL_SEED(MEMORY_STALL_SEED)
@@ -138,11 +168,14 @@ module rastersim_vectors_tb;
   rastersim_top #(
     .WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
     .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MEMORY_LATENCY),
-    .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL)
+    .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL),
+    .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS), .DEPTH_BIAS(DEPTH_BIAS),
+    .TEXTURE(TEXTURE), .MAX_TEXTURE_LATENCY(TEXTURE_LATENCY)
   ) dut (
     `RS_PIPELINE_PORTS,
     .cfg_depth_clear(CFG_DEPTH_CLEAR),
-    .texture_load_en(1'b0), .texture_load_x(10'd0), .texture_load_y(10'd0), .texture_load_rgb(24'd0), .texture_refuse(1'b0),
+    .texture_load_en(texture_load_en), .texture_load_x(texture_load_x), .texture_load_y(texture_load_y),
+    .texture_load_rgb(texture_load_rgb), .texture_refuse(texture_refuse),
     .readback_addr(readback_addr), .readback_depth(readback_depth), .readback_rgb(readback_rgb));
 `endif
 
@@ -190,7 +223,7 @@ module rastersim_vectors_tb;
   localparam integer P_LSB = 0, P_SLOT = 1, P_BITS = 2;
   function integer field_place;
     input integer file, what, k;
-    reg [16*64-1:0] places;  // at most 64 fields
+    reg [16*128-1:0] places;  // at most 128 fields (the params file checks it)
     begin
       case (file)
         0: places = what == P_LSB ? COMMAND_FIELD_LSB : what == P_SLOT ? COMMAND_FIELD_SLOT : COMMAND_FIELD_BITS;
@@ -245,6 +278,7 @@ module rastersim_vectors_tb;
   reg [Z_BITS-1:0] depth [0:WORDS-1];
   reg [23:0] color [0:WORDS-1];
   reg [FRAME_BITS-1:0] frame [0:0];
+  reg [23:0] texels [0:TEXELS-1];  // texture.hex, row by row (TEXTURE 1)
 
   // ---- What the pipeline did ------------------------------------------------------------------
   integer seen_status [0:TRIANGLE_SLOTS-1];
@@ -273,9 +307,25 @@ module rastersim_vectors_tb;
   integer drawn_tri [0:DRAWN_SLOTS-1];  // triangle index of each drawn triangle, in order
   integer seen_setup_count, seen_fragment_count, seen_result_count;
   integer n_triangles, n_drawn, n_degenerate, n_culled, n_offscreen, n_no_centre, n_candidates, n_pass, n_fail;
-  integer setup_busy, setup_stall, walker_busy, walker_stall, zbuffer_busy, zbuffer_stall;
+  integer setup_busy, setup_stall, walker_busy, walker_stall, zbuffer_busy, zbuffer_stall, texture_busy, texture_stall;
+  // The triangle of each fragment the walker handed on, in order: the texture unit keeps the order,
+  // so the z-buffer's k-th fragment is the walker's k-th.
+  integer walker_tri [0:OBSERVED_SLOTS-1];
+  integer walker_handed;
   reg submitting, busy, finished, functional;
   reg [8*256:1] dump_file;
+
+  // Vertex v's cmd_texture word of command n: {Q, T, S}, 50 bits each.
+  function [149:0] texture_word;
+    input integer n, v;
+    reg [63:0] s_field, t_field, q_field;
+    begin
+      s_field = field_of(F_COMMANDS, commands[n], 13 + 3 * v);
+      t_field = field_of(F_COMMANDS, commands[n], 14 + 3 * v);
+      q_field = field_of(F_COMMANDS, commands[n], 15 + 3 * v);
+      texture_word = {q_field[49:0], t_field[49:0], s_field[49:0]};
+    end
+  endfunction
 
   // Offers command n (cmd_valid low after the last one).
   task drive_command;
@@ -295,6 +345,12 @@ module rastersim_vectors_tb;
         cmd_rgb0 = field_of(F_COMMANDS, commands[n], 9);
         cmd_rgb1 = field_of(F_COMMANDS, commands[n], 10);
         cmd_rgb2 = field_of(F_COMMANDS, commands[n], 11);
+        if (TEXTURE != 0) begin  // textured, then S, T, Q of each vertex
+          cmd_textured = field_of(F_COMMANDS, commands[n], 12) != 0;
+          cmd_texture0 = texture_word(n, 0);
+          cmd_texture1 = texture_word(n, 1);
+          cmd_texture2 = texture_word(n, 2);
+        end
       end
     end
   endtask
@@ -351,6 +407,10 @@ module rastersim_vectors_tb;
             put_record_field(`RS_RECORD_PATH.rec_left_step[e*(Z_REG_BITS + 3*COLOR_REG_BITS) + Z_REG_BITS + c*COLOR_REG_BITS +: COLOR_REG_BITS]);
           end
         end
+      end
+      if (TEXTURE != 0) begin  // the texture record: its flag, then register r at 1 + r TEXTURE_REG_BITS
+        put_record_field(`RS_RECORD_PATH.rec_texture[0]);
+        for (e = 0; e < 21; e = e + 1) put_record_field(`RS_RECORD_PATH.rec_texture[1 + e*TEXTURE_REG_BITS +: TEXTURE_REG_BITS]);
       end
     end
   endtask
@@ -568,6 +628,7 @@ module rastersim_vectors_tb;
     $readmemh("depth.hex", depth, 0, WORDS - 1);
     $readmemh("color.hex", color, 0, WORDS - 1);
     $readmemh("frame.hex", frame, 0, 0);
+    if (TEXTURE != 0) $readmemh("texture.hex", texels, 0, TEXELS - 1);
     for (t = 0; t < TRIANGLE_SLOTS; t = t + 1) begin
       seen_status[t] = -1; seen_accept[t] = -1; seen_done[t] = -1; seen_load[t] = -1; seen_end[t] = -1;
       seen_fragments_of[t] = 0; seen_pass_of[t] = 0; seen_last_write[t] = -1;
@@ -586,14 +647,27 @@ module rastersim_vectors_tb;
     n_triangles = 0; n_drawn = 0; n_degenerate = 0; n_culled = 0; n_offscreen = 0; n_no_centre = 0;
     n_candidates = 0; n_pass = 0; n_fail = 0;
     setup_busy = 0; setup_stall = 0; walker_busy = 0; walker_stall = 0; zbuffer_busy = 0; zbuffer_stall = 0;
+    texture_busy = 0; texture_stall = 0; walker_handed = 0;
     passed = 0; failed = 0; skipped = 0; followed = 0; listed = 0; hidden = 0; any_root = 0;
     finished = 1'b0; context_text = "";
 
     // Reset: rst high for four rising edges (the cfg_* inputs are sampled meanwhile).
     // Inputs change 1 ns after a rising edge and outputs are sampled at the falling edge, so that
     // what is sampled is what the next rising edge sees: one clock period is one cycle.
+    // With the texture unit, rst stays high while the texels are loaded, one per cycle, row by row.
     repeat (4) @(posedge clk);
     #1;
+    if (TEXTURE != 0) begin
+      texture_load_en = 1'b1;
+      for (a = 0; a < TEXELS; a = a + 1) begin
+        texture_load_x = a % (1 << CFG_TEXTURE_LOG2_WIDTH);
+        texture_load_y = a >> CFG_TEXTURE_LOG2_WIDTH;
+        texture_load_rgb = texels[a];
+        @(posedge clk);
+        #1;
+      end
+      texture_load_en = 1'b0;
+    end
     rst = 1'b0;
     drive_command(0);
 
@@ -647,9 +721,18 @@ module rastersim_vectors_tb;
           n_loaded = n_loaded + 1;
           seen_load[in_setup] = cycle;
         end
+        // A fragment belongs to the walker's triangle when the walker hands it on: without the texture
+        // unit in the z-buffer's handshake; with it, the z-buffer's k-th is the walker's k-th.
+        if (TEXTURE != 0 && trace_walker_frag_valid && trace_walker_frag_ready) begin
+          if (walker_handed < OBSERVED_SLOTS) walker_tri[walker_handed] = in_walker;
+          walker_handed = walker_handed + 1;
+        end
         if (trace_frag_valid && trace_frag_ready) begin
+          t = TEXTURE == 0 ? in_walker
+            : seen_fragment_count < walker_handed && seen_fragment_count < OBSERVED_SLOTS ? walker_tri[seen_fragment_count] : -1;
+          if (t >= 0) seen_fragments_of[t] = seen_fragments_of[t] + 1;
           if (seen_fragment_count < OBSERVED_SLOTS) begin
-            obs_tri[seen_fragment_count] = in_walker;
+            obs_tri[seen_fragment_count] = t;
             obs_cycle[seen_fragment_count] = cycle;
             obs_x[seen_fragment_count] = trace_frag_x;
             obs_y[seen_fragment_count] = trace_frag_y;
@@ -658,7 +741,6 @@ module rastersim_vectors_tb;
             obs_pass[seen_fragment_count] = 2'd2;
           end
           seen_fragment_count = seen_fragment_count + 1;
-          if (in_walker >= 0) seen_fragments_of[in_walker] = seen_fragments_of[in_walker] + 1;
         end
         if (trace_result_valid) begin
           if (seen_result_count >= seen_fragment_count) begin
@@ -685,12 +767,15 @@ module rastersim_vectors_tb;
         if (trace_setup_stall) setup_stall = setup_stall + 1;
         if (trace_walker_busy) walker_busy = walker_busy + 1;
         if (trace_zbuffer_busy) zbuffer_busy = zbuffer_busy + 1;
-        if (trace_frag_valid && !trace_frag_ready) walker_stall = walker_stall + 1;
+        if (trace_walker_frag_valid && !trace_walker_frag_ready) walker_stall = walker_stall + 1;
         if (trace_zbuffer_stall) zbuffer_stall = zbuffer_stall + 1;
-        busy = trace_setup_busy || trace_walker_busy || trace_zbuffer_busy;
+        if (trace_texture_busy) texture_busy = texture_busy + 1;
+        if (trace_texture_stall) texture_stall = texture_stall + 1;
+        busy = trace_setup_busy || trace_walker_busy || trace_texture_busy || trace_zbuffer_busy;
         if (busy) last_busy = cycle;
         // A fragment the memory refuses leaves every unit's busy low but is still to come.
-        if (!submitting && !busy && !trace_frag_valid && seen_result_count >= seen_fragment_count) begin
+        if (!submitting && !busy && !trace_frag_valid && !trace_walker_frag_valid &&
+            seen_result_count >= seen_fragment_count) begin
           finished = 1'b1;
         end else if (cycle >= cycle_bound) begin
           unexpected(cycle, "frame.hex", "the frame did not finish within the cycle bound (+cycle_bound=N)");
@@ -701,6 +786,11 @@ module rastersim_vectors_tb;
       @(posedge clk);
       #1;
       drive_command(next_command);
+      // The frame cycle about to run: cycle counts on; the first has frame_ready high.
+      if (cycle >= 0 || frame_ready) begin
+        texture_cycle = cycle >= 0 ? cycle : 0;
+        texture_cycle_valid = 1'b1;
+      end
     end
 
     // The final memories through the read-back port: data for readback_addr in cycle c is on
@@ -893,7 +983,9 @@ module rastersim_vectors_tb;
         13: j = walker_busy;
         14: j = walker_stall;
         15: j = zbuffer_busy;
-        default: j = zbuffer_stall;
+        16: j = zbuffer_stall;
+        17: j = texture_busy;
+        default: j = texture_stall;
       endcase
       word_follows = functional && any_root != 0;
       if (!functional || (k >= R_TRIANGLES && k <= R_DECISIONS_LAST) || (k >= R_FRAGMENTS && k <= R_DEPTH_FAIL))

@@ -175,7 +175,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadVectors{"StallPatternOnTheTop", {"--suite", "depth", "--memory-stall-percent", "10", "--top", "rastersim_top"},
                    "no back-pressure"},
         BadVectors{"UnknownTop", {"--suite", "depth", "--top", "rastersim_walker"},
-                   "--top must be rastersim_top or rastersim_core, not 'rastersim_walker'"}),
+                   "--top must be rastersim_top or rastersim_core, not 'rastersim_walker'"},
+        BadVectors{"TextureFlagsWithoutTheUnit", {"--scene", "floor", "--texture-filter", "nearest"},
+                   "the texture flags (--texture-filter nearest) need the profile's texture_unit"},
+        BadVectors{"TextureFlagsWithRandom", {"--random", "3", "--texture-unit", "true", "--texture-wrap", "clamp"},
+                   "the texture flags apply to INPUT and --scene"},
+        BadVectors{"MissingTexture", {"--scene", "floor", "--texture-unit", "true", "--texture", "none.png"},
+                   "none.png"}),
     [](const ::testing::TestParamInfo<BadVectors>& info) { return info.param.name; });
 
 #endif

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "model/input_error.h"
+#include "testbench/cosim_cases.h"
 #include "testbench/vectors/package.h"
 #include "testbench/vectors/suites.h"
 
@@ -81,7 +82,7 @@ Profile small_profile() {
 
 Package small_package(const PackageOptions& options = {}) {
   const Profile p = small_profile();
-  return build_package(p, suite_triangles("depth", p), Source{"suite", "depth", 0, 0, ""}, options);
+  return build_package(p, suite_triangles("depth", p), Source{"suite", "depth", 0, 0, "", ""}, options);
 }
 
 const PackageFile& file_named(const Package& package, const std::string& path) {
@@ -308,7 +309,7 @@ class IcarusPackage : public ::testing::Test {
     dir_ = dir_holder_.path() / "pkg";
     write_package(package_, dir_.string(), false);
     const std::string compile = std::string(RASTERSIM_IVERILOG) + " -g2012 -I . -I rtl -s rastersim_vectors_tb -o tb.vvp " +
-                                "rastersim_vectors_tb.v rtl/*.sv";
+                                "rastersim_vectors_tb.v rastersim_memory_model.v rtl/*.sv";
     const CommandResult built = run_command("cd '" + dir_.string() + "' && " + compile);
     ASSERT_EQ(built.status, 0) << built.output;
   }
@@ -328,7 +329,7 @@ class IcarusPackage : public ::testing::Test {
     const std::string vvp = name + ".vvp";
     const CommandResult built = run_command("cd '" + dir_.string() + "' && " + RASTERSIM_IVERILOG + " -g2012 -I . -I " +
                                             rtl.filename().string() + " -s rastersim_vectors_tb -o " + vvp +
-                                            " rastersim_vectors_tb.v " + rtl.filename().string() + "/*.sv");
+                                            " rastersim_vectors_tb.v rastersim_memory_model.v " + rtl.filename().string() + "/*.sv");
     EXPECT_EQ(built.status, 0) << built.output;
     return vvp;
   }
@@ -521,9 +522,9 @@ TEST(IcarusCorePackage, BackPressureFromTheModelsStallPatternStaysCycleExact) {
   p.memory_stall_percent = 30;
   p.memory_stall_seed = 5;
   PackageOptions options;
-  EXPECT_THROW(build_package(p, suite_triangles("depth", p), Source{"suite", "depth", 0, 0, ""}, options), InputError);
+  EXPECT_THROW(build_package(p, suite_triangles("depth", p), Source{"suite", "depth", 0, 0, "", ""}, options), InputError);
   options.external_memory = true;
-  const Package package = build_package(p, suite_triangles("depth", p), Source{"suite", "depth", 0, 0, ""}, options);
+  const Package package = build_package(p, suite_triangles("depth", p), Source{"suite", "depth", 0, 0, "", ""}, options);
   const Json manifest = Json::parse(file_named(package, "manifest.json").content);
   EXPECT_EQ(manifest["rtl"]["top"], "rastersim_core");
   const std::string params = file_named(package, "rastersim_vectors_params.vh").content;
@@ -647,6 +648,116 @@ TEST_F(IcarusPackage, SwappingTwoCommandsFailsAndTheScriptSaysSo) {
 }
 
 #endif
+
+// Builds the package's testbench with Icarus in its folder (bypassing the manifest check, so that a
+// test can change a file) and returns the run's output.
+std::string compile_and_run(const fs::path& pkg) {
+  return run_command("cd '" + pkg.string() + "' && " + RASTERSIM_IVERILOG +
+                     " -g2012 -I . -I rtl -s rastersim_vectors_tb -o tb.vvp rastersim_vectors_tb.v "
+                     "rastersim_memory_model.v rtl/*.sv && " + RASTERSIM_VVP + " -n tb.vvp")
+      .output;
+}
+
+// Replaces the one occurrence of `from` in a package's file by `to`.
+void edit_file(const fs::path& file, const std::string& from, const std::string& to) {
+  std::string text = read_text(file);
+  const size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from << " not in " << file;
+  text.replace(at, from.size(), to);
+  write_text(file, text);
+}
+
+// The floating-point depth word and the depth bias through the package's testbench and its board
+// self-test: both pass; the testbench fails when the bias it drives is not the profile's.
+TEST(IcarusDepthPackage, TheFloatingPointWordAndTheBiasPassAndAWrongBiasFails) {
+  Profile p = small_profile();
+  p.depth_func = DepthFunc::Greater;
+  p.depth_clear = 0;
+  p.depth_exponent_bits = 3;  // Np = 21 + 7 = 28 plane bits behind a 24-bit word
+  p.depth_bias_constant = -200000;  // far more than the word's truncation (at most 7 of the 28 bits)
+  p.depth_bias_slope = 24;          // 1.5
+  const Package package = build_package(p, suite_triangles("depth", p), Source{"suite", "depth", 0, 0, "", ""}, {});
+  const Layouts layouts = make_layouts(p);
+  EXPECT_EQ(layouts.commands.field("z0").bits, 28);
+  const std::string params = file_named(package, "rastersim_vectors_params.vh").content;
+  EXPECT_NE(params.find("localparam [32:0] CFG_DEPTH_BIAS_CONSTANT = 33'd8589734592;"), std::string::npos) << params;
+  EXPECT_NE(params.find("localparam [7:0] CFG_DEPTH_BIAS_SLOPE = 8'd24;"), std::string::npos) << params;
+
+  TempDir dir;
+  const fs::path pkg = dir.path() / "pkg";
+  write_package(package, pkg.string(), false);
+  const CommandResult run = run_command("'" + (pkg / "run_icarus.sh").string() + "'");
+  EXPECT_TRUE(std::regex_match(last_line(run.output), std::regex("[0-9]+ passed, 0 failed"))) << run.output;
+  const CommandResult selftest = run_command("'" + (pkg / "run_selftest_icarus.sh").string() + "'");
+  EXPECT_EQ(last_line(selftest.output), "selftest: PASS") << selftest.output;
+
+  edit_file(pkg / "rastersim_vectors_params.vh", "CFG_DEPTH_BIAS_CONSTANT = 33'd8589734592;",
+            "CFG_DEPTH_BIAS_CONSTANT = 33'd0;");
+  const std::string wrong = compile_and_run(pkg);
+  EXPECT_TRUE(std::regex_match(last_line(wrong), std::regex("[0-9]+ passed, [1-9][0-9]* failed"))) << wrong;
+  EXPECT_NE(wrong.find("fragments.hex vector "), std::string::npos) << wrong;
+  EXPECT_NE(wrong.find(" field z: "), std::string::npos) << wrong;
+}
+
+// A frame of textured triangles (cosim's generator) with a texture of distinct texels, bilinear,
+// under the texture memory's stall pattern: cycle-exact through rastersim_top and through
+// rastersim_core with the texture memory beside it. Another stall seed fails on cycles; a changed
+// texel fails on colours.
+TEST(IcarusTexturedPackage, TheTextureUnitStaysCycleExactUnderItsStallPattern) {
+  Profile p;
+  p.width = 32;
+  p.height = 24;
+  p.texture_unit = true;
+  p.texture_latency = 3;
+  p.texture_stall_percent = 30;
+  p.texture_stall_seed = 4;
+  p.memory_latency = 2;
+  const rtl::CosimCase frame = rtl::random_case(p, 7, 30);
+  std::vector<uint32_t> texels;
+  for (uint32_t a = 0; a < 8 * 4; ++a) texels.push_back(0x102030u + a * 0x050709u);
+  TextureBinding texture;
+  texture.texture = std::make_shared<const Texture>(3, 2, texels);
+  texture.filter = TextureFilter::Bilinear;
+  const Source source{"random", "", 30, 7, "", ""};
+  const Package package = build_package(p, frame.triangles, source, {}, texture);
+  EXPECT_EQ(file_named(package, "texture.hex").content.substr(0, 14), "102030\n152739\n");
+  EXPECT_THROW(file_named(package, "selftest.hex"), std::runtime_error);  // no board self-test
+  const Layouts layouts = make_layouts(p);
+  const std::vector<Field>& command_fields = layouts.commands.fields();
+  const size_t textured_field = size_t(
+      std::find_if(command_fields.begin(), command_fields.end(), [](const Field& f) { return f.name == "textured"; }) -
+      command_fields.begin());
+  int64_t textured = 0;
+  for (const std::string& line : split_lines(file_named(package, "commands.hex").content))
+    textured += layouts.commands.parse(line).at(textured_field);
+  EXPECT_GT(textured, 10);
+  const std::vector<int64_t> counters = layouts.frame.parse(split_lines(file_named(package, "frame.hex").content).at(0));
+  EXPECT_GT(counters.at(18), 0) << "the stall pattern held no texture read";  // texture_stall
+  EXPECT_GT(counters.at(17), 0);                                                 // texture_busy
+
+  TempDir dir;
+  const fs::path pkg = dir.path() / "pkg";
+  write_package(package, pkg.string(), false);
+  const CommandResult run = run_command("'" + (pkg / "run_icarus.sh").string() + "'");
+  EXPECT_TRUE(std::regex_match(last_line(run.output), std::regex("[0-9]+ passed, 0 failed"))) << run.output;
+
+  edit_file(pkg / "rastersim_vectors_params.vh", "TEXTURE_STALL_SEED = 4;", "TEXTURE_STALL_SEED = 5;");
+  const std::string other_seed = compile_and_run(pkg);
+  EXPECT_TRUE(std::regex_match(last_line(other_seed), std::regex("[0-9]+ passed, [1-9][0-9]* failed"))) << other_seed;
+  EXPECT_NE(other_seed.find(" field cycle: "), std::string::npos) << other_seed;
+  edit_file(pkg / "rastersim_vectors_params.vh", "TEXTURE_STALL_SEED = 5;", "TEXTURE_STALL_SEED = 4;");
+  edit_file(pkg / "texture.hex", "152739\n", "152738\n");
+  const std::string other_texel = compile_and_run(pkg);
+  EXPECT_TRUE(std::regex_match(last_line(other_texel), std::regex("[0-9]+ passed, [1-9][0-9]* failed"))) << other_texel;
+  EXPECT_NE(other_texel.find(" field rgb: "), std::string::npos) << other_texel;
+
+  PackageOptions core;
+  core.external_memory = true;
+  const fs::path core_pkg = dir.path() / "core";
+  write_package(build_package(p, frame.triangles, source, core, texture), core_pkg.string(), false);
+  const CommandResult core_run = run_command("'" + (core_pkg / "run_icarus.sh").string() + "'");
+  EXPECT_TRUE(std::regex_match(last_line(core_run.output), std::regex("[0-9]+ passed, 0 failed"))) << core_run.output;
+}
 
 }  // namespace
 }  // namespace rastersim::vectors
