@@ -143,6 +143,7 @@ RenderResult render_triangles(Backend backend, const Profile& profile, const std
     case Backend::Systemc: {
       systemc::SystemcOptions systemc_options;
       systemc_options.seed = options.seed;
+      systemc_options.texture = options.texture;
       const rtl::RtlResult r = systemc_backend().run_systemc(profile, triangles, systemc_options);
       if (!r.finished) throw std::runtime_error("the SystemC system did not finish: " + r.note);
       if (progress) progress(triangles.size());

@@ -54,29 +54,42 @@ struct Point {
   HardwareCost cost;
 };
 
-// The CSV columns after the swept keys: name, and how a point gives it.
+// The CSV columns after the swept keys: name, how a point gives it, and when it is written.
+enum class Needs { Nothing, HwCost, TextureUnit };  // always; with --hw-cost; when a point has the texture unit
 struct Column {
   const char* name;
   double (*value)(const Point&);
-  bool hardware;  // only with --hw-cost
+  Needs needs;
+};
+
+// Which of the optional columns a sweep writes.
+struct Written {
+  bool hw_cost = false, texture_unit = false;
+  bool operator()(const Column& c) const {
+    return c.needs == Needs::Nothing || (c.needs == Needs::HwCost && hw_cost) ||
+           (c.needs == Needs::TextureUnit && texture_unit);
+  }
 };
 
 double share(int64_t part, int64_t cycles) { return cycles > 0 ? double(part) / double(cycles) : 0.0; }
 
 const std::vector<Column>& figure_columns() {
   static const std::vector<Column> columns = {
-      {"cycles", [](const Point& p) { return double(p.stats.cycles); }, false},
-      {"fragments", [](const Point& p) { return double(p.stats.fragments); }, false},
-      {"fragments_per_clock", [](const Point& p) { return share(p.stats.fragments, p.stats.cycles); }, false},
-      {"setup_share", [](const Point& p) { return share(p.stats.setup.busy, p.stats.cycles); }, false},
-      {"stall_share", [](const Point& p) { return share(p.stats.zbuffer.stall, p.stats.cycles); }, false},
-      {"depth_fails", [](const Point& p) { return double(p.stats.depth_fail); }, false},
-      {"wrong_depth_tests", [](const Point& p) { return double(p.wrong_depth_tests); }, false},
-      {"max_depth_error", [](const Point& p) { return p.max_depth_error; }, false},
-      {"yosys_cells", [](const Point& p) { return double(p.cost.cells); }, true},
-      {"ice40_luts", [](const Point& p) { return double(p.cost.ice40_luts); }, true},
-      {"ice40_ffs", [](const Point& p) { return double(p.cost.ice40_ffs); }, true},
-      {"memory_bits", [](const Point& p) { return double(p.cost.memory_bits); }, true},
+      {"cycles", [](const Point& p) { return double(p.stats.cycles); }, Needs::Nothing},
+      {"fragments", [](const Point& p) { return double(p.stats.fragments); }, Needs::Nothing},
+      {"fragments_per_clock", [](const Point& p) { return share(p.stats.fragments, p.stats.cycles); }, Needs::Nothing},
+      {"setup_share", [](const Point& p) { return share(p.stats.setup.busy, p.stats.cycles); }, Needs::Nothing},
+      {"stall_share", [](const Point& p) { return share(p.stats.zbuffer.stall, p.stats.cycles); }, Needs::Nothing},
+      {"texture_share", [](const Point& p) { return share(p.stats.texture.busy, p.stats.cycles); }, Needs::TextureUnit},
+      {"texture_stall_share", [](const Point& p) { return share(p.stats.texture.stall, p.stats.cycles); },
+       Needs::TextureUnit},
+      {"depth_fails", [](const Point& p) { return double(p.stats.depth_fail); }, Needs::Nothing},
+      {"wrong_depth_tests", [](const Point& p) { return double(p.wrong_depth_tests); }, Needs::Nothing},
+      {"max_depth_error", [](const Point& p) { return p.max_depth_error; }, Needs::Nothing},
+      {"yosys_cells", [](const Point& p) { return double(p.cost.cells); }, Needs::HwCost},
+      {"ice40_luts", [](const Point& p) { return double(p.cost.ice40_luts); }, Needs::HwCost},
+      {"ice40_ffs", [](const Point& p) { return double(p.cost.ice40_ffs); }, Needs::HwCost},
+      {"memory_bits", [](const Point& p) { return double(p.cost.memory_bits); }, Needs::HwCost},
   };
   return columns;
 }
@@ -102,7 +115,7 @@ std::string curve_style(size_t s) {
 
 // The gnuplot script: one PNG per figure, the first axis along x, one line per combination of the
 // other axes' values. Data inline (datablocks), so the script alone redraws the plots.
-std::string gnuplot_script(const std::vector<SweepAxis>& axes, const std::vector<Point>& points, bool hw_cost,
+std::string gnuplot_script(const std::vector<SweepAxis>& axes, const std::vector<Point>& points, const Written& written,
                            const std::string& title) {
   const SweepAxis& x_axis = axes.front();
   std::vector<double> xs;
@@ -157,7 +170,7 @@ std::string gnuplot_script(const std::vector<SweepAxis>& axes, const std::vector
     gp << "$series" << s << " << EOD\n";
     for (const Point* p : series[series_names[s]]) {
       gp << format_value(x_of(*p));
-      for (const Column& c : columns) gp << " " << (c.hardware && !hw_cost ? "0" : format_value(c.value(*p)));
+      for (const Column& c : columns) gp << " " << (written(c) ? format_value(c.value(*p)) : "0");
       gp << "\n";
     }
     gp << "EOD\n";
@@ -173,8 +186,8 @@ std::string gnuplot_script(const std::vector<SweepAxis>& axes, const std::vector
     gp << "\n";
   };
   for (size_t c = 0; c < columns.size(); ++c)
-    if (!columns[c].hardware || hw_cost) plot(std::string(columns[c].name) + ".png", columns[c].name, c, false);
-  if (hw_cost) {  // cycles against area: one point per sweep point
+    if (written(columns[c])) plot(std::string(columns[c].name) + ".png", columns[c].name, c, false);
+  if (written.hw_cost) {  // cycles against area: one point per sweep point
     gp << "unset logscale x\nunset xtics\nset xtics\nset xrange [*:*]\nset xlabel 'cycles'\n";
     const size_t luts = size_t(std::find_if(columns.begin(), columns.end(), [](const Column& c) {
                                  return std::string(c.name) == "ice40_luts";
@@ -282,6 +295,7 @@ CLI::App* add_sweep_command(CLI::App& app, SweepOptions& o) {
   CLI::App* cmd = app.add_subcommand(
       "sweep", "render one scene at every combination of swept profile (and camera) values: CSV, plots, hardware cost");
   add_scene_options(*cmd, o.scene);
+  add_texture_options(*cmd, o.scene);
   cmd->add_option("--vary", o.vary,
                   "KEY=V1,V2,...: a profile key (e.g. traversal=bbox,span, memory_latency=1,2,4, z_bits=16,24) or "
                   "a camera key (near, far, fov); repeat for more axes (every combination is run; the first "
@@ -349,6 +363,15 @@ int run_sweep(const SweepOptions& o) {
     }
     check_backend_profile(backend, profiles[i]);
   }
+  Written written;
+  written.hw_cost = o.hw_cost;
+  for (const Profile& p : profiles) written.texture_unit = written.texture_unit || p.texture_unit;
+  const std::string texture_flags = texture_words(o.scene);
+  if (!texture_flags.empty() && !written.texture_unit)
+    throw InputError("the texture flags (" + texture_flags + ") need the texture_unit at some point of the sweep");
+  Profile texture_profile = base;
+  texture_profile.texture_unit = written.texture_unit;
+  const TextureBinding texture = texture_binding(o.scene, o.scene.input, o.scene.scene, texture_profile);
   if (o.plots && std::system("gnuplot --version > /dev/null 2>&1") != 0)
     throw InputError("gnuplot is not installed (scripts/install-deps.sh installs gnuplot-nox), or use --no-plots");
   std::error_code ec;
@@ -381,6 +404,7 @@ int run_sweep(const SweepOptions& o) {
     for (const ScreenTriangle& t : screen) snapped.push_back(snap(t, p));
     DepthErrorMeter meter(screen, snapped, p);
     BackendOptions backend_options;
+    backend_options.texture = texture;
     point.stats = render_triangles(backend, p, snapped, &meter, nullptr, backend_options).stats;
     point.max_depth_error = meter.max_depth_error();
     point.wrong_depth_tests = meter.wrong_depth_tests();
@@ -401,20 +425,20 @@ int run_sweep(const SweepOptions& o) {
   for (const SweepAxis& a : axes) csv << a.key << ",";
   bool first = true;
   for (const Column& c : figure_columns())
-    if (!c.hardware || o.hw_cost) csv << (first ? "" : ",") << c.name, first = false;
+    if (written(c)) csv << (first ? "" : ",") << c.name, first = false;
   csv << "\n";
   for (const Point& p : points) {
     for (const std::string& v : p.values) csv << v << ",";
     first = true;
     for (const Column& c : figure_columns())
-      if (!c.hardware || o.hw_cost) csv << (first ? "" : ",") << format_value(c.value(p)), first = false;
+      if (written(c)) csv << (first ? "" : ",") << format_value(c.value(p)), first = false;
     csv << "\n";
   }
   std::string title = o.scene.input.empty() ? "scene " + (o.scene.scene.empty() ? std::string("default") : o.scene.scene)
                                             : fs::path(o.scene.input).filename().string();
   title += ", " + std::to_string(base.width) + "x" + std::to_string(base.height) + ", " + o.backend;
   write_text_file(csv_temp, csv_path, csv.str());
-  write_text_file(gp_temp, gp_path, gnuplot_script(axes, points, o.hw_cost, title));
+  write_text_file(gp_temp, gp_path, gnuplot_script(axes, points, written, title));
   outputs.commit();
   std::cout << "wrote " << csv_path << "\nwrote " << gp_path << "\n";
   if (o.plots) {

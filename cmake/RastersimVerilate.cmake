@@ -108,7 +108,8 @@ endfunction()
 # Expects PkgConfig::SYSTEMC.
 function(rastersim_systemc_targets config)
   set(sc_dir ${RASTERSIM_SOURCE_ROOT}/testbench/systemc)
-  set(sc_sources ${sc_dir}/command_fifo.cpp ${sc_dir}/zbuffer_memory_model.cpp ${sc_dir}/rastersim_system.cpp)
+  set(sc_sources ${sc_dir}/command_fifo.cpp ${sc_dir}/zbuffer_memory_model.cpp ${sc_dir}/texture_memory_model.cpp
+                 ${sc_dir}/rastersim_system.cpp)
   add_library(rastersim_systemc_core STATIC ${sc_sources}
     # The register range checks of the setup record it reads (model/fixed.h): the shared library
     # takes nothing from the program, and the model library is not position-independent.

@@ -77,13 +77,6 @@ struct Profile {
   bool depth_biased() const { return depth_bias_constant != 0 || depth_bias_slope != 0; }
 };
 
-// Why the SystemC system refuses a profile with the texture unit: the model, the RTL and the vector
-// packages have it, the SystemC system's texture memory model is not built yet
-// (docs/design/texturing.md, step 4).
-inline constexpr const char* kNoTextureUnitInSystemc =
-    "texture_unit: the SystemC system has no texture memory model yet (the model and --backend rtl have the "
-    "texture unit)";
-
 // Every error found, each a sentence naming the key; empty when the profile is valid.
 std::vector<std::string> validate(const Profile& profile);
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Profiles the build has no verilated RTL for run anyway (docs/debugging.md "Any profile on the RTL
-# backends"): a 48x48 profile through --backend rtl, cosim and systemc, verilated on demand into a
-# cache of this test's own. Checks that two runs started together build the module once and agree;
+# backends"): a 48x48 profile through --backend rtl, cosim and systemc, and a textured 48x32 one
+# through systemc, verilated on demand into a cache of this test's own. Checks that two runs started together build the module once and agree;
 # the outputs equal the model's; a later run loads the module without building (and prints how long
 # it took); a bad cache folder, an invalid profile or a stall pattern (no RTL build runs one) is an
 # error (exit 2) that writes and builds nothing.
@@ -58,6 +58,20 @@ if "$exe" render --help | grep -q 'systemc (the verilated core'; then
   "$exe" render --backend systemc "${profile[@]}" -o sc2.png > /dev/null 2> sc2.err
   echo "second run of render --backend systemc ${profile[*]}: $(( ($(date +%s%N) - start) / 1000000 )) ms"
   [ ! -s sc2.err ] || fail "the second SystemC run printed: $(cat sc2.err)"
+
+  # The texture unit in the SystemC system: a core built with it, the texture memory model with its
+  # latency and stall pattern; the textured floor scene equals the model's in every fragment and
+  # cycle and in every counter (serial setup: the smallest textured core to build).
+  textured=(--scene floor --width 48 --height 32 --setup-interval 0 --texture-unit true --texture-latency 3
+            --texture-stall-percent 30 --texture-stall-seed 2)
+  "$exe" render --backend model "${textured[@]}" -o tm.png --fragments tm.csv --stats tm.json > /dev/null
+  "$exe" render --backend systemc "${textured[@]}" -o ts.png --fragments ts.csv --stats ts.json > /dev/null 2> ts.err ||
+    fail "render --backend systemc with the texture unit failed: $(cat ts.err)"
+  grep -q 'texture unit is not built in' ts.err || fail "no textured SystemC module was built: $(cat ts.err)"
+  cmp -s tm.png ts.png && cmp -s tm.csv ts.csv && cmp -s tm.json ts.json ||
+    fail "render --backend systemc with the texture unit differs from the model"
+  python3 -c 'import json, sys; u = json.load(open("ts.json"))["units"]["texture"]; sys.exit(u["busy"] == 0 or u["stall"] == 0)' ||
+    fail "the texture unit was never busy or its memory never stalled"
 fi
 
 # Errors: a cache folder that cannot be made, and an invalid profile (refused before any build).

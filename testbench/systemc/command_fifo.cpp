@@ -37,6 +37,16 @@ void CommandFifo::clocked() {
   if (!rst.read() && !holding_ && fifo_.nb_read(head)) {
     holding_ = true;
     rtl::drive_command(*this, head, coord_bits_);
+    cmd_textured.write(head.textured);
+    sc_core::sc_out<sc_dt::sc_bv<3 * kTextureVertexBits>>* words[3] = {&cmd_texture0, &cmd_texture1, &cmd_texture2};
+    for (int k = 0; k < 3; ++k) {
+      sc_dt::sc_bv<3 * kTextureVertexBits> word;
+      const int64_t values[3] = {head.v[k].s, head.v[k].t, head.v[k].q};
+      for (int c = 0; c < 3; ++c)
+        word.range(c * kTextureVertexBits + kTextureVertexBits - 1, c * kTextureVertexBits) =
+            sc_dt::sc_uint<kTextureVertexBits>(uint64_t(values[c]));
+      words[k]->write(word);
+    }
   }
   cmd_valid.write(holding_);
 }

@@ -12,6 +12,7 @@
 #include <ostream>
 
 #include "model/triangle.h"
+#include "model/widths.h"
 
 namespace rastersim {
 // sc_fifo prints its contents (sc_fifo::print); one line per triangle.
@@ -32,6 +33,10 @@ class CommandFifo : public sc_core::sc_module {
   sc_core::sc_out<uint32_t> cmd_x0, cmd_y0, cmd_x1, cmd_y1, cmd_x2, cmd_y2;
   sc_core::sc_out<uint32_t> cmd_z0, cmd_z1, cmd_z2;
   sc_core::sc_out<uint32_t> cmd_rgb0, cmd_rgb1, cmd_rgb2;
+  // Texture coordinates (a core with the texture unit reads them): cmd_textureK = {Q, T, S} of
+  // vertex K, kTextureVertexBits each, two's complement.
+  sc_core::sc_out<bool> cmd_textured;
+  sc_core::sc_out<sc_dt::sc_bv<3 * kTextureVertexBits>> cmd_texture0, cmd_texture1, cmd_texture2;
 
   SC_HAS_PROCESS(CommandFifo);
   // depth: FIFO entries; coord_bits: the core's COORD_BITS (Vrastersim_sc_rastersim_core::COORD_BITS).

@@ -80,7 +80,8 @@ int sc_main(int, char*[]) {
   sc_signal<uint32_t> setup_status, frag_x, frag_y, frag_z, frag_rgb;
   sc_signal<bool> mem_clear_done, mem_rd_valid, mem_rd_ready, mem_wr_depth_en, mem_wr_color_en;
   sc_signal<uint32_t> mem_rd_addr, mem_rd_depth, mem_wr_addr, mem_wr_depth, mem_wr_rgb;
-  // The texture unit's ports: this core is built without one, so they stay at zero.
+  // The texture unit's ports: this core is built without one (the FIFO drives the texture command
+  // words anyway: zero for untextured triangles; no texture memory model is needed).
   sc_signal<uint32_t> cfg_texture_latency, cfg_texture_log2_width, cfg_texture_log2_height;
   sc_signal<bool> cfg_texture_bilinear, cfg_texture_clamp, cmd_textured, walker_frag_valid, walker_frag_ready;
   sc_signal<bool> texture_busy, texture_stall, tex_rd_valid, tex_rd_ready;
@@ -136,6 +137,8 @@ int sc_main(int, char*[]) {
   fifo.cmd_x0(cmd[0]), fifo.cmd_y0(cmd[1]), fifo.cmd_x1(cmd[2]), fifo.cmd_y1(cmd[3]);
   fifo.cmd_x2(cmd[4]), fifo.cmd_y2(cmd[5]), fifo.cmd_z0(cmd[6]), fifo.cmd_z1(cmd[7]), fifo.cmd_z2(cmd[8]);
   fifo.cmd_rgb0(cmd[9]), fifo.cmd_rgb1(cmd[10]), fifo.cmd_rgb2(cmd[11]);
+  fifo.cmd_textured(cmd_textured);
+  fifo.cmd_texture0(cmd_texture[0]), fifo.cmd_texture1(cmd_texture[1]), fifo.cmd_texture2(cmd_texture[2]);
 
   rastersim::systemc::ZBufferMemoryModel memory("memory", profile);
   memory.clk(clk), memory.rst(rst), memory.clear_done(mem_clear_done);

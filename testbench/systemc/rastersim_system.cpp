@@ -50,6 +50,12 @@ std::string RastersimSystem::geometry_error(const Profile& p) {
     return "depth_exponent_bits " + std::to_string(p.depth_exponent_bits) + ": the SystemC core is built with " +
            std::to_string(int(Core::P_DEPTH_EXPONENT_BITS));
   if (p.depth_biased() && int(Core::P_DEPTH_BIAS) == 0) return "a depth bias: the SystemC core is built without one";
+  if (p.texture_unit != (int(Core::P_TEXTURE) != 0))
+    return std::string("texture_unit ") + (p.texture_unit ? "true" : "false") + ": the SystemC core is built " +
+           (p.texture_unit ? "without" : "with") + " the texture unit";
+  if (p.texture_unit && p.texture_latency > int(Core::P_MAX_TEXTURE_LATENCY))
+    return "texture_latency " + std::to_string(p.texture_latency) + " exceeds the SystemC core's maximum " +
+           std::to_string(int(Core::P_MAX_TEXTURE_LATENCY));
   if (p.memory_latency > max_memory_latency())
     return "memory_latency " + std::to_string(p.memory_latency) + " exceeds the SystemC core's maximum " +
            std::to_string(max_memory_latency());
@@ -60,7 +66,6 @@ std::string RastersimSystem::geometry_error(const Profile& p) {
 }
 
 std::string RastersimSystem::configuration_error(const Profile& p) {
-  if (p.texture_unit) return kNoTextureUnitInSystemc;
   if (std::string error = geometry_error(p); !error.empty()) return error;
   if (p.setup_fifo_depth > int(Core::P_MAX_SETUP_FIFO_DEPTH))
     return "setup_fifo_depth " + std::to_string(p.setup_fifo_depth) + " exceeds the SystemC core's maximum " +
@@ -73,7 +78,8 @@ RastersimSystem::RastersimSystem(sc_core::sc_module_name name, int fifo_depth)
       clk_("clk", kPeriod),
       core_("core"),
       fifo_("command_fifo", fifo_depth, int(Core::COORD_BITS)),
-      memory_("zbuffer_memory", built_geometry()) {
+      memory_("zbuffer_memory", built_geometry()),
+      texture_memory_("texture_memory") {
   core_.clk(clk_);
   core_.rst(rst_);
   core_.cfg_depth_func(cfg_depth_func_);
@@ -145,6 +151,8 @@ RastersimSystem::RastersimSystem(sc_core::sc_module_name name, int fifo_depth)
   fifo_.cmd_x2(cmd_x2_), fifo_.cmd_y2(cmd_y2_);
   fifo_.cmd_z0(cmd_z0_), fifo_.cmd_z1(cmd_z1_), fifo_.cmd_z2(cmd_z2_);
   fifo_.cmd_rgb0(cmd_rgb0_), fifo_.cmd_rgb1(cmd_rgb1_), fifo_.cmd_rgb2(cmd_rgb2_);
+  fifo_.cmd_textured(cmd_textured_);
+  fifo_.cmd_texture0(cmd_texture0_), fifo_.cmd_texture1(cmd_texture1_), fifo_.cmd_texture2(cmd_texture2_);
 
   memory_.clk(clk_);
   memory_.rst(rst_);
@@ -158,6 +166,13 @@ RastersimSystem::RastersimSystem(sc_core::sc_module_name name, int fifo_depth)
   memory_.wr_addr(mem_wr_addr_);
   memory_.wr_depth(mem_wr_depth_);
   memory_.wr_rgb(mem_wr_rgb_);
+
+  texture_memory_.clk(clk_);
+  texture_memory_.rst(rst_);
+  texture_memory_.rd_valid(tex_rd_valid_);
+  texture_memory_.rd_ready(tex_rd_ready_);
+  texture_memory_.rd_addr(tex_rd_addr_);
+  texture_memory_.rd_texels(tex_rd_texels_);
 
   SC_THREAD(host);
   sensitive << clk_.posedge_event();
@@ -187,6 +202,13 @@ void RastersimSystem::host() {
     cfg_setup_fifo_depth_.write(uint32_t(p.setup_fifo_depth));
     cfg_depth_bias_constant_.write(uint64_t(p.depth_bias_constant) & ((uint64_t(1) << 33) - 1));
     cfg_depth_bias_slope_.write(uint32_t(uint8_t(p.depth_bias_slope)));
+    // The texture (a core without the texture unit ignores these).
+    const Texture* texture = texture_.texture.get();
+    cfg_texture_latency_.write(uint32_t(p.texture_unit ? p.texture_latency : 1));
+    cfg_texture_log2_width_.write(uint32_t(texture ? texture->log2_width() : 0));
+    cfg_texture_log2_height_.write(uint32_t(texture ? texture->log2_height() : 0));
+    cfg_texture_bilinear_.write(texture_.filter == TextureFilter::Bilinear);
+    cfg_texture_clamp_.write(texture_.wrap == TextureWrap::Clamp);
     rst_.write(true);
     for (int i = 0; i < kResetCycles; ++i) wait();
     // The memory dropped clear_done at the first reset edge; the frame starts when it rises again.
@@ -218,11 +240,13 @@ void RastersimSystem::monitor() {
 }
 
 rtl::RtlResult RastersimSystem::run_frame(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
-                                          int64_t max_cycles) {
+                                          int64_t max_cycles, const TextureBinding& texture) {
   if (stuck_) throw std::runtime_error("the SystemC system did not finish an earlier frame; it needs a new process");
   const std::string error = configuration_error(profile);
   if (!error.empty()) throw std::invalid_argument(error);
   memory_.configure(profile);
+  texture_memory_.configure(profile, texture);
+  texture_ = texture;
   rtl::RtlResult result;
   profile_ = profile;
   triangles_ = &triangles;
@@ -245,6 +269,10 @@ rtl::RtlResult RastersimSystem::run_frame(const Profile& profile, const std::vec
   if (!memory_.error().empty()) {
     result.finished = false;
     result.note = "z-buffer memory model: " + memory_.error();
+  }
+  if (!texture_memory_.error().empty()) {
+    result.finished = false;
+    result.note = "texture memory model: " + texture_memory_.error();
   }
   observer_->finish();
   result.depth = memory_.memory().depth();

@@ -1,10 +1,11 @@
 // The SystemC system model (docs/systemc.md): rastersim_core verilated with --sc at one profile's
 // geometry (Vrastersim_sc), fed by the command FIFO, with the z-buffer memory model (latency and
-// stall pattern) behind its memory port, a clock, a reset, and a monitor that turns the core's trace
+// stall pattern) behind its memory port, the texture memory model (latency and stall pattern)
+// behind its texture port (a core with the texture unit), a clock, a reset, and a monitor that turns the core's trace
 // ports into the model's records (testbench/core_ports.h, as the plain verilated harness does).
 // SystemC elaborates once per process: build one RastersimSystem and call run_frame() for every
 // frame; each frame resets the system and takes its own runtime settings (depth test, culling,
-// traversal, shading, memory latency, stall pattern).
+// traversal, shading, memory latency, stall patterns, depth bias, texture and its sampling).
 #pragma once
 
 #include <systemc>
@@ -20,6 +21,7 @@
 #include "testbench/core_ports.h"
 #include "testbench/rtl_backend.h"
 #include "testbench/systemc/command_fifo.h"
+#include "testbench/systemc/texture_memory_model.h"
 #include "testbench/systemc/zbuffer_memory_model.h"
 
 namespace rastersim::systemc {
@@ -38,13 +40,14 @@ class RastersimSystem : public sc_core::sc_module {
   // Empty when run_frame can take `profile` (already valid: see validate()), else why not.
   static std::string configuration_error(const Profile& profile);
   // The part of configuration_error that a core verilated for other parameters would not have:
-  // geometry, memory latency, setup_interval.
+  // geometry, memory latency, setup_interval, texture unit, depth word and bias.
   static std::string geometry_error(const Profile& profile);
 
   // Runs one frame: reset, the triangles through the FIFO, until the pipeline is idle (or
-  // max_cycles, 0 = a bound from the triangles). Call between simulations, not from a process.
+  // max_cycles, 0 = a bound from the triangles). With the texture unit its memory holds
+  // `texture`. Call between simulations, not from a process.
   rtl::RtlResult run_frame(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
-                           int64_t max_cycles = 0);
+                           int64_t max_cycles = 0, const TextureBinding& texture = {});
 
   int64_t simulated_cycles() const { return clock_cycles_; }  // every clock so far, resets included
 
@@ -72,8 +75,7 @@ class RastersimSystem : public sc_core::sc_module {
   // Memory port.
   sc_core::sc_signal<bool> mem_clear_done_, mem_rd_valid_, mem_rd_ready_, mem_wr_depth_en_, mem_wr_color_en_;
   sc_core::sc_signal<uint32_t> mem_rd_addr_, mem_rd_depth_, mem_wr_addr_, mem_wr_depth_, mem_wr_rgb_;
-  // The texture unit's ports (a core without one: held at zero and unused; this system refuses
-  // texture_unit).
+  // The texture unit's ports (a core without one leaves them unused).
   sc_core::sc_signal<uint32_t> cfg_texture_latency_, cfg_texture_log2_width_, cfg_texture_log2_height_;
   sc_core::sc_signal<bool> cfg_texture_bilinear_, cfg_texture_clamp_, cmd_textured_;
   sc_core::sc_signal<uint64_t> cfg_depth_bias_constant_;  // the profile's (unused by a core without DEPTH_BIAS)
@@ -87,9 +89,11 @@ class RastersimSystem : public sc_core::sc_module {
   Vrastersim_sc core_;
   CommandFifo fifo_;
   ZBufferMemoryModel memory_;
+  TextureMemoryModel texture_memory_;
 
   // The frame being run.
   Profile profile_;
+  TextureBinding texture_;
   const std::vector<SnappedTriangle>* triangles_ = nullptr;
   rtl::RtlResult* result_ = nullptr;
   std::optional<rtl::TraceObserver> observer_;

@@ -36,7 +36,7 @@ std::string geometry_error(const Profile& p) { return RastersimSystem::geometry_
 
 rtl::RtlResult run_systemc(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
                            const SystemcOptions& options) {
-  return system(options).run_frame(profile, triangles, options.max_cycles);
+  return system(options).run_frame(profile, triangles, options.max_cycles, options.texture);
 }
 
 int64_t simulated_cycles() { return system(SystemcOptions{}).simulated_cycles(); }

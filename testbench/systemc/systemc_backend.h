@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "model/profile.h"
+#include "model/texture_unit.h"
 #include "model/triangle.h"
 #include "testbench/rtl_backend.h"
 
@@ -21,6 +22,7 @@ struct SystemcOptions {
   uint64_t seed = 1;       // random power-on state of the core (the first frame of the process only)
   int64_t max_cycles = 0;  // 0: a generous bound from the triangles' bounding boxes
   int fifo_depth = 16;     // command FIFO entries (the first frame of the process only)
+  TextureBinding texture;  // what the texture unit samples (profiles with texture_unit)
 };
 
 // The geometry the SystemC core was verilated for (width, height, subpixel_bits, z_bits,

@@ -242,6 +242,44 @@ TEST(CliSweep, AnInverseWBufferRefusesAnOrthographicCameraAndLess) {
   EXPECT_FALSE(fs::exists(dir.path("a.png")));
 }
 
+// A sweep with the texture unit gains the texture unit's busy and stall shares, equal to what
+// render reports; one without it has neither; texture flags without the unit are refused.
+TEST(CliSweep, TheTextureUnitsSharesAreColumnsWhenAPointHasIt) {
+  ScratchDir dir;
+  const std::vector<std::string> base = {"--scene", "floor", "--width", "64", "--height", "48", "--texture-unit",
+                                         "true", "--texture-latency", "4"};
+  std::vector<std::string> args = {"sweep", "--vary", "texture_stall_percent=0,40", "--out", "t", "--no-plots"};
+  args.insert(args.end(), base.begin(), base.end());
+  const RunResult r = run_rastersim(dir, args);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto rows = read_csv(dir.path("t/sweep.csv"));
+  ASSERT_EQ(rows.size(), 2u);
+  for (const auto& row : rows) {
+    std::vector<std::string> render = {"render", "--stats", "s.json", "--texture-stall-percent",
+                                       row.at("texture_stall_percent")};
+    render.insert(render.end(), base.begin(), base.end());
+    const RunResult rr = run_rastersim(dir, render);
+    ASSERT_EQ(rr.exit_code, 0) << rr.err;
+    const nlohmann::json s = read_json(dir.path("s.json"));
+    const double cycles = s["cycles"].get<double>();
+    EXPECT_GT(s["units"]["texture"]["busy"].get<int64_t>(), 1000);
+    EXPECT_NEAR(std::stod(row.at("texture_share")), s["units"]["texture"]["busy"].get<double>() / cycles, 1e-5);
+    EXPECT_NEAR(std::stod(row.at("texture_stall_share")), s["units"]["texture"]["stall"].get<double>() / cycles, 1e-5);
+  }
+  EXPECT_EQ(std::stod(rows[0].at("texture_stall_share")), 0.0);  // no back-pressure: no read waits
+  EXPECT_GT(std::stod(rows[1].at("texture_stall_share")), 0.0);
+
+  const RunResult plain = run_rastersim(dir, {"sweep", "--vary", "memory_latency=1,2", "--out", "p", "--no-plots",
+                                              "--width", "64", "--height", "48"});
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_FALSE(contains(read_text(dir.path("p/sweep.csv")), "texture")) << read_text(dir.path("p/sweep.csv"));
+  const RunResult refused = run_rastersim(dir, {"sweep", "--vary", "memory_latency=1,2", "--out", "q",
+                                                "--texture-filter", "nearest"});
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_TRUE(contains(refused.err, "need the texture_unit at some point of the sweep")) << refused.err;
+  EXPECT_FALSE(fs::exists(dir.path("q")));
+}
+
 // The exact plane of the sweep's depth error is the reference's (tests/reference.h).
 TEST(CliSweep, DepthErrorAgainstTheReferencePlane) {
   SnappedTriangle t;
