@@ -52,6 +52,9 @@ UNITS = {
 }
 PROFILE_PARAMETERS = ["WIDTH", "HEIGHT", "SUBPIXEL_BITS", "Z_BITS", "Z_GUARD_BITS", "MAX_MEMORY_LATENCY",
                       "MAX_SETUP_FIFO_DEPTH", "SETUP_INTERVAL"]
+# Build options of the core (rtl/rastersim_core.sv), passed to a unit that declares them only when
+# they differ from their defaults here (so that results cached without them stay valid).
+BUILD_OPTIONS = {"TEXTURE": 0, "MAX_TEXTURE_LATENCY": 64, "DEPTH_EXPONENT_BITS": 0, "DEPTH_BIAS": 0}
 DEVICES = {"hx8k": ("--hx8k", "ct256", 7680, 32), "up5k": ("--up5k", "sg48", 5280, 30), "hx1k": ("--hx1k", "tq144", 1280, 16)}
 BRAM_BITS = 4096  # SB_RAM40_4K
 MEMORY_UNITS = {"zbuffer_memory", "rastersim_top"}  # the units that hold the frame memory
@@ -129,7 +132,13 @@ def rtl_sources():
 
 def module_parameters(unit):
     text = open(os.path.join(RTL, unit + ".sv")).read()
-    return [p for p in PROFILE_PARAMETERS if re.search(r"parameter\s+integer\s+" + p + r"\b", text)]
+    return [p for p in PROFILE_PARAMETERS + list(BUILD_OPTIONS) if re.search(r"parameter\s+integer\s+" + p + r"\b", text)]
+
+
+def unit_parameters(unit, profile):
+    """The parameters a unit of rtl/ is synthesized with: the profile parameters it declares, and
+    the build options it declares that differ from their defaults."""
+    return {p: profile[p] for p in module_parameters(unit) if p not in BUILD_OPTIONS or profile[p] != BUILD_OPTIONS[p]}
 
 
 def yosys_ports(work, top, read, chparams):
@@ -253,7 +262,7 @@ def cost_unit(unit, args, profile, work):
                       if re.search(r"parameter\s+integer\s+" + p + r"\b", SHIMS[unit])}
     else:
         top = unit
-        parameters = {p: profile[p] for p in module_parameters(unit)}
+        parameters = unit_parameters(unit, profile)
     unit_dir = os.path.join(work, unit)
     os.makedirs(unit_dir, exist_ok=True)
     frame_bits = frame_memory_bits(profile["WIDTH"], profile["HEIGHT"], profile["Z_BITS"])
@@ -352,6 +361,9 @@ def main():
                 "MAX_SETUP_FIFO_DEPTH": 1, "SETUP_INTERVAL": 0}
     for p in PROFILE_PARAMETERS:
         parser.add_argument("--" + p.lower().replace("_", "-"), type=int, default=defaults[p], dest=p)
+    for p, default in BUILD_OPTIONS.items():
+        parser.add_argument("--" + p.lower().replace("_", "-"), type=int, default=default, dest=p,
+                            help=f"build option of the core (default {default})")
     parser.add_argument("--device", choices=sorted(DEVICES), default="hx8k")
     parser.add_argument("--units", default=" ".join(UNITS), help="space-separated units (default: all)")
     parser.add_argument("--synthesize-memory", action="store_true",
@@ -368,7 +380,7 @@ def main():
                                                    "second run reuses (default: a new temporary one)")
     args = parser.parse_args()
     RTL = os.path.abspath(args.rtl_dir)
-    profile = {p: getattr(args, p) for p in PROFILE_PARAMETERS}
+    profile = {p: getattr(args, p) for p in PROFILE_PARAMETERS + list(BUILD_OPTIONS)}
     units = args.units.split()
     for u in units:
         if u not in UNITS:

@@ -39,6 +39,21 @@ class HwCost(unittest.TestCase):
     def tearDown(self):
         shutil.rmtree(self.work)
 
+    def test_build_options_reach_the_units_that_declare_them_when_not_default(self):
+        profile = {"WIDTH": 16, "HEIGHT": 8, "SUBPIXEL_BITS": 4, "Z_BITS": 24, "Z_GUARD_BITS": 0, "MAX_MEMORY_LATENCY": 4,
+                   "MAX_SETUP_FIFO_DEPTH": 1, "SETUP_INTERVAL": 0, **hw_cost.BUILD_OPTIONS}
+        plain = hw_cost.unit_parameters("rastersim_core", profile)
+        self.assertFalse(set(hw_cost.BUILD_OPTIONS) & set(plain))  # defaults: cached keys unchanged
+        self.assertEqual(plain["SETUP_INTERVAL"], 0)
+        profile.update({"TEXTURE": 1, "MAX_TEXTURE_LATENCY": 8, "DEPTH_EXPONENT_BITS": 3, "DEPTH_BIAS": 1})
+        core = hw_cost.unit_parameters("rastersim_core", profile)
+        self.assertEqual({k: core[k] for k in hw_cost.BUILD_OPTIONS},
+                         {"TEXTURE": 1, "MAX_TEXTURE_LATENCY": 8, "DEPTH_EXPONENT_BITS": 3, "DEPTH_BIAS": 1})
+        z_adder = hw_cost.unit_parameters("z_adder", profile)
+        self.assertEqual((z_adder.get("DEPTH_EXPONENT_BITS"), z_adder.get("DEPTH_BIAS")), (3, 1))
+        self.assertNotIn("SETUP_INTERVAL", z_adder)  # declared by the core, not by the Z adder
+        self.assertNotIn("TEXTURE", hw_cost.unit_parameters("zbuffer", profile))
+
     def test_default_profile_frame_memory_is_not_synthesized(self):
         rows, _ = run_hw_cost("--units", "zbuffer_memory rastersim_top", "--work", self.work)
         # 640 x 480 words of 24 depth and 24 colour bits, two written bitmaps of 4800 rows of 64.
