@@ -8,6 +8,8 @@
 // the commands of commands.hex one per cmd_valid/cmd_ready handshake, observes the trace_* ports
 // every cycle, reads the final memories through the read-back port and then compares what it saw
 // with the expected files: triangles.hex, setup.hex, fragments.hex, depth.hex, color.hex, frame.hex.
+// With the texture unit (TEXTURE 1) it loads texture.hex into the texture memory during reset and
+// drives texture_refuse with the profile's texture stall pattern.
 // Fragments are compared per triangle as sets (matched by pixel), so a missing or extra fragment is
 // one mismatch. Mismatches are printed earliest first (by the cycle where they show) as
 // "<file> vector <line from 0> field <name>: expected .., actual .. (context)"; the last line is
