@@ -48,7 +48,7 @@ std::string generator_name() { return std::string("rastersim ") + RASTERSIM_VERS
 
 std::string Source::arguments() const {
   if (kind == "random") return "--random " + std::to_string(count) + " --seed " + std::to_string(seed);
-  if (kind == "suite") return "--suite " + name + (texture.empty() ? "" : " " + texture);
+  if (kind == "suite") return "--suite " + name;
   const std::string camera_words = (camera.empty() ? "" : " " + camera) + (texture.empty() ? "" : " " + texture);
   if (kind == "scene") return "--scene " + name + camera_words;
   return name + camera_words;  // a file
@@ -204,7 +204,7 @@ Layouts make_layouts(const Profile& p) {
       {"setup_busy", "cycles with trace_setup_busy and not trace_setup_stall"},
       {"setup_stall", "cycles with trace_setup_stall"},
       {"walker_busy", "cycles with trace_walker_busy"},
-      {"walker_stall", "cycles with trace_frag_valid and not trace_frag_ready"},
+      {"walker_stall", "cycles with trace_walker_frag_valid and not trace_walker_frag_ready (the walker's handshake)"},
       {"zbuffer_busy", "cycles with trace_zbuffer_busy"},
       {"zbuffer_stall", "cycles with trace_zbuffer_stall (hazards, memory back-pressure)"},
       {"texture_busy", "cycles with trace_texture_busy (0 without the texture unit)"},

@@ -30,7 +30,7 @@ struct Source {
   int64_t count = 0;  // random: triangles
   uint64_t seed = 0;  // random: seed
   std::string camera; // scene or file: the camera flags given (3D inputs), as command-line words
-  std::string texture; // scene or file with the texture unit: the texture flags given, as words
+  std::string texture; // scene or file with the texture unit: the texture flags given, as command-line words
   // The words of `rastersim vectors` that select these triangles (a file by its bare name).
   std::string arguments() const;
 };
