@@ -25,7 +25,7 @@ void print_progress(const std::string& line) { std::cerr << "rastersim: " << lin
 // The library of a module built on demand for the profile (modules.h); a failed build is an error
 // of the tools, not of the input.
 std::string module_for(modules::Kind kind, const Profile& profile) {
-  return modules::module_library(kind, modules::geometry_for(profile), print_progress);
+  return modules::module_library(kind, profile, print_progress);
 }
 #endif
 

@@ -12,6 +12,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "model/core_parameters.h"
+
 namespace rastersim {
 namespace {
 
@@ -66,16 +68,7 @@ std::string default_cache_dir() {
 
 }  // namespace
 
-std::string hardware_parameters(const Profile& p) {
-  return "WIDTH=" + std::to_string(p.width) + " HEIGHT=" + std::to_string(p.height) +
-         " SUBPIXEL_BITS=" + std::to_string(p.subpixel_bits) + " Z_BITS=" + std::to_string(p.z_bits) +
-         " Z_GUARD_BITS=" + std::to_string(p.z_guard_bits) + " MAX_MEMORY_LATENCY=" + std::to_string(p.memory_latency) +
-         " MAX_SETUP_FIFO_DEPTH=" + std::to_string(p.setup_fifo_depth) +
-         " SETUP_INTERVAL=" + std::to_string(p.setup_interval) +
-         (p.texture_unit ? " TEXTURE=1 MAX_TEXTURE_LATENCY=" + std::to_string(p.texture_latency) : "") +
-         (p.depth_exponent_bits >= 2 ? " DEPTH_EXPONENT_BITS=" + std::to_string(p.depth_exponent_bits) : "") +
-         (p.depth_biased() ? " DEPTH_BIAS=1" : "");
-}
+std::string hardware_parameters(const Profile& p) { return core_parameters_text(core_parameters(p)); }
 
 HardwareCost hardware_cost(const Profile& p, const std::string& rtl_dir, const std::string& cache_dir_or_empty) {
   std::vector<fs::path> sources;

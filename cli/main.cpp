@@ -9,6 +9,7 @@
 #include "cosim_command.h"
 #include "model/input_error.h"
 #include "outputs.h"
+#include "profile_command.h"
 #include "render_command.h"
 #include "sweep_command.h"
 #include "vectors_command.h"
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
   VectorsOptions vectors_options;
   SweepOptions sweep_options;
   JunitMergeOptions junit_merge_options;
+  ProfileCommandOptions profile_options;
   CLI::App* render = add_render_command(app, render_options);
   CLI::App* bench = add_bench_command(app, bench_options);
   CLI::App* scenes = add_scenes_command(app);
@@ -37,12 +39,13 @@ int main(int argc, char** argv) {
   CLI::App* vectors = add_vectors_command(app, vectors_options);
   CLI::App* sweep = add_sweep_command(app, sweep_options);
   CLI::App* junit_merge = add_junit_merge_command(app, junit_merge_options);
+  CLI::App* profile = add_profile_command(app, profile_options);
 
   // CLI11 would report an unknown subcommand as a missing one; name it instead.
   bool known_subcommand = false;
-  for (const CLI::App* sub : {render, bench, scenes, cosim, vectors, sweep, junit_merge}) known_subcommand |= argc > 1 && sub->check_name(argv[1]);
+  for (const CLI::App* sub : {render, bench, scenes, cosim, vectors, sweep, junit_merge, profile}) known_subcommand |= argc > 1 && sub->check_name(argv[1]);
   if (argc > 1 && argv[1][0] != '-' && !known_subcommand) {
-    std::cerr << "rastersim: unknown subcommand '" << argv[1] << "' (render, cosim, junit-merge, vectors, sweep, bench, scenes; see --help)\n";
+    std::cerr << "rastersim: unknown subcommand '" << argv[1] << "' (render, cosim, junit-merge, vectors, sweep, bench, scenes, profile; see --help)\n";
     return kExitBadInput;
   }
   try {
@@ -59,6 +62,7 @@ int main(int argc, char** argv) {
     if (vectors->parsed()) return run_vectors(vectors_options);
     if (sweep->parsed()) return run_sweep(sweep_options);
     if (junit_merge->parsed()) return run_junit_merge(junit_merge_options);
+    if (profile->parsed()) return run_profile(profile_options);
   } catch (const InputError& e) {
     std::cerr << "rastersim: " << e.what() << "\n";
     return kExitBadInput;

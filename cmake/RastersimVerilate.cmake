@@ -20,47 +20,25 @@ set(RASTERSIM_RTL_SOURCES
 # The debug monitor bound into rastersim_top for waveforms (frame cycle, triangle per unit).
 set(RASTERSIM_RTL_DEBUG_SOURCES ${RASTERSIM_SOURCE_ROOT}/testbench/rtl/rastersim_debug.sv)
 
-# A configuration entry "name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency
-# [:setup_interval[:texture[:depth_exponent_bits[:depth_bias]]]]" (z_guard_bits 0 = derived) into
-# <prefix>_NAME, _WIDTH, _HEIGHT, _SUBPIXEL_BITS, _Z_BITS, _Z_GUARD_BITS, _MAX_LATENCY,
-# _SETUP_INTERVAL, _TEXTURE, _DEPTH_EXPONENT_BITS, _DEPTH_BIAS and _GENERICS (the -G arguments of
-# rastersim_core).
+# A configuration entry "name:NAME=value,NAME=value,..." (parameters of rtl/rastersim_core.sv; the
+# others keep their defaults there) into <prefix>_NAME and <prefix>_GENERICS (its -G arguments).
+# The program reads what was built back from the verilated core (its P_* constants), so this list is
+# data, not a mapping: model/core_parameters.h maps a profile to these names.
 function(rastersim_parse_config config prefix)
-  string(REPLACE ":" ";" fields "${config}")
-  list(LENGTH fields field_count)
-  if(field_count LESS 7 OR field_count GREATER 11)
-    message(FATAL_ERROR "RTL configuration '${config}' is not name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency[:setup_interval[:texture[:depth_exponent_bits[:depth_bias]]]]")
+  if(NOT config MATCHES "^([A-Za-z0-9_]+):(.*)$")
+    message(FATAL_ERROR "RTL configuration '${config}' is not name:NAME=value,NAME=value,... (an entry cached by an older build: configure with -URASTERSIM_RTL_CONFIGS)")
   endif()
-  # The optional fields 7..10, with their values for an entry written before each existed: the
-  # default setup, no texture unit, the fixed-point depth word, no depth bias.
-  set(optional_fields setup_interval texture depth_exponent_bits depth_bias)
-  set(optional_defaults 4 0 0 0)
-  foreach(i RANGE 3)
-    list(GET optional_fields ${i} field)
-    math(EXPR at "7 + ${i}")
-    if(field_count GREATER at)
-      list(GET fields ${at} ${field})
-    else()
-      list(GET optional_defaults ${i} ${field})
+  set(name ${CMAKE_MATCH_1})
+  string(REPLACE "," ";" assignments "${CMAKE_MATCH_2}")
+  set(generics "")
+  foreach(assignment ${assignments})
+    if(NOT assignment MATCHES "^[A-Z][A-Z0-9_]*=-?[0-9]+$")
+      message(FATAL_ERROR "RTL configuration '${config}': '${assignment}' is not NAME=integer")
     endif()
+    list(APPEND generics -G${assignment})
   endforeach()
-  list(GET fields 0 name)
-  list(GET fields 1 width)
-  list(GET fields 2 height)
-  list(GET fields 3 subpixel_bits)
-  list(GET fields 4 z_bits)
-  list(GET fields 5 z_guard_bits)
-  list(GET fields 6 max_latency)
-  foreach(field name width height subpixel_bits z_bits z_guard_bits max_latency setup_interval texture
-          depth_exponent_bits depth_bias)
-    string(TOUPPER ${field} upper)
-    set(${prefix}_${upper} ${${field}} PARENT_SCOPE)
-  endforeach()
-  set(${prefix}_GENERICS
-      -GWIDTH=${width} -GHEIGHT=${height} -GSUBPIXEL_BITS=${subpixel_bits} -GZ_BITS=${z_bits}
-      -GZ_GUARD_BITS=${z_guard_bits} -GMAX_MEMORY_LATENCY=${max_latency} -GSETUP_INTERVAL=${setup_interval}
-      -GTEXTURE=${texture} -GDEPTH_EXPONENT_BITS=${depth_exponent_bits} -GDEPTH_BIAS=${depth_bias}
-      PARENT_SCOPE)
+  set(${prefix}_NAME ${name} PARENT_SCOPE)
+  set(${prefix}_GENERICS ${generics} PARENT_SCOPE)
 endfunction()
 
 # Verilates one configuration into <target>: rastersim_top (plain C++, FST tracing, the debug
@@ -113,7 +91,7 @@ function(rastersim_systemc_targets config)
   add_library(rastersim_systemc_core STATIC ${sc_sources}
     # The register range checks of the setup record it reads (model/fixed.h): the shared library
     # takes nothing from the program, and the model library is not position-independent.
-    ${RASTERSIM_SOURCE_ROOT}/model/fixed.cpp)
+    ${RASTERSIM_SOURCE_ROOT}/model/fixed.cpp ${RASTERSIM_SOURCE_ROOT}/model/core_parameters.cpp)
   # Linked into the shared library; hidden so that its Verilator runtime never meets rastersim_rtl's.
   set_target_properties(rastersim_systemc_core PROPERTIES POSITION_INDEPENDENT_CODE ON
                         CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)

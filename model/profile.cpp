@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <fstream>
+#include <iterator>
+#include <type_traits>
 #include <set>
 #include <sstream>
 
@@ -38,10 +41,9 @@ std::string slope_text(int sixteenths) {
   return out.str();
 }
 
-template <size_t N>
-std::string choices(const char* const (&names)[N]) {
+std::string choices(const std::vector<const char*>& names) {
   std::string out;
-  for (size_t i = 0; i < N; ++i) out += (i ? ", " : "") + std::string(names[i]);
+  for (size_t i = 0; i < names.size(); ++i) out += (i ? ", " : "") + std::string(names[i]);
   return out;
 }
 
@@ -80,41 +82,211 @@ std::optional<DepthBuffer> parse_depth_buffer(const std::string& s) {
   return parse_enum<DepthBuffer>(s, kDepthBufferNames);
 }
 
+namespace {
+
+// Accessors for a row, from the member they read and write.
+template <auto Member>
+int64_t get_member(const Profile& p) {
+  return int64_t(p.*Member);
+}
+template <auto Member>
+void set_member(Profile& p, int64_t v) {
+  using T = std::remove_reference_t<decltype(p.*Member)>;
+  p.*Member = T(v);
+}
+#define RS_MEMBER(name) &get_member<&Profile::name>, &set_member<&Profile::name>
+
+std::vector<const char*> names_of(const char* const* names, size_t n) { return {names, names + n}; }
+#define RS_CHOICES(array) names_of(array, std::size(array))
+
+int64_t written_depth_clear(const Profile& p) { return p.depth_clear_value(); }
+
+const std::vector<ProfileKey> kTable = {
+    {"width", KeyType::Integer, 1, 4096, nullptr, 0, {}, nullptr, "screen width in pixels",
+     RtlPlace::Parameter, "WIDTH", RS_MEMBER(width)},
+    {"height", KeyType::Integer, 1, 4096, nullptr, 0, {}, nullptr, "screen height in pixels",
+     RtlPlace::Parameter, "HEIGHT", RS_MEMBER(height)},
+    {"subpixel_bits", KeyType::Integer, 1, 8, nullptr, 0, {}, nullptr, "S: vertex fraction bits",
+     RtlPlace::Parameter, "SUBPIXEL_BITS", RS_MEMBER(subpixel_bits)},
+    {"z_bits", KeyType::Integer, 16, 32, nullptr, 0, {}, nullptr, "N: depth buffer word",
+     RtlPlace::Parameter, "Z_BITS", RS_MEMBER(z_bits)},
+    {"z_guard_bits", KeyType::Integer, 0, 24, "auto", 0, {}, "`auto` or 1..24",
+     "F: plane register fraction bits; `auto` derives the proven minimum ([arithmetic.md](arithmetic.md))",
+     RtlPlace::Parameter, "Z_GUARD_BITS", RS_MEMBER(z_guard_bits)},
+    {"depth_func", KeyType::Choice, 0, 7, nullptr, 0, RS_CHOICES(kDepthFuncNames), nullptr, "depth test",
+     RtlPlace::Port, "cfg_depth_func", RS_MEMBER(depth_func)},
+    {"depth_write", KeyType::Boolean, 0, 1, nullptr, 0, {}, nullptr, "write depth on pass",
+     RtlPlace::Port, "cfg_depth_write", RS_MEMBER(depth_write)},
+    {"depth_clear", KeyType::Integer, -1, INT64_MAX, "max", -1, {}, "0..2^N-1 or `max`",
+     "depth buffer clear value; `max` is 2^N-1, or 0 with `depth_buffer` `inverse_w` (an input of rastersim_top's "
+     "on-chip memory)",
+     RtlPlace::Port, "cfg_depth_clear", RS_MEMBER(depth_clear), &written_depth_clear},
+    {"depth_buffer", KeyType::Choice, 0, 1, nullptr, 0, RS_CHOICES(kDepthBufferNames), nullptr,
+     "what the 3D front end puts in the depth plane: the projected z, or `near / w` (a 1/w buffer: needs "
+     "`depth_func` greater or gequal and a perspective camera; [arithmetic.md](arithmetic.md) section 6)",
+     RtlPlace::None, "", RS_MEMBER(depth_buffer)},
+    {"depth_exponent_bits", KeyType::Integer, 0, 4, nullptr, 0, {}, nullptr,
+     "Ne: 0 a fixed-point depth word; 1..4 an unsigned floating-point word of N bits with Ne exponent bits, the "
+     "depth plane then `N - Ne + 2^Ne - 1` bits (at most 32; [arithmetic.md](arithmetic.md) section 6). A build "
+     "option of the RTL",
+     RtlPlace::Parameter, "DEPTH_EXPONENT_BITS", RS_MEMBER(depth_exponent_bits)},
+    {"depth_bias_constant", KeyType::Integer, INT64_MIN, INT64_MAX, nullptr, 0, {},
+     "integer, \\|c\\| < 2^plane bits", "depth bias in depth plane LSBs",
+     RtlPlace::Both, "cfg_depth_bias_constant, DEPTH_BIAS", RS_MEMBER(depth_bias_constant)},
+    {"depth_bias_slope", KeyType::Sixteenths, -128, 127, nullptr, 0, {}, "-8..7.9375, a multiple of 1/16",
+     "depth bias per LSB of the triangle's largest depth step per pixel (polygon offset's factor). A bias is a "
+     "build option of the RTL; both values are run-time inputs",
+     RtlPlace::Both, "cfg_depth_bias_slope, DEPTH_BIAS", RS_MEMBER(depth_bias_slope)},
+    {"cull", KeyType::Choice, 0, 2, nullptr, 0, RS_CHOICES(kCullNames), nullptr, "face culling",
+     RtlPlace::Port, "cfg_cull", RS_MEMBER(cull)},
+    {"front_face", KeyType::Choice, 0, 1, nullptr, 0, RS_CHOICES(kFrontFaceNames), nullptr,
+     "front-face winding as seen on screen", RtlPlace::Port, "cfg_front_face", RS_MEMBER(front_face)},
+    {"traversal", KeyType::Choice, 0, 1, nullptr, 0, RS_CHOICES(kTraversalNames), nullptr,
+     "walker strategy: the whole bounding box, or edge-bounded rows ([cycle-model.md](cycle-model.md))",
+     RtlPlace::Port, "cfg_traversal", RS_MEMBER(traversal)},
+    {"shading", KeyType::Choice, 0, 1, nullptr, 0, RS_CHOICES(kShadingNames), nullptr, "colour interpolation",
+     RtlPlace::Port, "cfg_shading", RS_MEMBER(shading)},
+    {"memory_latency", KeyType::Integer, 1, kMaxMemoryLatency, nullptr, 0, {}, nullptr, "z-buffer read latency in cycles",
+     RtlPlace::Both, "cfg_memory_latency, MAX_MEMORY_LATENCY", RS_MEMBER(memory_latency)},
+    {"memory_stall_percent", KeyType::Integer, 0, 90, nullptr, 0, {}, nullptr,
+     "memory back-pressure: share of cycles refusing reads (SystemC backend; [cycle-model.md](cycle-model.md))",
+     RtlPlace::None, "", RS_MEMBER(memory_stall_percent)},
+    {"memory_stall_seed", KeyType::Integer, 0, INT32_MAX, nullptr, 0, {}, nullptr, "seed of the stall pattern",
+     RtlPlace::None, "", RS_MEMBER(memory_stall_seed)},
+    {"setup_fifo_depth", KeyType::Integer, 1, kMaxSetupFifoDepth, nullptr, 0, {}, nullptr,
+     "setup records on their way to the walker: the record FIFO between setup and walker "
+     "([cycle-model.md](cycle-model.md))",
+     RtlPlace::Both, "cfg_setup_fifo_depth, MAX_SETUP_FIFO_DEPTH", RS_MEMBER(setup_fifo_depth)},
+    {"setup_interval", KeyType::Integer, 0, kMaxSetupInterval, nullptr, 0, {}, "0, 2..64",
+     "the setup unit: 0 = serial (one shared datapath, the smallest unit, about 1,500 cycles per drawn triangle); "
+     "I = pipelined, a triangle accepted every I cycles at best ([cycle-model.md](cycle-model.md))",
+     RtlPlace::Parameter, "SETUP_INTERVAL", RS_MEMBER(setup_interval)},
+    {"texture_unit", KeyType::Boolean, 0, 1, nullptr, 0, {}, nullptr,
+     "the texture unit between walker and z-buffer, a build option of the RTL ([cycle-model.md](cycle-model.md), "
+     "\"Texture unit\"); without it texture coordinates are ignored",
+     RtlPlace::Parameter, "TEXTURE", RS_MEMBER(texture_unit)},
+    {"perspective", KeyType::Boolean, 0, 1, nullptr, 0, {}, nullptr,
+     "perspective-correct texture coordinates; false interpolates them affinely ([arithmetic.md](arithmetic.md) "
+     "section 5)",
+     RtlPlace::None, "", RS_MEMBER(perspective)},
+    {"texture_latency", KeyType::Integer, 1, kMaxTextureLatency, nullptr, 0, {}, nullptr, "texture memory read latency in cycles",
+     RtlPlace::Both, "cfg_texture_latency, MAX_TEXTURE_LATENCY", RS_MEMBER(texture_latency)},
+    {"texture_stall_percent", KeyType::Integer, 0, 90, nullptr, 0, {}, nullptr,
+     "texture memory back-pressure: share of cycles refusing reads", RtlPlace::None, "",
+     RS_MEMBER(texture_stall_percent)},
+    {"texture_stall_seed", KeyType::Integer, 0, INT32_MAX, nullptr, 0, {}, nullptr, "seed of its stall pattern",
+     RtlPlace::None, "", RS_MEMBER(texture_stall_seed)},
+};
+#undef RS_MEMBER
+#undef RS_CHOICES
+
+std::string bound_text(int64_t v) { return v == INT32_MAX ? "2^31-1" : std::to_string(v); }
+
+// The values column when the row does not give one.
+std::string values_text(const ProfileKey& row) {
+  if (row.values) return row.values;
+  switch (row.type) {
+    case KeyType::Boolean: return "true / false";
+    case KeyType::Choice: {
+      std::string out;
+      for (const char* c : row.choices) out += (out.empty() ? "" : " ") + std::string(c);
+      return out;
+    }
+    default: return bound_text(row.min) + ".." + bound_text(row.max);
+  }
+}
+
+// Markdown made plain for a terminal: "[a.md](a.md)" becomes "docs/a.md", backticks and the
+// table's escapes go.
+std::string plain(const std::string& markdown) {
+  std::string out;
+  for (size_t i = 0; i < markdown.size(); ++i) {
+    const char c = markdown[i];
+    if (c == '`' || (c == '\\' && i + 1 < markdown.size() && markdown[i + 1] == '|')) continue;
+    if (c == '[') {
+      const size_t close = markdown.find("](", i);
+      const size_t end = close == std::string::npos ? close : markdown.find(')', close);
+      if (end != std::string::npos) {
+        out += "docs/" + markdown.substr(close + 2, end - close - 2);
+        i = end;
+        continue;
+      }
+    }
+    out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
+const std::vector<ProfileKey>& profile_table() { return kTable; }
+
+const ProfileKey* find_profile_key(const std::string& key) {
+  for (const ProfileKey& row : kTable)
+    if (key == row.key) return &row;
+  return nullptr;
+}
+
 const std::vector<std::string>& profile_keys() {
-  static const std::vector<std::string> keys = {
-      "width", "height", "subpixel_bits", "z_bits", "z_guard_bits", "depth_func", "depth_write",
-      "depth_clear", "depth_buffer", "depth_exponent_bits", "depth_bias_constant", "depth_bias_slope", "cull",
-      "front_face", "traversal", "shading", "memory_latency", "memory_stall_percent", "memory_stall_seed",
-      "setup_fifo_depth", "setup_interval", "texture_unit", "perspective", "texture_latency",
-      "texture_stall_percent", "texture_stall_seed"};
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> out;
+    for (const ProfileKey& row : kTable) out.push_back(row.key);
+    return out;
+  }();
   return keys;
+}
+
+std::string key_value_text(const ProfileKey& row, int64_t value) {
+  if (row.word && value == row.word_value) return row.word;
+  switch (row.type) {
+    case KeyType::Boolean: return value ? "true" : "false";
+    case KeyType::Choice: return value >= 0 && size_t(value) < row.choices.size() ? row.choices[size_t(value)] : "?";
+    case KeyType::Sixteenths: return slope_text(int(value));
+    default: return std::to_string(value);
+  }
+}
+
+std::string key_help(const ProfileKey& row) {
+  return plain(row.meaning) + "; " + plain(values_text(row)) + " (default " + key_value_text(row, row.get(Profile{})) +
+         ")";
+}
+
+std::string profile_table_markdown() {
+  std::string out = "| key | values | default | in the RTL | meaning |\n|---|---|---|---|---|\n";
+  for (const ProfileKey& row : kTable) {
+    const std::string def = key_value_text(row, row.get(Profile{}));
+    std::string rtl;
+    for (const char* at = row.rtl_name; *at;) {  // "cfg_x, X" -> "`cfg_x`, `X`"
+      const char* end = std::strchr(at, ',');
+      const std::string name(at, end ? end : at + std::strlen(at));
+      rtl += (rtl.empty() ? "`" : ", `") + name + "`";
+      at = end ? end + 2 : at + name.size();
+    }
+    out += "| `" + std::string(row.key) + "` | " + values_text(row) + " | " +
+           (row.word && def == row.word ? "`" + def + "`" : def) + " | " + (rtl.empty() ? "-" : rtl) + " | " +
+           row.meaning + " |\n";
+  }
+  return out;
 }
 
 std::vector<std::string> validate(const Profile& p) {
   std::vector<std::string> errors;
-  auto range = [&](const char* key, int64_t v, int64_t lo, int64_t hi) {
-    if (v < lo || v > hi)
-      errors.push_back(std::string(key) + " is " + std::to_string(v) + "; it must be in " +
-                       std::to_string(lo) + ".." + std::to_string(hi));
-  };
-  range("width", p.width, 1, 4096);
-  range("height", p.height, 1, 4096);
-  range("subpixel_bits", p.subpixel_bits, 1, 8);
-  range("z_bits", p.z_bits, 16, 32);
-  range("z_guard_bits", p.z_guard_bits, 0, 24);
-  range("memory_latency", p.memory_latency, 1, 64);
-  range("memory_stall_percent", p.memory_stall_percent, 0, 90);
-  range("memory_stall_seed", p.memory_stall_seed, 0, INT32_MAX);
-  range("setup_fifo_depth", p.setup_fifo_depth, 1, kMaxSetupFifoDepth);
-  if (p.setup_interval != 0) range("setup_interval", p.setup_interval, kMinSetupInterval, kMaxSetupInterval);
-  range("texture_latency", p.texture_latency, 1, 64);
-  range("texture_stall_percent", p.texture_stall_percent, 0, 90);
-  range("texture_stall_seed", p.texture_stall_seed, 0, INT32_MAX);
+  for (const ProfileKey& row : kTable) {
+    const int64_t v = row.get(p);
+    if (v >= row.min && v <= row.max) continue;
+    if (row.type == KeyType::Sixteenths)
+      errors.push_back(std::string(row.key) + " is " + slope_text(int(v)) + "; it must be in " + values_text(row));
+    else
+      errors.push_back(std::string(row.key) + " is " + std::to_string(v) + "; it must be in " + bound_text(row.min) +
+                       ".." + bound_text(row.max));
+  }
+  // The rules that tie a key to another, or leave a gap in its range.
+  if (p.setup_interval > 0 && p.setup_interval < kMinSetupInterval)
+    errors.push_back("setup_interval is " + std::to_string(p.setup_interval) + "; it must be 0 or in " +
+                     std::to_string(kMinSetupInterval) + ".." + std::to_string(kMaxSetupInterval));
   if (p.z_bits >= 16 && p.z_bits <= 32 && p.depth_clear >= 0 && p.depth_clear > int64_t(p.depth_max()))
     errors.push_back("depth_clear is " + std::to_string(p.depth_clear) + "; it must be in 0.." +
                      std::to_string(p.depth_max()) + " for z_bits " + std::to_string(p.z_bits));
-  if (p.depth_clear < -1) errors.push_back("depth_clear must not be negative");
-  range("depth_exponent_bits", p.depth_exponent_bits, 0, 4);
   if (p.z_bits >= 16 && p.z_bits <= 32 && p.depth_exponent_bits >= 1 && p.depth_exponent_bits <= 4 &&
       p.depth_plane_bits() > 32)
     errors.push_back("depth_exponent_bits " + std::to_string(p.depth_exponent_bits) + " with z_bits " +
@@ -122,10 +294,10 @@ std::vector<std::string> validate(const Profile& p) {
                      " bits; it must be at most 32");
   else if (p.z_bits >= 16 && p.z_bits <= 32 && p.depth_exponent_bits >= 0 && p.depth_exponent_bits <= 4) {
     const int64_t limit = (int64_t(1) << p.depth_plane_bits()) - 1;
-    range("depth_bias_constant", p.depth_bias_constant, -limit, limit);
+    if (p.depth_bias_constant < -limit || p.depth_bias_constant > limit)
+      errors.push_back("depth_bias_constant is " + std::to_string(p.depth_bias_constant) + "; it must be in " +
+                       std::to_string(-limit) + ".." + std::to_string(limit));
   }
-  if (p.depth_bias_slope < -128 || p.depth_bias_slope > 127)
-    errors.push_back("depth_bias_slope is " + slope_text(p.depth_bias_slope) + "; it must be in -8..7.9375");
   if (p.depth_buffer == DepthBuffer::InverseW && (p.depth_func == DepthFunc::Less || p.depth_func == DepthFunc::LEqual))
     errors.push_back(std::string("depth_func is ") + to_string(p.depth_func) +
                      "; a 1/w buffer (depth_buffer inverse_w) keeps the nearer fragment with greater or gequal");
@@ -133,75 +305,41 @@ std::vector<std::string> validate(const Profile& p) {
 }
 
 std::string set_profile_key(Profile& p, const std::string& key, const std::string& value) {
+  const ProfileKey* row = find_profile_key(key);
+  if (!row) return "unknown profile key '" + key + "'";
   int64_t n = 0;
-  auto integer = [&](int& field) -> std::string {
-    if (!parse_int(value, n) || n < INT32_MIN || n > INT32_MAX)
-      return key + " takes an integer, not '" + value + "'";
-    field = int(n);
-    return "";
-  };
-  auto enumeration = [&](auto parsed, auto& field, const std::string& allowed) -> std::string {
-    if (!parsed) return key + " is '" + value + "'; it must be one of " + allowed;
-    field = *parsed;
-    return "";
-  };
-  if (key == "width") return integer(p.width);
-  if (key == "height") return integer(p.height);
-  if (key == "subpixel_bits") return integer(p.subpixel_bits);
-  if (key == "z_bits") return integer(p.z_bits);
-  if (key == "z_guard_bits") {
-    if (value == "auto") return p.z_guard_bits = 0, "";
-    // 0 is how the profile holds 'auto'; written as a number it is out of range.
-    if (parse_int(value, n) && n == 0) return "z_guard_bits is 0; it must be in 1..24, or auto";
-    return integer(p.z_guard_bits);
+  switch (row->type) {
+    case KeyType::Boolean: {
+      bool b = false;
+      if (!parse_bool(value, b)) return key + " takes true or false, not '" + value + "'";
+      row->set(p, b);
+      return "";
+    }
+    case KeyType::Choice:
+      for (size_t i = 0; i < row->choices.size(); ++i)
+        if (value == row->choices[i]) return row->set(p, int64_t(i)), "";
+      return key + " is '" + value + "'; it must be one of " + choices(row->choices);
+    case KeyType::Sixteenths: {
+      char* end = nullptr;
+      const double number = value.empty() ? 0 : std::strtod(value.c_str(), &end);
+      if (value.empty() || *end != '\0' || !std::isfinite(number)) return key + " takes a number, not '" + value + "'";
+      const double sixteenths = number * 16;
+      if (sixteenths < -1e6 || sixteenths > 1e6 || sixteenths != std::floor(sixteenths))
+        return key + " is " + value + "; it must be " + values_text(*row);
+      row->set(p, int64_t(sixteenths));
+      return "";
+    }
+    case KeyType::Integer: break;
   }
-  if (key == "memory_latency") return integer(p.memory_latency);
-  if (key == "memory_stall_percent") return integer(p.memory_stall_percent);
-  if (key == "memory_stall_seed") return integer(p.memory_stall_seed);
-  if (key == "setup_fifo_depth") return integer(p.setup_fifo_depth);
-  if (key == "setup_interval") return integer(p.setup_interval);
-  if (key == "depth_clear") {
-    if (value == "max") return p.depth_clear = -1, "";
-    if (!parse_int(value, n) || n < 0) return key + " takes a non-negative integer or 'max', not '" + value + "'";
-    p.depth_clear = n;
-    return "";
-  }
-  auto boolean = [&](bool& field) -> std::string {
-    if (!parse_bool(value, field)) return key + " takes true or false, not '" + value + "'";
-    return "";
-  };
-  if (key == "depth_write") return boolean(p.depth_write);
-  if (key == "texture_unit") return boolean(p.texture_unit);
-  if (key == "depth_exponent_bits") return integer(p.depth_exponent_bits);
-  if (key == "depth_bias_constant") {
-    if (!parse_int(value, n)) return key + " takes an integer, not '" + value + "'";
-    p.depth_bias_constant = n;
-    return "";
-  }
-  if (key == "depth_bias_slope") {
-    // A decimal number: exactly a multiple of 1/16 (s4.4).
-    char* end = nullptr;
-    const double slope = value.empty() ? 0 : std::strtod(value.c_str(), &end);
-    if (value.empty() || *end != '\0' || !std::isfinite(slope))
-      return key + " takes a number, not '" + value + "'";
-    const double sixteenths = slope * 16;
-    if (sixteenths < -1e6 || sixteenths > 1e6 || sixteenths != std::floor(sixteenths))
-      return key + " is " + value + "; it must be a multiple of 1/16 (0.0625) in -8..7.9375";
-    p.depth_bias_slope = int(sixteenths);
-    return "";
-  }
-  if (key == "perspective") return boolean(p.perspective);
-  if (key == "texture_latency") return integer(p.texture_latency);
-  if (key == "texture_stall_percent") return integer(p.texture_stall_percent);
-  if (key == "texture_stall_seed") return integer(p.texture_stall_seed);
-  if (key == "depth_func") return enumeration(parse_depth_func(value), p.depth_func, choices(kDepthFuncNames));
-  if (key == "cull") return enumeration(parse_cull(value), p.cull, choices(kCullNames));
-  if (key == "front_face") return enumeration(parse_front_face(value), p.front_face, choices(kFrontFaceNames));
-  if (key == "traversal") return enumeration(parse_traversal(value), p.traversal, choices(kTraversalNames));
-  if (key == "shading") return enumeration(parse_shading(value), p.shading, choices(kShadingNames));
-  if (key == "depth_buffer")
-    return enumeration(parse_depth_buffer(value), p.depth_buffer, choices(kDepthBufferNames));
-  return "unknown profile key '" + key + "'";
+  if (row->word && value == row->word) return row->set(p, row->word_value), "";
+  const bool wide = row->min < INT32_MIN || row->max > INT32_MAX;
+  if (!parse_int(value, n) || (!wide && (n < INT32_MIN || n > INT32_MAX)))
+    return key + " takes an integer" + (row->word ? " or '" + std::string(row->word) + "'" : "") + ", not '" + value + "'";
+  // A number that spells the word's value is out of range (0 is how z_guard_bits holds 'auto').
+  if (row->word && (n == row->word_value || n < row->min))
+    return key + " is '" + value + "'; it must be " + plain(values_text(*row));
+  row->set(p, n);
+  return "";
 }
 
 void load_profile_file(Profile& profile, const std::string& path) {
@@ -212,23 +350,19 @@ void load_profile_text(Profile& profile, const std::string& text, const std::str
   const nlohmann::json doc = parse_json_document(text, file_name);
   if (!doc.is_object()) throw InputError(file_name, 1, "a profile must be a JSON object");
   const JsonLines lines(text);
-  // JSON types as docs/formats.md gives them: numbers for the integer keys (z_guard_bits also
-  // "auto", depth_clear also "max"), true/false for depth_write, strings for the others.
-  auto type_error = [](const std::string& key, const nlohmann::json& v) -> std::string {
-    static const std::set<std::string> integers = {"width", "height", "subpixel_bits", "z_bits", "memory_latency",
-                                                   "memory_stall_percent", "memory_stall_seed", "setup_fifo_depth",
-                                                   "setup_interval", "texture_latency", "texture_stall_percent",
-                                                   "texture_stall_seed", "depth_exponent_bits",
-                                                   "depth_bias_constant"};
+  // JSON types as docs/formats.md gives them: numbers for the integer keys (and a word where the
+  // key has one), true/false for the booleans, strings for the choices.
+  auto type_error = [](const ProfileKey& row, const nlohmann::json& v) -> std::string {
     const bool is_integer = v.is_number_integer() || v.is_number_unsigned();
-    if (integers.count(key)) return is_integer ? "" : key + " must be a JSON integer, not " + v.dump();
-    if (key == "z_guard_bits" || key == "depth_clear") {
-      const char* word = key == "z_guard_bits" ? "\"auto\"" : "\"max\"";
-      return is_integer || v.is_string() ? "" : key + " must be a JSON integer or " + word + ", not " + v.dump();
+    const std::string key = row.key;
+    switch (row.type) {
+      case KeyType::Integer:
+        if (row.word) return is_integer || v.is_string() ? "" : key + " must be a JSON integer or \"" + row.word + "\", not " + v.dump();
+        return is_integer ? "" : key + " must be a JSON integer, not " + v.dump();
+      case KeyType::Sixteenths: return v.is_number() ? "" : key + " must be a JSON number, not " + v.dump();
+      case KeyType::Boolean: return v.is_boolean() ? "" : key + " must be true or false, not " + v.dump();
+      case KeyType::Choice: break;
     }
-    if (key == "depth_bias_slope") return v.is_number() ? "" : key + " must be a JSON number, not " + v.dump();
-    if (key == "depth_write" || key == "texture_unit" || key == "perspective")
-      return v.is_boolean() ? "" : key + " must be true or false, not " + v.dump();
     return v.is_string() ? "" : key + " must be a JSON string, not " + v.dump();
   };
   for (auto it = doc.begin(); it != doc.end(); ++it) {
@@ -245,9 +379,8 @@ void load_profile_text(Profile& profile, const std::string& text, const std::str
     else if (it->is_number_float()) value = it->dump();
     else throw InputError(file_name, line, "profile key '" + it.key() + "' must be a string, integer or boolean");
     std::string error = set_profile_key(profile, it.key(), value);
-    if (error.empty() && (it->is_string() || it->is_boolean() || it->is_number()) &&
-        std::count(profile_keys().begin(), profile_keys().end(), it.key()))
-      error = type_error(it.key(), *it);
+    if (error.empty() && (it->is_string() || it->is_boolean() || it->is_number()))
+      if (const ProfileKey* row = find_profile_key(it.key())) error = type_error(*row, *it);
     if (!error.empty()) throw InputError(file_name, line, error);
   }
   // Ranges (and depth_clear against z_bits) at the line of the key each error names.
@@ -259,33 +392,15 @@ void load_profile_text(Profile& profile, const std::string& text, const std::str
 
 std::string profile_to_json(const Profile& p, int indent) {
   nlohmann::ordered_json j;
-  j["width"] = p.width;
-  j["height"] = p.height;
-  j["subpixel_bits"] = p.subpixel_bits;
-  j["z_bits"] = p.z_bits;
-  if (p.z_guard_bits > 0) j["z_guard_bits"] = p.z_guard_bits;
-  else j["z_guard_bits"] = "auto";
-  j["depth_func"] = to_string(p.depth_func);
-  j["depth_write"] = p.depth_write;
-  j["depth_clear"] = p.depth_clear_value();
-  j["depth_buffer"] = to_string(p.depth_buffer);
-  j["depth_exponent_bits"] = p.depth_exponent_bits;
-  j["depth_bias_constant"] = p.depth_bias_constant;
-  j["depth_bias_slope"] = p.depth_bias_slope / 16.0;  // exact: a multiple of 1/16
-  j["cull"] = to_string(p.cull);
-  j["front_face"] = to_string(p.front_face);
-  j["traversal"] = to_string(p.traversal);
-  j["shading"] = to_string(p.shading);
-  j["memory_latency"] = p.memory_latency;
-  j["memory_stall_percent"] = p.memory_stall_percent;
-  j["memory_stall_seed"] = p.memory_stall_seed;
-  j["setup_fifo_depth"] = p.setup_fifo_depth;
-  j["setup_interval"] = p.setup_interval;
-  j["texture_unit"] = p.texture_unit;
-  j["perspective"] = p.perspective;
-  j["texture_latency"] = p.texture_latency;
-  j["texture_stall_percent"] = p.texture_stall_percent;
-  j["texture_stall_seed"] = p.texture_stall_seed;
+  for (const ProfileKey& row : kTable) {
+    const int64_t v = row.written ? row.written(p) : row.get(p);
+    nlohmann::ordered_json& out = j[row.key];
+    if (row.word && v == row.word_value) out = row.word;
+    else if (row.type == KeyType::Boolean) out = v != 0;
+    else if (row.type == KeyType::Choice) out = key_value_text(row, v);
+    else if (row.type == KeyType::Sixteenths) out = double(v) / 16.0;  // exact: a multiple of 1/16
+    else out = v;
+  }
   return j.dump(indent);
 }
 

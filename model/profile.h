@@ -20,6 +20,7 @@ enum class Shading { Flat, Gouraud };
 enum class DepthBuffer { Z, InverseW };
 
 constexpr int kMaxSetupFifoDepth = 16;  // the RTL's MAX_SETUP_FIFO_DEPTH default
+constexpr int kMaxMemoryLatency = 64, kMaxTextureLatency = 64;  // memory_latency, texture_latency
 constexpr int kMinSetupInterval = 2, kMaxSetupInterval = 64;  // the pipelined setup unit's range
 
 // Np, the depth plane's bits for a depth word of z_bits with exponent_bits (docs/arithmetic.md
@@ -94,8 +95,50 @@ std::optional<Traversal> parse_traversal(const std::string& s);
 std::optional<Shading> parse_shading(const std::string& s);
 std::optional<DepthBuffer> parse_depth_buffer(const std::string& s);
 
-// The keys of the profile, in the order they are documented and written.
+// The profile table: one row per key, the only place a key is defined. Flags, JSON reading and
+// writing, validation, --help and docs/formats.md's key table are all made from it.
+enum class KeyType {
+  Integer,     // a JSON integer; `word`, when set, is a second spelling of one value ("auto", "max")
+  Boolean,     // true / false
+  Choice,      // one of `choices`, stored as the enum's value
+  Sixteenths,  // a decimal multiple of 1/16, stored as sixteenths
+};
+// Where a key lives in the RTL (docs/rtl.md "The profile in the RTL").
+enum class RtlPlace {
+  None,       // outside the core: the front end, the memory models of the harness
+  Port,       // a cfg_* input of rastersim_core (`rtl_name`), sampled during reset
+  Parameter,  // a build parameter of rastersim_core (`rtl_name`; core_parameters() maps it)
+  Both,       // a cfg_* input whose largest value (or whose presence) is a build parameter
+};
+struct ProfileKey {
+  const char* key;  // JSON key; the flag is --key with '-' for '_'
+  KeyType type;
+  int64_t min, max;            // the stored value's range (validate())
+  const char* word;            // Integer: another spelling of `word_value`, or nullptr
+  int64_t word_value;
+  std::vector<const char*> choices;  // Choice: the names, in the enum's order
+  const char* values;          // docs/formats.md "values": what a user may write
+  const char* meaning;         // docs/formats.md "meaning", also the flag's help (links made plain)
+  RtlPlace place;
+  const char* rtl_name;        // the port or parameter(s), "" for None
+  int64_t (*get)(const Profile&);
+  void (*set)(Profile&, int64_t);
+  // What profile_to_json writes when it is not get(): depth_clear's resolved value. nullptr: get().
+  int64_t (*written)(const Profile&) = nullptr;
+};
+
+// The keys, in the order they are documented and written.
+const std::vector<ProfileKey>& profile_table();
+// The row of `key`, or nullptr.
+const ProfileKey* find_profile_key(const std::string& key);
+// The keys' names in table order.
 const std::vector<std::string>& profile_keys();
+// A stored value as a user writes it ("auto", "lequal", "true", "1.5", "640").
+std::string key_value_text(const ProfileKey& row, int64_t value);
+// The --help text of a key: its meaning (links made plain), values and default.
+std::string key_help(const ProfileKey& row);
+// docs/formats.md's key table (markdown), made from the table.
+std::string profile_table_markdown();
 
 // Sets one key from its textual value (a flag or a JSON scalar rendered as text). Returns an error
 // sentence, or an empty string on success.

@@ -30,7 +30,7 @@ for out in a b; do
   cmp -s $out.png model.png || fail "render --backend rtl ($out) differs from the model's image"
   cmp -s $out.csv model.csv || fail "render --backend rtl ($out) differs from the model's fragments"
 done
-modules=("$RASTERSIM_CACHE_DIR"/modules/rtl-48x48-*/librastersim_module.so)
+modules=("$RASTERSIM_CACHE_DIR"/modules/rtl-48-48-*/librastersim_module.so)
 [ ${#modules[@]} -eq 1 ] && [ -f "${modules[0]}" ] || fail "expected one RTL module in the cache: ${modules[*]}"
 if ls -d "$RASTERSIM_CACHE_DIR"/modules/*.staging-* 2> /dev/null; then fail "a staging folder was left behind"; fi
 

@@ -64,23 +64,9 @@ std::string sources_digest() {
   return d.hex();
 }
 
-std::string config_entry(const Geometry& g) {
-  std::ostringstream s;
-  s << "module:" << g.width << ":" << g.height << ":" << g.subpixel_bits << ":" << g.z_bits << ":" << g.z_guard_bits
-    << ":" << g.max_memory_latency << ":" << g.setup_interval << ":" << g.texture << ":" << g.depth_exponent_bits
-    << ":" << g.depth_bias;
-  return s.str();
-}
-
-std::string describe(Kind kind, const Geometry& g) {
-  std::ostringstream s;
-  s << (kind == Kind::Rtl ? "the verilated RTL" : "the SystemC core") << " for " << g.width << "x" << g.height
-    << " subpixel_bits " << g.subpixel_bits << " z_bits " << g.z_bits << " z_guard_bits "
-    << (g.z_guard_bits ? std::to_string(g.z_guard_bits) : "auto") << " memory_latency 1.." << g.max_memory_latency
-    << " setup_interval " << g.setup_interval << (g.texture ? " texture unit" : "")
-    << (g.depth_exponent_bits ? " depth_exponent_bits " + std::to_string(g.depth_exponent_bits) : "")
-    << (g.depth_bias ? " depth bias" : "");
-  return s.str();
+std::string describe(Kind kind, const CoreParameters& parameters) {
+  return std::string(kind == Kind::Rtl ? "the verilated RTL" : "the SystemC core") + " with " +
+         core_parameters_text(parameters);
 }
 
 // Runs argv with stdout and stderr into `log`, passing each output line to `on_line`. Returns the
@@ -155,12 +141,6 @@ class FileLock {
 
 }  // namespace
 
-Geometry geometry_for(const Profile& p) {
-  return Geometry{p.width, p.height, p.subpixel_bits, p.z_bits, p.z_guard_bits, std::max(64, p.memory_latency),
-                  p.setup_interval, p.texture_unit ? 1 : 0, p.depth_exponent_bits >= 2 ? p.depth_exponent_bits : 0,
-                  p.depth_biased() ? 1 : 0};
-}
-
 std::string cache_root() {
   if (const char* dir = std::getenv("RASTERSIM_CACHE_DIR"); dir && *dir) return dir;
   if (const char* dir = std::getenv("XDG_CACHE_HOME"); dir && *dir) return (fs::path(dir) / "rastersim").string();
@@ -168,35 +148,37 @@ std::string cache_root() {
   throw std::runtime_error("no cache folder for built modules: set RASTERSIM_CACHE_DIR (or HOME)");
 }
 
-std::string module_library(Kind kind, const Geometry& g, const Progress& progress) {
-  const std::string config = config_entry(g);
+CoreParameters module_parameters(const Profile& profile) { return core_parameters(profile, CoreBounds::Largest); }
+
+std::string module_library(Kind kind, const Profile& profile, const Progress& progress) {
+  const CoreParameters parameters = module_parameters(profile);
+  const std::string config = "module:" + core_parameters_text(parameters, ",");
   Digest key;
   key.add(kind == Kind::Rtl ? "rtl" : "systemc");
   key.add(config);
   key.add(RASTERSIM_MODULE_TOOLCHAIN);
   key.add(abi_stamp());
   key.add(sources_digest());
-  std::ostringstream name;
-  name << (kind == Kind::Rtl ? "rtl-" : "systemc-") << g.width << "x" << g.height << "-s" << g.subpixel_bits << "-z"
-       << g.z_bits << "-g" << g.z_guard_bits << "-l" << g.max_memory_latency << "-i" << g.setup_interval << "-t" << g.texture << "-e"
-       << g.depth_exponent_bits << "-b" << g.depth_bias << "-"
-       << key.hex();
+  // The entry's name: the kind, the parameters' values in core_parameters() order, the key.
+  std::string name = kind == Kind::Rtl ? "rtl" : "systemc";
+  for (const CoreParameter& c : parameters) name += "-" + std::to_string(c.value);
+  name += "-" + key.hex();
   const fs::path modules = fs::path(cache_root()) / "modules";
-  const fs::path entry = modules / name.str();
+  const fs::path entry = modules / name;
   const std::string library = kind == Kind::Rtl ? "librastersim_module.so" : "librastersim_systemc.so";
   if (fs::exists(entry / library)) return (entry / library).string();
 
-  const std::string what = describe(kind, g);
+  const std::string what = describe(kind, parameters);
   std::error_code ec;
   fs::create_directories(modules, ec);
   if (ec) throw std::runtime_error("cannot create the module cache " + modules.string() + ": " + ec.message());
-  FileLock lock(modules / (name.str() + ".lock"), progress, what);
+  FileLock lock(modules / (name + ".lock"), progress, what);
   if (fs::exists(entry / library)) return (entry / library).string();  // built while we waited
 
   // Only the lock holder builds this entry: a staging folder left by an interrupted build is stale.
   for (const fs::directory_entry& e : fs::directory_iterator(modules))
-    if (e.path().filename().string().rfind(name.str() + ".staging-", 0) == 0) fs::remove_all(e.path(), ec);
-  const fs::path staging = modules / (name.str() + ".staging-" + std::to_string(getpid()));
+    if (e.path().filename().string().rfind(name + ".staging-", 0) == 0) fs::remove_all(e.path(), ec);
+  const fs::path staging = modules / (name + ".staging-" + std::to_string(getpid()));
   const fs::path build = staging / "build";
   fs::create_directories(build);
   const fs::path log_path = staging / "build.log";
@@ -225,7 +207,7 @@ std::string module_library(Kind kind, const Geometry& g, const Progress& progres
     log << "\n";
     if (run_logged(step, log, on_line) != 0) {
       log.close();
-      const fs::path kept = modules / (name.str() + ".failed.log");
+      const fs::path kept = modules / (name + ".failed.log");
       fs::rename(log_path, kept, ec);
       fs::remove_all(staging, ec);
       throw std::runtime_error("building " + what + " failed; its log is " + kept.string() + ", ending:\n" +

@@ -6,6 +6,7 @@
 #include <functional>
 #include <string>
 
+#include "model/core_parameters.h"
 #include "model/pipeline.h"
 #include "model/profile.h"
 #include "model/triangle.h"
@@ -15,19 +16,6 @@ namespace rastersim::modules {
 
 enum class Kind { Rtl, Systemc };
 
-// The parameters a module is verilated with (rastersim_core's, as a RASTERSIM_RTL_CONFIGS entry).
-struct Geometry {
-  int width = 0, height = 0, subpixel_bits = 0, z_bits = 0, z_guard_bits = 0;
-  int max_memory_latency = 0, setup_interval = 0;
-  int texture = 0;  // 1: with the texture unit (profile texture_unit)
-  int depth_exponent_bits = 0, depth_bias = 0;  // the depth word (profile's, 0 for 1) and 1: the depth bias
-};
-
-// The module that runs `profile`: its geometry, z_guard_bits as the profile gives it (0: derived),
-// memory latency up to 64 (or the profile's, when larger), its setup_interval, texture unit, depth
-// word and depth bias (when the profile has one).
-Geometry geometry_for(const Profile& profile);
-
 // The cache: $RASTERSIM_CACHE_DIR, else $XDG_CACHE_HOME/rastersim, else $HOME/.cache/rastersim.
 std::string cache_root();
 
@@ -36,7 +24,10 @@ std::string cache_root();
 // it once (a lock per entry; the finished entry appears by one rename). Throws std::runtime_error
 // naming the build log when the build fails.
 using Progress = std::function<void(const std::string& line)>;
-std::string module_library(Kind kind, const Geometry& geometry, const Progress& progress);
+// The module that runs `profile`: rastersim_core's parameters with the largest run-time bounds, so
+// that one module runs every memory and texture latency and record FIFO depth.
+CoreParameters module_parameters(const Profile& profile);
+std::string module_library(Kind kind, const Profile& profile, const Progress& progress);
 
 // The records a module passes across the library boundary, as their sizes: a module compiled
 // against other headers than the program is refused instead of misread.

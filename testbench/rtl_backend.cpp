@@ -36,20 +36,15 @@ std::vector<const BuiltConfiguration*> all_configurations() {
   return all;
 }
 
-// A configuration of the profile's geometry and setup_interval, one that takes its memory_latency
-// when there is one.
+// A configuration that runs the profile (core_mismatch); failing that, one that would but for its
+// largest memory latency (configuration_error names it).
 const BuiltConfiguration* find_configuration(const Profile& p) {
-  const int guard = derive_widths(p).guard_bits;
   const BuiltConfiguration* found = nullptr;
+  Profile shortest = p;
+  shortest.memory_latency = 1;
   for (const BuiltConfiguration* c : all_configurations()) {
-    const int built_guard = derive_widths(c->width, c->height, c->subpixel_bits, c->z_bits, c->z_guard_bits).guard_bits;
-    if (c->width == p.width && c->height == p.height && c->subpixel_bits == p.subpixel_bits && c->z_bits == p.z_bits &&
-        built_guard == guard && c->setup_interval == p.setup_interval && (c->texture != 0) == p.texture_unit &&
-        depth_plane_bits(c->z_bits, c->depth_exponent_bits) == p.depth_plane_bits() &&
-        (c->depth_exponent_bits >= 2) == (p.depth_exponent_bits >= 2) && (c->depth_bias != 0 || !p.depth_biased())) {
-      if (p.memory_latency <= c->max_memory_latency) return c;
-      if (!found) found = c;
-    }
+    if (core_mismatch(c->parameters, p).empty()) return c;
+    if (!found && core_mismatch(c->parameters, shortest).empty()) found = c;
   }
   return found;
 }
@@ -58,22 +53,14 @@ const BuiltConfiguration* find_configuration(const Profile& p) {
 
 std::vector<std::string> built_configurations() {
   std::vector<std::string> out;
-  for (const BuiltConfiguration* c : all_configurations()) {
-    std::ostringstream s;
-    s << c->name << ": " << c->width << "x" << c->height << " subpixel_bits " << c->subpixel_bits << " z_bits "
-      << c->z_bits << " z_guard_bits " << (c->z_guard_bits ? std::to_string(c->z_guard_bits) : "auto")
-      << " memory_latency 1.." << c->max_memory_latency << " setup_interval " << c->setup_interval
-      << (c->texture ? " texture unit" : "")
-      << (c->depth_exponent_bits ? " depth_exponent_bits " + std::to_string(c->depth_exponent_bits) : "")
-      << (c->depth_bias ? " depth bias" : "");
-    out.push_back(s.str());
-  }
+  for (const BuiltConfiguration* c : all_configurations())
+    out.push_back(c->name + ": " + core_parameters_text(c->parameters));
   return out;
 }
 
 bool has_configuration(const Profile& p) {
   const BuiltConfiguration* c = find_configuration(p);
-  return c && p.memory_latency <= c->max_memory_latency;
+  return c && core_mismatch(c->parameters, p).empty();
 }
 
 void load_module(const std::string& library_path) {
@@ -91,7 +78,7 @@ void load_module(const std::string& library_path) {
 
 int built_max_memory_latency(const Profile& p) {
   const BuiltConfiguration* c = find_configuration(p);
-  return c ? c->max_memory_latency : 0;
+  return c ? int(parameter_value(c->parameters, "MAX_MEMORY_LATENCY")) : 0;
 }
 
 std::string configuration_error(const Profile& p) {
@@ -104,22 +91,16 @@ std::string configuration_error(const Profile& p) {
            "puts a memory with a stall pattern behind the core";
   const BuiltConfiguration* c = find_configuration(p);
   if (!c) {
-    std::string message = "no RTL is built for width " + std::to_string(p.width) + ", height " +
-                          std::to_string(p.height) + ", subpixel_bits " + std::to_string(p.subpixel_bits) +
-                          ", z_bits " + std::to_string(p.z_bits) + ", guard bits " +
-                          std::to_string(derive_widths(p).guard_bits) + ", setup_interval " +
-                          std::to_string(p.setup_interval) + (p.texture_unit ? ", texture unit" : "") +
-                          (p.depth_exponent_bits >= 2 ? ", depth_exponent_bits " + std::to_string(p.depth_exponent_bits) : "") +
-                          (p.depth_biased() ? ", depth bias" : "") + "; built:";
+    std::string message = "no RTL is built for the core " + core_parameters_text(core_parameters(p, CoreBounds::Largest)) +
+                          "; built:";
     for (const std::string& b : built_configurations()) message += " [" + b + "]";
     return message + ". rastersim verilates it on demand (--backend rtl, cosim); to build it in, add an entry to "
-                     "RASTERSIM_RTL_CONFIGS in testbench/CMakeLists.txt "
-                     "(name:width:height:subpixel_bits:z_bits:z_guard_bits:max_memory_latency:setup_interval:texture"
-                     ":depth_exponent_bits:depth_bias).";
+                     "RASTERSIM_RTL_CONFIGS in testbench/CMakeLists.txt (name:NAME=value,NAME=value, "
+                     "parameters of rastersim_core).";
   }
-  if (p.memory_latency > c->max_memory_latency)
+  if (const int64_t max = parameter_value(c->parameters, "MAX_MEMORY_LATENCY"); p.memory_latency > max)
     return "memory_latency " + std::to_string(p.memory_latency) + " exceeds the built RTL's maximum " +
-           std::to_string(c->max_memory_latency) + " (configuration " + c->name + ")";
+           std::to_string(max) + " (configuration " + c->name + ")";
   return "";
 }
 

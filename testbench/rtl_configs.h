@@ -1,17 +1,18 @@
 // The profiles verilated into this build (testbench/CMakeLists.txt, RASTERSIM_RTL_CONFIGS).
 #pragma once
 
+#include <string>
 #include <vector>
+
+#include "model/core_parameters.h"
 
 #include "testbench/rtl_backend.h"
 
 namespace rastersim::rtl {
 
 struct BuiltConfiguration {
-  const char* name;
-  int width, height, subpixel_bits, z_bits, z_guard_bits, max_memory_latency, setup_interval;
-  int texture;  // 1: built with the texture unit (profile texture_unit)
-  int depth_exponent_bits, depth_bias;  // the depth word's exponent bits; 1: built with the depth bias
+  std::string name;
+  CoreParameters parameters;  // as verilated (the core's P_* constants)
   RtlResult (*run)(const Profile&, const std::vector<SnappedTriangle>&, const RtlOptions&);
 };
 

@@ -196,5 +196,22 @@ TEST(Docs, WidthsTable) {
   }
 }
 
+// docs/formats.md's key table is the profile table (model/profile.cpp), row for row.
+TEST(Docs, ProfileKeyTableIsTheProfileTable) {
+  std::ifstream in(kDocs + "formats.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string table = profile_table_markdown();
+  EXPECT_NE(text.str().find("\n" + table + "\n"), std::string::npos)
+      << "docs/formats.md's key table differs from the profile table; `rastersim profile --keys-markdown` prints it:\n"
+      << table;
+  // Every key has a row, in table order.
+  size_t at = 0;
+  for (const std::string& key : profile_keys()) {
+    at = table.find("| `" + key + "` |", at);
+    EXPECT_NE(at, std::string::npos) << key;
+  }
+}
+
 }  // namespace
 }  // namespace rastersim

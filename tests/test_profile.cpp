@@ -234,7 +234,7 @@ TEST(ProfileFile, ErrorsNameFileLineAndProblem) {
       {"bool.json", "{\n  \"height\": 48,\n  \"depth_write\": 1\n}\n", 3, "depth_write must be true or false"},
       {"enum_number.json", "{\n  \"cull\": 1\n}\n", 2, "cull"},
       // 0 is not in 1..24 (it was taken as auto).
-      {"guard.json", "{\n  \"z_guard_bits\": 0\n}\n", 2, "z_guard_bits is 0"},
+      {"guard.json", "{\n  \"z_guard_bits\": 0\n}\n", 2, "z_guard_bits is '0'"},
       // A key given twice (the last one silently won).
       {"twice.json", "{\n  \"width\": 64,\n  \"height\": 48,\n  \"width\": 32\n}\n", 4,
        "'width' is given twice (first on line 2)"},

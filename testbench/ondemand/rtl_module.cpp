@@ -12,9 +12,8 @@ using Core = rastersim::rtl::detail::CoreOf<Vrastersim_module>;
 
 extern "C" __attribute__((visibility("default"))) const rastersim::rtl::BuiltConfiguration* rastersim_rtl_module() {
   static const rastersim::rtl::BuiltConfiguration configuration = {
-      "on demand", int(Core::P_WIDTH), int(Core::P_HEIGHT), int(Core::P_SUBPIXEL_BITS), int(Core::P_Z_BITS),
-      int(Core::P_Z_GUARD_BITS), int(Core::P_MAX_MEMORY_LATENCY), int(Core::P_SETUP_INTERVAL), int(Core::P_TEXTURE),
-      int(Core::P_DEPTH_EXPONENT_BITS), int(Core::P_DEPTH_BIAS), &rastersim::rtl::detail::run_configuration<Vrastersim_module>};
+      "on demand", rastersim::parameters_of<Core>(),
+      &rastersim::rtl::detail::run_configuration<Vrastersim_module>};
   return &configuration;
 }
 

@@ -5,6 +5,7 @@
 
 #include "Vrastersim_sc___024root.h"
 #include "Vrastersim_sc_rastersim_core.h"
+#include "model/core_parameters.h"
 #include "model/widths.h"
 
 namespace rastersim::systemc {
@@ -29,49 +30,19 @@ Profile RastersimSystem::built_geometry() {
 
 int RastersimSystem::max_memory_latency() { return int(Core::P_MAX_MEMORY_LATENCY); }
 
-std::string RastersimSystem::built_configuration() {
-  const Profile p = built_geometry();
-  return std::to_string(p.width) + "x" + std::to_string(p.height) + " subpixel_bits " +
-         std::to_string(p.subpixel_bits) + " z_bits " + std::to_string(p.z_bits) + " z_guard_bits " +
-         (p.z_guard_bits ? std::to_string(p.z_guard_bits) : "auto") + " memory_latency 1.." +
-         std::to_string(max_memory_latency());
-}
+CoreParameters RastersimSystem::built_parameters() { return parameters_of<Core>(); }
+
+std::string RastersimSystem::built_configuration() { return core_parameters_text(built_parameters()); }
 
 std::string RastersimSystem::geometry_error(const Profile& p) {
-  const Profile built = built_geometry();
-  if (p.width != built.width || p.height != built.height || p.subpixel_bits != built.subpixel_bits ||
-      p.z_bits != built.z_bits || derive_widths(p).guard_bits != derive_widths(built).guard_bits)
-    return "the SystemC backend is built for " + built_configuration() + " only (asked: width " +
-           std::to_string(p.width) + ", height " + std::to_string(p.height) + ", subpixel_bits " +
-           std::to_string(p.subpixel_bits) + ", z_bits " + std::to_string(p.z_bits) +
-           "); RASTERSIM_SYSTEMC_CONFIG in testbench/systemc/CMakeLists.txt names the configuration it is built for";
-  if (depth_plane_bits(p.z_bits, p.depth_exponent_bits) != depth_plane_bits(p.z_bits, int(Core::P_DEPTH_EXPONENT_BITS)) ||
-      (p.depth_exponent_bits >= 2) != (int(Core::P_DEPTH_EXPONENT_BITS) >= 2))
-    return "depth_exponent_bits " + std::to_string(p.depth_exponent_bits) + ": the SystemC core is built with " +
-           std::to_string(int(Core::P_DEPTH_EXPONENT_BITS));
-  if (p.depth_biased() && int(Core::P_DEPTH_BIAS) == 0) return "a depth bias: the SystemC core is built without one";
-  if (p.texture_unit != (int(Core::P_TEXTURE) != 0))
-    return std::string("texture_unit ") + (p.texture_unit ? "true" : "false") + ": the SystemC core is built " +
-           (p.texture_unit ? "without" : "with") + " the texture unit";
-  if (p.texture_unit && p.texture_latency > int(Core::P_MAX_TEXTURE_LATENCY))
-    return "texture_latency " + std::to_string(p.texture_latency) + " exceeds the SystemC core's maximum " +
-           std::to_string(int(Core::P_MAX_TEXTURE_LATENCY));
-  if (p.memory_latency > max_memory_latency())
-    return "memory_latency " + std::to_string(p.memory_latency) + " exceeds the SystemC core's maximum " +
-           std::to_string(max_memory_latency());
-  if (p.setup_interval != int(Core::P_SETUP_INTERVAL))
-    return "setup_interval " + std::to_string(p.setup_interval) + ": the SystemC core is built with setup_interval " +
-           std::to_string(int(Core::P_SETUP_INTERVAL));
+  if (const std::string mismatch = core_mismatch(built_parameters(), p); !mismatch.empty())
+    return "the SystemC backend is built for the core " + built_configuration() + " only: " + mismatch +
+           " (RASTERSIM_SYSTEMC_CONFIG in testbench/systemc/CMakeLists.txt names the configuration it is built for; "
+           "rastersim verilates others on demand)";
   return "";
 }
 
-std::string RastersimSystem::configuration_error(const Profile& p) {
-  if (std::string error = geometry_error(p); !error.empty()) return error;
-  if (p.setup_fifo_depth > int(Core::P_MAX_SETUP_FIFO_DEPTH))
-    return "setup_fifo_depth " + std::to_string(p.setup_fifo_depth) + " exceeds the SystemC core's maximum " +
-           std::to_string(int(Core::P_MAX_SETUP_FIFO_DEPTH));
-  return "";
-}
+std::string RastersimSystem::configuration_error(const Profile& p) { return geometry_error(p); }
 
 RastersimSystem::RastersimSystem(sc_core::sc_module_name name, int fifo_depth)
     : sc_core::sc_module(name),

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "Vrastersim_sc.h"
+#include "model/core_parameters.h"
 #include "model/profile.h"
 #include "model/triangle.h"
 #include "testbench/core_ports.h"
@@ -36,7 +37,8 @@ class RastersimSystem : public sc_core::sc_module {
   // z_guard_bits) and its largest memory latency.
   static Profile built_geometry();
   static int max_memory_latency();
-  static std::string built_configuration();  // "WxH subpixel_bits .. z_bits .. memory_latency 1..L"
+  static CoreParameters built_parameters();  // the core's, as verilated
+  static std::string built_configuration();  // "WIDTH=640 HEIGHT=480 ..."
   // Empty when run_frame can take `profile` (already valid: see validate()), else why not.
   static std::string configuration_error(const Profile& profile);
   // The part of configuration_error that a core verilated for other parameters would not have:

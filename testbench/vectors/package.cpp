@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "model/core_parameters.h"
 #include "model/input_error.h"
 #include "model/widths.h"
 #include "testbench/rtl_backend.h"
@@ -399,18 +400,8 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   m["widths"] = wj;
   Json rtl;
   rtl["top"] = options.external_memory ? "rastersim_core" : "rastersim_top";
-  rtl["parameters"] = {{"WIDTH", profile.width},
-                       {"HEIGHT", profile.height},
-                       {"SUBPIXEL_BITS", profile.subpixel_bits},
-                       {"Z_BITS", profile.z_bits},
-                       {"Z_GUARD_BITS", profile.z_guard_bits},
-                       {"MAX_MEMORY_LATENCY", profile.memory_latency},
-                       {"MAX_SETUP_FIFO_DEPTH", profile.setup_fifo_depth},
-                       {"SETUP_INTERVAL", profile.setup_interval},
-                       {"DEPTH_EXPONENT_BITS", profile.depth_exponent_bits},
-                       {"DEPTH_BIAS", profile.depth_biased() ? 1 : 0},
-                       {"TEXTURE", profile.texture_unit ? 1 : 0},
-                       {"MAX_TEXTURE_LATENCY", profile.texture_latency}};
+  rtl["parameters"] = Json::object();
+  for (const CoreParameter& c : core_parameters(profile)) rtl["parameters"][c.name] = c.value;
   rtl["included"] = facts.rtl_included;
   rtl["folder"] = facts.rtl_folder;
   if (facts.rtl_included) {

@@ -4,10 +4,15 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "model/core_parameters.h"
 #include "testbench/setup_record.h"
 
 namespace rastersim::vectors {
 namespace {
+
+// One of rastersim_core's parameters for the profile.
+int64_t core_parameter(const Profile& p, const std::string& name) { return parameter_value(core_parameters(p), name); }
+
 
 std::string bits_literal(int bits, int64_t value) {
   std::ostringstream s;
@@ -104,10 +109,10 @@ std::string params_text(const PackageFacts& k) {
     << "localparam integer SETUP_INTERVAL = " << p.setup_interval << ";  // 0: serial setup; I: pipelined\n"
     << "localparam integer MEMORY_STALL_PERCENT = " << p.memory_stall_percent << ";  // the memory model's back-pressure\n"
     << "localparam integer MEMORY_STALL_SEED = " << p.memory_stall_seed << ";\n"
-    << "localparam integer DEPTH_EXPONENT_BITS = " << p.depth_exponent_bits
+    << "localparam integer DEPTH_EXPONENT_BITS = " << core_parameter(p, "DEPTH_EXPONENT_BITS")
     << ";  // 0: the fixed-point depth word; Ne: the floating-point word\n"
-    << "localparam integer DEPTH_BIAS = " << (p.depth_biased() ? 1 : 0) << ";  // 1: the core's depth bias stage\n"
-    << "localparam integer TEXTURE = " << (p.texture_unit ? 1 : 0) << ";  // 1: the texture unit and texture.hex\n"
+    << "localparam integer DEPTH_BIAS = " << core_parameter(p, "DEPTH_BIAS") << ";  // 1: the core's depth bias stage\n"
+    << "localparam integer TEXTURE = " << core_parameter(p, "TEXTURE") << ";  // 1: the texture unit and texture.hex\n"
     << "localparam integer TEXTURE_LATENCY = " << p.texture_latency
     << ";  // cfg_texture_latency and MAX_TEXTURE_LATENCY\n"
     << "localparam integer TEXTURE_STALL_PERCENT = " << p.texture_stall_percent << ";  // texture_refuse's pattern\n"
@@ -352,13 +357,8 @@ std::string readme_text(const PackageFacts& k) {
     << (k.rtl_included ? "The RTL in rtl/ is the one the vectors were generated against (CRC-32s in manifest.json).\n"
                        : "The RTL is not copied: `" + k.rtl_folder + "` is the rastersim repository's rtl/ folder.\n")
     << "\n## Putting a port in place of " << top << "\n\n"
-    << "The testbench instantiates `" << top << "` with the parameters WIDTH = " << p.width << ", HEIGHT = " << p.height
-    << ", SUBPIXEL_BITS = " << p.subpixel_bits << ",\nZ_BITS = " << p.z_bits << ", Z_GUARD_BITS = " << p.z_guard_bits
-    << " (0: derived), MAX_MEMORY_LATENCY = " << p.memory_latency << ", MAX_SETUP_FIFO_DEPTH = " << p.setup_fifo_depth
-    << ", SETUP_INTERVAL = " << p.setup_interval << ",\nDEPTH_EXPONENT_BITS = " << p.depth_exponent_bits
-    << ", DEPTH_BIAS = " << (p.depth_biased() ? 1 : 0) << ", TEXTURE = " << (p.texture_unit ? 1 : 0)
-    << ", MAX_TEXTURE_LATENCY = " << p.texture_latency
-    << "\nand the ports of rastersim/rtl/" << top << ".sv. A port with the same module name, parameters and ports "
+    << "The testbench instantiates `" << top << "` with the parameters (manifest.json `rtl.parameters`)\n"
+    << core_parameters_text(core_parameters(p), ", ") << "\nand the ports of rastersim/rtl/" << top << ".sv. A port with the same module name, parameters and ports "
     << "runs unchanged:\n`RTL_DIR=path/to/port ./run_icarus.sh`. The setup record (setup.hex) is read from the "
     << "internal wires `" << (k.external_memory ? "dut" : "dut.core") << ".rec_*`\n(`SIM_FLAGS=-DRS_RECORD_PATH=dut.other` "
     << "names another instance); a port without them is run with\n`SIM_FLAGS=-DRS_NO_SETUP_RECORD`, which skips those "

@@ -52,9 +52,9 @@ TEST(RtlDepth, FloatingPointWordAndBiasMatchTheModelEveryCycle) {
 TEST(RtlDepth, ConfigurationsWithoutTheStageRefuseItsProfiles) {
   Profile p = depth_profile();
   p.setup_interval = 4;  // small: the fixed-point word, no bias
-  EXPECT_NE(configuration_error(p).find("depth_exponent_bits 3"), std::string::npos) << configuration_error(p);
+  EXPECT_NE(configuration_error(p).find("DEPTH_EXPONENT_BITS=3"), std::string::npos) << configuration_error(p);
   p.depth_exponent_bits = 0;
-  EXPECT_NE(configuration_error(p).find("depth bias"), std::string::npos) << configuration_error(p);
+  EXPECT_NE(configuration_error(p).find("DEPTH_BIAS=1"), std::string::npos) << configuration_error(p);
   p.depth_bias_slope = 0;
   EXPECT_EQ(configuration_error(p), "");
   p.depth_exponent_bits = 1;  // the fixed-point word bit for bit

@@ -99,7 +99,7 @@ TEST(RtlTexture, TextureMemoryBackPressureMatchesTheModel) {
 TEST(RtlTexture, ConfigurationsWithoutTheUnitRefuseTexturedProfiles) {
   Profile p = textured_profile();
   p.setup_interval = 2;  // built without the texture unit (small_i2)
-  EXPECT_NE(configuration_error(p).find("texture unit"), std::string::npos) << configuration_error(p);
+  EXPECT_NE(configuration_error(p).find("TEXTURE=1"), std::string::npos) << configuration_error(p);
 }
 
 }  // namespace
