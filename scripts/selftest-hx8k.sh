@@ -5,7 +5,7 @@
 # bitstream with the package's build_selftest_hx8k.sh (yosys, nextpnr-ice40 seed 1, icepack) and
 # fails unless it fits the device and its Fmax is at least MIN_MHZ (the documented figure).
 # Usage: scripts/selftest-hx8k.sh [RASTERSIM] [MIN_MHZ]   (defaults: build/rastersim, 58)
-# (Measured 63.7 MHz; docs/performance.md keeps the history. Netlists that differ only in names
+# (Measured 63.7 MHz, docs/performance.md. Netlists that differ only in names
 # and source paths move nextpnr's placement by 2 to 4 MHz, hence the margin below that figure.)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
