@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iostream>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -21,6 +22,7 @@
 #include "backend.h"
 #include "testbench/cosim_cases.h"
 #include "testbench/cosim_coverage.h"
+#include "testbench/functional_compare.h"
 #include "testbench/rtl_backend.h"
 #endif
 
@@ -168,6 +170,15 @@ CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
                   "frame k draws its triangles, settings and the RTL's power-on state from seed + k (default " +
                       std::to_string(o.seed) + ")")
       ->type_name("S");
+  cmd->add_option("--compare", o.compare,
+                  "what must agree: cycle (every event at the model's cycle, the default), stream (decisions and "
+                  "fragments in order, any timing), triangle (triangles in order, each one's fragments as a set) or "
+                  "frame (the final buffers); docs/verification.md")
+      ->type_name("MODE");
+  cmd->add_option("--tolerance", o.tolerance,
+                  "depth=N,color=M: functional modes accept a fragment's depth and colour (and the buffer words) "
+                  "within N and M LSBs of the model's; coverage stays exact")
+      ->type_name("LIST");
   cmd->add_option("--triangles", o.triangles, "triangles per random frame (default " + std::to_string(o.triangles) + ")")
       ->type_name("K");
   cmd->add_flag_callback("--no-directed", [&o] { o.directed = false; }, "skip the directed frames");
@@ -208,6 +219,12 @@ int run_cosim(const CosimOptions& o) {
     throw InputError("--count " + std::to_string(o.count) + " is outside 0.." + std::to_string(kMaxCount) +
                      " (random frames; split a longer run with --shard and several seeds)");
   if (o.triangles < 1 || o.triangles > 100000) throw InputError("--triangles must be in 1..100000");
+  const std::optional<verify::CompareMode> mode = verify::parse_compare_mode(o.compare);
+  if (!mode) throw InputError("--compare '" + o.compare + "' is not cycle, stream, triangle or frame");
+  verify::Tolerance tolerance;
+  if (const std::string error = verify::parse_tolerance(o.tolerance, tolerance); !error.empty()) throw InputError(error);
+  if (*mode == verify::CompareMode::Cycle && !o.tolerance.empty())
+    throw InputError("--tolerance applies to --compare stream, triangle or frame; cycle compares every bit");
   const Shard shard = parse_shard(o.shard);
 #ifndef RASTERSIM_HAVE_RTL
   (void)profile;
@@ -285,6 +302,7 @@ int run_cosim(const CosimOptions& o) {
     std::string message;
     rtl::CoverageCounts hits;
     int64_t cycles = 0;
+    verify::ErrorDistribution depth_error, color_error;  // functional modes
   };
   auto run_frame = [&](int64_t k, bool with_outputs) {
     rtl::CosimCase c = plan.frame(k);
@@ -304,6 +322,14 @@ int run_cosim(const CosimOptions& o) {
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     out.passed = report.passed;
     out.message = report.passed ? "" : report.message();
+    if (*mode != verify::CompareMode::Cycle) {
+      // A functional mode: what the mode does not compare (cycles, order) may differ.
+      const verify::FunctionalReport functional = verify::compare(c.profile, report.model, report.rtl, *mode, tolerance);
+      out.passed = functional.passed();
+      out.message = out.passed ? "" : functional.summary() + (report.message().empty() ? "" : "; " + report.message());
+      out.depth_error = functional.depth_error;
+      out.color_error = functional.color_error;
+    }
     // What a frame's stimulus reached, from the model's run of it.
     out.hits = rtl::frame_coverage(c.profile, c.triangles, report.model, max_latency);
     out.cycles = report.model.stats.cycles;
@@ -360,9 +386,12 @@ int run_cosim(const CosimOptions& o) {
       if (!outcomes[i].passed || (i + 1 == kept && !wave.wave_temp.empty())) outcomes[i] = run_frame(frames[i], true);
   }
   int64_t last_cycles = 0;
+  verify::ErrorDistribution depth_error, color_error;
   for (size_t i = 0; i < kept; ++i) {
     Outcome& f = outcomes[i];
     directed_run += f.k < directed;
+    for (const auto& [e, n] : f.depth_error.counts) depth_error.counts[e] += n;
+    for (const auto& [e, n] : f.color_error.counts) color_error.counts[e] += n;
     results.push_back(FrameResult{f.k, f.name, f.seconds, f.passed, f.message});
     last_cycles = f.cycles;
     for (size_t b = 0; b < bins.size(); ++b) total_hits[b] += f.hits[b], frames_hit[b] += f.hits[b] > 0;
@@ -407,6 +436,9 @@ int run_cosim(const CosimOptions& o) {
     for (const std::string& h : holes) info << " " << h;
     info << (gated ? "" : o.frame >= 0 ? " (one frame: not gated)" : shard.count > 1 ? " (a shard: not gated)" : " (--no-coverage-gate)") << "\n";
   }
+  if (*mode != verify::CompareMode::Cycle)
+    info << "compare " << o.compare << ": depth error (design - model) " << depth_error.summary()
+         << "; colour error per channel " << color_error.summary() << "\n";
   info << passed << " passed, " << failed << " failed\n";
   return failed == 0 && (holes.empty() || !gated) ? 0 : 1;
 #endif

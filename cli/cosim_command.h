@@ -32,6 +32,8 @@ struct CosimOptions {
   std::string export_dir;       // write the frames as replay files instead of running them
   std::string coverage_out;     // the functional coverage as JSON, when not empty
   bool coverage_gate = true;    // a whole run exits 1 when a reachable coverage bin stays at zero
+  std::string compare = "cycle";  // cycle, stream, triangle or frame (docs/verification.md)
+  std::string tolerance;          // depth=N,color=M in LSBs of the model's words (functional modes)
   ProfileOptions profile;
 };
 
