@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "fast/fast_walk.h"
 #include "model/pipeline.h"
 #include "model/triangle.h"
 
@@ -58,6 +59,7 @@ const std::vector<SnappedTriangle>& triangle_list() {
 }
 
 void BM_Frame(benchmark::State& state) {
+  use_fast_walk();  // the untraced path rastersim render takes
   const Traversal traversal = state.range(0) == 0 ? Traversal::BBox : Traversal::Span;
   const Shading shading = state.range(1) == 0 ? Shading::Flat : Shading::Gouraud;
   const std::vector<SnappedTriangle>& triangles = triangle_list();

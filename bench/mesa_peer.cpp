@@ -35,6 +35,7 @@
 #include "model/input_error.h"
 #include "model/pipeline.h"
 #include "profile_options.h"
+#include "fast/fast_walk.h"
 
 namespace rastersim {
 namespace {
@@ -216,6 +217,7 @@ int run(const PeerOptions& o) {
 
 int main(int argc, char** argv) {
   using namespace rastersim;
+  use_fast_walk();  // the model as rastersim render and bench run it
   CLI::App app{"Mesa (OSMesa) peer: the same triangles as rastersim bench/render through llvmpipe or softpipe, "
                "depth test on; fragments per second and coverage against the model",
                "rastersim_mesa_peer"};

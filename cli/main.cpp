@@ -7,6 +7,7 @@
 
 #include "bench_command.h"
 #include "cosim_command.h"
+#include "fast/fast_walk.h"
 #include "model/input_error.h"
 #include "outputs.h"
 #include "profile_command.h"
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("rastersim ") + RASTERSIM_VERSION + " (" + RASTERSIM_GIT_DESCRIBE + ")");
   app.require_subcommand(1);
   remove_temporaries_on_signals();  // an interrupted run leaves no hidden temporary
+  use_fast_walk();                  // untraced renders take the fast path (tests/test_fast_path.cpp)
   RenderOptions render_options;
   BenchOptions bench_options;
   CosimOptions cosim_options;

@@ -1,39 +1,38 @@
 #include "fast/fast_walk.h"
 
+#include <cstring>
+
+#include "fast/run_kernels.h"
 #include "fast/zbuffer_avx512.h"
+#include "fast/zbuffer_runs.h"
 
 namespace rastersim {
+namespace {
 
-// The walker's output as Pipeline::StepSink has it, and runs: without a trace, once no hazard can
-// stall them, a run of fragments is accepted one per cycle: the z-buffer's timing at once, then each
-// fragment's depth test and write in order.
+// Runs offered by the walk (Pipeline::walk_offering_runs): once no hazard can stall them, taken
+// one per cycle: the z-buffer's timing at once, then each fragment's depth test and write in order.
 template <bool Avx512>
-struct FastWalk::Sink {
-  Pipeline& p;
-  TriangleRecord& record;
-  int64_t fragment(int x, int y, const ZAdder& adders, int64_t cycle) {
-    return p.take_fragment<false>(x, y, adders, cycle, record);
-  }
-  bool run(int x, int y, int64_t n, ZAdder& adders, int64_t cycle) {
-    ZBuffer& zbuffer = p.zbuffer_;
-    if (!zbuffer.settled(cycle)) return false;
-    const uint32_t address = uint32_t(y) * uint32_t(p.profile_.width) + uint32_t(x);
-    zbuffer.take_run(address, cycle, n);
+struct Runs {
+  RunKernelVersion kernel;  // unused with Avx512: run_avx512_masked, inlined
+  bool run(ZBuffer& zbuffer, uint32_t address, int64_t n, ZAdder& adders, int64_t cycle, TriangleRecord& record) {
+    ZBufferRuns z(zbuffer);
+    if (!z.settled(cycle)) return false;
+    z.take_run(address, cycle, n);
     int64_t passes;
-    zbuffer.prefetch_rows_below(address, n, 2);
+    z.prefetch_rows_below(address, n, 2);
 #ifdef RASTERSIM_HAVE_AVX512_KERNEL
     if (Avx512) {  // every run, inlined
-      record.depth_pass += zbuffer.test_and_write_run(address, n, adders.run(), run_avx512_masked);
+      record.depth_pass += z.test_and_write_run(address, n, adders.run(), run_avx512_masked);
       adders.step_x(n);
       record.fragments += n;
       return true;
     }
 #endif
-    if (n < zbuffer.short_run_limit()) {
+    if (n < kernel.short_run_limit) {
       const ZAdder values = adders;  // a local copy the compiler keeps in machine registers
-      passes = zbuffer.test_and_write_short_run(address, n, values);
+      passes = z.test_and_write_short_run(address, n, values);
     } else {
-      passes = zbuffer.test_and_write_run(address, n, adders.run());
+      passes = z.test_and_write_run(address, n, adders.run(), kernel.kernel);
     }
     adders.step_x(n);
     record.fragments += n;
@@ -42,34 +41,49 @@ struct FastWalk::Sink {
   }
 };
 
-bool FastWalk::avx512_applies(const Pipeline& p) {
-#ifdef RASTERSIM_HAVE_AVX512_KERNEL
-  return p.zbuffer_.selected_run_kernel() == "avx512-masked" && avx512_masked_fits(p.adders_.run());
-#else
-  (void)p;
-  return false;
-#endif
-}
+// The walk with a run kernel called per run.
+class KernelWalk final : public WalkRunner {
+ public:
+  explicit KernelWalk(const RunKernelVersion& kernel) : kernel_(kernel) {}
+  int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record) const override {
+    Runs<false> runs{kernel_};
+    return p.walk_offering_runs(s, load_cycle, record, runs);
+  }
 
-int64_t FastWalk::walk(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record) {
-#ifdef RASTERSIM_HAVE_AVX512_KERNEL
-  if (p.avx512_walk_) return walk_avx512(p, s, load_cycle, record);
-#endif
-  Sink<false> sink{p, record};
-  return p.walker_.walk(s, p.adders_, load_cycle, p.walker_idle_load_, sink, p.walker_counters_);
-}
+ private:
+  RunKernelVersion kernel_;
+};
 
 #ifdef RASTERSIM_HAVE_AVX512_KERNEL
 // The walk compiled for AVX-512 with the run kernel inlined (flatten): no call per row.
-RASTERSIM_AVX512 __attribute__((flatten)) int64_t FastWalk::walk_avx512(Pipeline& p, const SetupResult& s,
-                                                                         int64_t load_cycle, TriangleRecord& record) {
-  Sink<true> sink{p, record};
-  return p.walker_.walk(s, p.adders_, load_cycle, p.walker_idle_load_, sink, p.walker_counters_);
+RASTERSIM_AVX512 __attribute__((flatten)) int64_t walk_avx512(Pipeline& p, const SetupResult& s, int64_t load_cycle,
+                                                               TriangleRecord& record) {
+  Runs<true> runs{};
+  return p.walk_offering_runs(s, load_cycle, record, runs);
 }
-#else
-int64_t FastWalk::walk_avx512(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record) {
-  return walk(p, s, load_cycle, record);
-}
+
+class Avx512Walk final : public WalkRunner {
+ public:
+  int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record) const override {
+    return walk_avx512(p, s, load_cycle, record);
+  }
+};
 #endif
+
+}  // namespace
+
+std::shared_ptr<const WalkRunner> fast_walk_runner(const Pipeline& p) {
+  // The runs go straight to the z-buffer and take the plain depth output.
+  if (p.profile().texture_unit || !p.z_adder().plain_depth_output()) return nullptr;
+  const RunKernelVersion& kernel = selected_run_kernel_version();
+#ifdef RASTERSIM_HAVE_AVX512_KERNEL
+  // The inline kernel when it is the selected one and holds the profile's colour registers.
+  if (std::strcmp(kernel.name, "avx512-masked") == 0 && avx512_masked_fits(p.z_adder().run()))
+    return std::make_shared<const Avx512Walk>();
+#endif
+  return std::make_shared<const KernelWalk>(kernel);
+}
+
+void use_fast_walk() { Pipeline::set_walk_runner_choice(fast_walk_runner); }
 
 }  // namespace rastersim

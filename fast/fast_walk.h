@@ -1,25 +1,23 @@
-// The untraced walk: without a fragment sink the pipeline takes whole runs of fragments at once
-// once no hazard can stall them (ZBuffer::settled, take_run), through the z-buffer's run kernels
+// The untraced walk's fast path: without a fragment sink the pipeline takes whole runs of fragments
+// at once once no hazard can stall them (fast/zbuffer_runs.h), through the run kernels
 // (fast/run_kernels.h), and with the AVX-512 kernel the whole walk is compiled for AVX-512 with the
-// kernel inlined. A fast path beside the model: the same fragments, buffers, counters and cycles as
-// the traced walk (Pipeline::walk_stepwise), which tests/test_fast_path.cpp checks.
+// kernel inlined. A WalkRunner (model/pipeline.h) beside the model: the same fragments, buffers,
+// counters and cycles as the specification's walk, which tests/test_fast_path.cpp checks.
+// A program selects it for every Pipeline it makes with use_fast_walk() (rastersim's main does).
 #pragma once
 
-#include <cstdint>
+#include <memory>
 
 #include "model/pipeline.h"
 
 namespace rastersim {
 
-struct FastWalk {
-  // True when the inline AVX-512 kernel is the selected one and holds the profile's colour registers.
-  static bool avx512_applies(const Pipeline& p);
-  // Walks a drawn triangle's record loaded in `load_cycle`; returns the walker's last cycle.
-  static int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record);
+// The fast walk for `p` with the run kernel selected now (selected_run_kernel_version), or nullptr
+// where it does not apply: with a texture unit, a floating-point depth word or a depth bias.
+std::shared_ptr<const WalkRunner> fast_walk_runner(const Pipeline& p);
 
-  template <bool Avx512>
-  struct Sink;
-  static int64_t walk_avx512(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record);
-};
+// Every Pipeline constructed from now on takes fast_walk_runner's walk where it applies. Call it
+// once, before pipelines are made (the choice is a process-wide setting, not synchronized).
+void use_fast_walk();
 
 }  // namespace rastersim

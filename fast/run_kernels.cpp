@@ -1,6 +1,6 @@
-// The z-buffer's run kernels (ZBuffer::test_and_write_run): the depth test and conditional write of
-// a run of fragments, compiled for several instruction sets. The same results as one fragment at a
-// time (tests/test_fast_path.cpp runs every version this CPU has).
+// The z-buffer's run kernels: the depth test and conditional write of a run of fragments, compiled
+// for several instruction sets. The same results as one fragment at a time (tests/test_fast_path.cpp
+// runs every version this CPU has).
 #include "fast/run_kernels.h"
 
 #include <stdexcept>
@@ -18,18 +18,16 @@ inline __attribute__((always_inline)) int64_t run_loop(uint32_t* depth, uint32_t
                                                         const ZAdder::Run& p) {
   const bool pass_less = mask & ZBuffer::kLess, pass_equal = mask & ZBuffer::kEqual, pass_greater = mask & ZBuffer::kGreater;
   // Local copies: stores through depth and color could otherwise alias the formats' int fields.
-  const PlaneFormat depth_format = p.depth_format, color_format = p.color_format;
+  const UnsignedPlaneOutput depth_output(p.depth_format), color_output(p.color_format);
   uint64_t z_value = p.value[0], r_value = p.value[1], g_value = p.value[2], b_value = p.value[3];
   const uint64_t z_step = p.step_x[0], r_step = p.step_x[1], g_step = p.step_x[2], b_step = p.step_x[3];
   const uint32_t flat = (uint32_t(p.flat.r) << 16) | (uint32_t(p.flat.g) << 8) | p.flat.b;
   int64_t passes = 0;
   for (int64_t i = 0; i < n; ++i) {
-    const uint32_t z = depth_format.output_unsigned(z_value);
+    const uint32_t z = depth_output(z_value);
     const uint32_t stored = depth[i];
     const bool pass = ((z < stored) & pass_less) | ((z == stored) & pass_equal) | ((z > stored) & pass_greater);
-    const uint32_t c = Gouraud ? (color_format.output_unsigned(r_value) << 16) |
-                                     (color_format.output_unsigned(g_value) << 8) |
-                                     color_format.output_unsigned(b_value)
+    const uint32_t c = Gouraud ? (color_output(r_value) << 16) | (color_output(g_value) << 8) | color_output(b_value)
                                : flat;
     if (DepthWrite) depth[i] = pass ? z : stored;
     color[i] = pass ? c : color[i];

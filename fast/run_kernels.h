@@ -1,6 +1,7 @@
 // The z-buffer's run kernels: one loop over a run of fragments (depth test, conditional write),
 // compiled for several instruction sets; the best this CPU has is used. A fast path beside the
-// model (model/zbuffer.h test_and_write_run): the same results, checked by tests/test_fast_path.cpp.
+// model (ZBuffer::test_and_write one fragment at a time, model/zbuffer.h): the same results,
+// checked by tests/test_fast_path.cpp.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +12,27 @@
 
 namespace rastersim {
 
+// PlaneFormat::output() without a 64-bit arithmetic shift (SIMD units up to AVX2 have none): a
+// negative register gives 0; otherwise the logical shift equals the arithmetic one. The same result
+// for every value; the compiled run kernels use it so that the compiler can vectorize.
+class UnsignedPlaneOutput {
+ public:
+  explicit UnsignedPlaneOutput(const PlaneFormat& f)
+      : wrap_shift_(64 - f.reg_bits()), round_shift_(64 - f.reg_bits() + f.guard_bits()),
+        half_(uint64_t(1) << (f.guard_bits() - 1)), out_max_(uint64_t(f.out_max())) {}
+  uint32_t operator()(uint64_t value) const {
+    const uint64_t shifted = (value + half_) << wrap_shift_;
+    const uint64_t rounded = shifted >> round_shift_;
+    return int64_t(shifted) < 0 ? 0u : uint32_t(rounded > out_max_ ? out_max_ : rounded);
+  }
+
+ private:
+  int wrap_shift_, round_shift_;
+  uint64_t half_, out_max_;
+};
+
+// The depth test and conditional write of n fragments at consecutive words from `depth` and
+// `color`, fragment i's values i x steps on from `planes`; returns how many passed.
 using RunKernel = int64_t (*)(uint32_t* depth, uint32_t* color, int64_t n, unsigned pass_mask, bool depth_write,
                               const ZAdder::Run& planes);
 
@@ -22,7 +44,8 @@ struct RunKernelVersion {
 
 std::vector<std::string> run_kernel_versions();  // those this CPU can run, best first
 void select_run_kernel(const std::string& name);  // throws std::invalid_argument if not available
-// The version a ZBuffer constructed now uses: the best available, or the one selected.
+// The version a pipeline constructed now walks with (fast/fast_walk.h): the best available, or the
+// one selected.
 const RunKernelVersion& selected_run_kernel_version();
 
 }  // namespace rastersim

@@ -1,4 +1,4 @@
-// The z-buffer's run kernel for AVX-512 (see ZBuffer::test_and_write_run), in a header so that the
+// The z-buffer's run kernel for AVX-512 (a RunKernel, fast/run_kernels.h), in a header so that the
 // untraced walk can be compiled for AVX-512 with it inlined (fast/fast_walk.cpp).
 #pragma once
 
@@ -21,8 +21,8 @@ namespace rastersim {
 
 inline bool avx512_masked_fits(const ZAdder::Run& p) { return !p.gouraud || p.color_format.reg_bits() <= 32; }
 
-// A plane format's operands for PlaneFormat::output_unsigned in vector registers; `lane_bits` 64
-// (depth) or 32 (colour, registers held modulo 2^32: the shifts are 32 less).
+// A plane format's operands for UnsignedPlaneOutput (fast/run_kernels.h) in vector registers;
+// `lane_bits` 64 (depth) or 32 (colour, registers held modulo 2^32: the shifts are 32 less).
 struct Avx512Format {
   __m512i half, max;
   __m128i wrap, round;
@@ -34,20 +34,20 @@ RASTERSIM_AVX512 inline Avx512Format avx512_format(const PlaneFormat& f, int lan
           lane_bits == 64 ? _mm512_set1_epi64(f.out_max()) : _mm512_set1_epi32(int32_t(f.out_max())),
           _mm_cvtsi32_si128(lane_bits - reg_bits), _mm_cvtsi32_si128(lane_bits - reg_bits + f.guard_bits())};
 }
-// output_unsigned of eight 64-bit registers, narrowed to 32 bits.
+// UnsignedPlaneOutput of eight 64-bit registers, narrowed to 32 bits.
 RASTERSIM_AVX512 inline __m256i avx512_depth_out(__m512i v, const Avx512Format& f) {
   const __m512i shifted = _mm512_sll_epi64(_mm512_add_epi64(v, f.half), f.wrap);
   const __m512i rounded = _mm512_min_epu64(_mm512_srl_epi64(shifted, f.round), f.max);
   return _mm512_cvtepi64_epi32(_mm512_maskz_mov_epi64(_mm512_cmpge_epi64_mask(shifted, _mm512_setzero_si512()), rounded));
 }
-// output_unsigned of sixteen registers held modulo 2^32.
+// UnsignedPlaneOutput of sixteen registers held modulo 2^32.
 RASTERSIM_AVX512 inline __m512i avx512_color_out(__m512i v, const Avx512Format& f) {
   const __m512i shifted = _mm512_sll_epi32(_mm512_add_epi32(v, f.half), f.wrap);
   const __m512i rounded = _mm512_min_epu32(_mm512_srl_epi32(shifted, f.round), f.max);
   return _mm512_maskz_mov_epi32(_mm512_cmpge_epi32_mask(shifted, _mm512_setzero_si512()), rounded);
 }
 
-// ZBuffer's run kernel written with AVX-512 intrinsics, for runs of any length: blocks of 16
+// The run kernel written with AVX-512 intrinsics, for runs of any length: blocks of 16
 // pixels, the last one masked (masked loads and stores neither read nor write past the run).
 // Depth in 64-bit lanes (its register is wider than 32 bits); colour in 32-bit lanes, exact when
 // the colour register fits in 32 bits: 2^reg_bits divides 2^32, so sums modulo 2^32 hold the

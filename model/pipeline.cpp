@@ -1,10 +1,16 @@
 #include "pipeline.h"
 
-#include "fast/fast_walk.h"
-
 #include <algorithm>
 
 namespace rastersim {
+namespace {
+
+WalkRunnerChoice registered_walk_runner_choice = nullptr;
+
+}  // namespace
+
+void Pipeline::set_walk_runner_choice(WalkRunnerChoice choice) { registered_walk_runner_choice = choice; }
+WalkRunnerChoice Pipeline::walk_runner_choice() { return registered_walk_runner_choice; }
 
 Pipeline::Pipeline(const Profile& profile)
     : profile_(profile),
@@ -15,8 +21,7 @@ Pipeline::Pipeline(const Profile& profile)
       zbuffer_(profile),
       texture_unit_(profile),
       credit_release_(size_t(profile.setup_fifo_depth), -1) {
-  avx512_walk_ = FastWalk::avx512_applies(*this);
-  fast_walk_applies_ = !profile.texture_unit && adders_.plain_depth_output();
+  if (registered_walk_runner_choice) walk_runner_ = registered_walk_runner_choice(*this);
 }
 
 void Pipeline::reset() {
@@ -89,11 +94,9 @@ void Pipeline::submit(const SnappedTriangle& tri) {
     walker_idle_load_ = record.walker_load > walker_free_;
     credit_release_[size_t(drawn_++ % int64_t(credit_release_.size()))] = record.walker_load;
     zbuffer_.begin_triangle(record.walker_load);  // the walker presents fragments after loading
-    // The fast path's runs go straight to the z-buffer with the plain depth output: with a texture
-    // unit, a floating-point depth word or a depth bias, one at a time.
-    record.walker_end = sink_                   ? walk_stepwise<true>(s, record.walker_load, record)
-                        : !fast_walk_applies_ ? walk_stepwise<false>(s, record.walker_load, record)
-                                              : FastWalk::walk(*this, s, record.walker_load, record);
+    record.walker_end = sink_          ? walk_stepwise<true>(s, record.walker_load, record)
+                        : walk_runner_ ? walk_runner_->walk(*this, s, record.walker_load, record)
+                                       : walk_stepwise<false>(s, record.walker_load, record);
     walker_free_ = record.walker_end;
     if (record.fragments > 0) record.last_write = zbuffer_.last_busy_cycle();
     last_busy_ = std::max({last_busy_, record.setup_done, record.walker_end, zbuffer_.last_busy_cycle(),

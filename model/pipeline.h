@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "profile.h"
@@ -68,8 +69,22 @@ struct FrameStats {
   UnitCounters texture;        // the texture unit's (profile texture_unit; zero without it)
 };
 
+class Pipeline;
+
+// A walk of a drawn triangle without a fragment sink, faster than the specification's one fragment
+// at a time, with the same results (tests/test_fast_path.cpp); fast/fast_walk.h has one. It walks
+// through Pipeline::walk_offering_runs and returns the walker's last cycle.
+class WalkRunner {
+ public:
+  virtual ~WalkRunner() = default;
+  virtual int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record) const = 0;
+};
+// Picks a new pipeline's walk runner (nullptr: the specification's walk).
+using WalkRunnerChoice = std::shared_ptr<const WalkRunner> (*)(const Pipeline& p);
+
 class Pipeline {
  public:
+  // Takes the walk runner the process's choice picks, if one is set (set_walk_runner_choice).
   explicit Pipeline(const Profile& profile);
 
   void reset();
@@ -78,6 +93,12 @@ class Pipeline {
   void set_triangle_log(std::vector<TriangleRecord>* log) { log_ = log; }
   // What the texture unit samples (with the profile's texture_unit): kept until replaced.
   void set_texture(TextureBinding binding) { texture_ = std::move(binding); }
+  // The walk without a fragment sink: the specification's (nullptr) or a runner's. The choice set
+  // when a pipeline is constructed picks its runner (fast/fast_walk.h use_fast_walk sets one).
+  void set_walk_runner(std::shared_ptr<const WalkRunner> runner) { walk_runner_ = std::move(runner); }
+  const WalkRunner* walk_runner() const { return walk_runner_.get(); }
+  static void set_walk_runner_choice(WalkRunnerChoice choice);
+  static WalkRunnerChoice walk_runner_choice();
 
   // Runs one triangle through every unit. The triangle must have been checked (check_screen_triangle).
   void submit(const SnappedTriangle& tri);
@@ -87,18 +108,39 @@ class Pipeline {
   const Widths& widths() const { return setup_.widths(); }
   const SetupTiming& setup_timing() const { return timing_; }
   const ZBuffer& zbuffer() const { return zbuffer_; }
+  const ZAdder& z_adder() const { return adders_; }
   const SetupResult& last_setup() const { return last_setup_; }
 
+  // For a walk runner: the walk of a drawn triangle loaded in `load_cycle`, without a fragment sink,
+  // in which each run of n covered candidates of a row is first offered to
+  // runs.run(zbuffer, address, n, adders, cycle, record); it takes them at once, in cycles `cycle`
+  // on, stepping the adders past them (true), or leaves them to be taken one at a time (false).
+  // The fragments go from the walker to the z-buffer (no texture unit).
+  template <class Runs>
+  int64_t walk_offering_runs(const SetupResult& s, int64_t load_cycle, TriangleRecord& record, Runs& runs) {
+    RunSink<Runs> sink{*this, record, runs};
+    return walker_.walk(s, adders_, load_cycle, walker_idle_load_, sink, walker_counters_);
+  }
+
  private:
-  // Without a fragment sink the walk takes the fast path (fast/fast_walk.h): the same results.
-  friend struct FastWalk;
   template <bool Trace>
   struct StepSink;
-  // One fragment at a time (no runs): with a fragment sink (Trace), or with a texture unit.
+  // One fragment at a time: the specification's walk, with Trace each reported to the sink.
   template <bool Trace>
   int64_t walk_stepwise(const SetupResult& s, int64_t load_cycle, TriangleRecord& record);
-  bool avx512_walk_ = false;  // the fast path's choice, made once (FastWalk::avx512_applies)
-  bool fast_walk_applies_ = true;  // no texture unit and the plain depth output (ZAdder)
+  template <class Runs>
+  struct RunSink {
+    Pipeline& p;
+    TriangleRecord& record;
+    Runs& runs;
+    int64_t fragment(int x, int y, const ZAdder& adders, int64_t cycle) {
+      return p.take_fragment<false>(x, y, adders, cycle, record);
+    }
+    bool run(int x, int y, int64_t n, ZAdder& adders, int64_t cycle) {
+      const uint32_t address = uint32_t(y) * uint32_t(p.profile_.width) + uint32_t(x);
+      return runs.run(p.zbuffer_, address, n, adders, cycle, record);
+    }
+  };
 
   // The walker's fragment output, wired to the z-buffer's input (through the texture unit when there
   // is one): the cycle the walker's candidate is taken, the fragment's depth test and write; with
@@ -139,6 +181,7 @@ class Pipeline {
   TextureUnit texture_unit_;  // used with the profile's texture_unit
   TextureBinding texture_;
   FragmentSink* sink_ = nullptr;
+  std::shared_ptr<const WalkRunner> walk_runner_;
   std::vector<TriangleRecord>* log_ = nullptr;
   SetupResult last_setup_;
   WalkerCounters walker_counters_;

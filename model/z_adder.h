@@ -35,14 +35,6 @@ class PlaneFormat {
     const int64_t rounded = int64_t((value + half_) << wrap_shift_) >> round_shift_;
     return rounded < 0 ? 0 : (rounded > out_max_ ? out_max_ : rounded);
   }
-  // output() without a 64-bit arithmetic shift (SIMD units up to AVX2 have none): a negative
-  // register gives 0; otherwise the logical shift equals the arithmetic one. The same result for
-  // every value; ZBuffer::test_and_write_run() uses it so that the compiler can vectorize.
-  uint32_t output_unsigned(uint64_t value) const {
-    const uint64_t shifted = (value + half_) << wrap_shift_;
-    const uint64_t rounded = shifted >> round_shift_;
-    return int64_t(shifted) < 0 ? 0u : uint32_t(rounded > uint64_t(out_max_) ? uint64_t(out_max_) : rounded);
-  }
 
  private:
   int wrap_shift_, round_shift_;
@@ -138,7 +130,7 @@ class ZAdder {
         depth_output_{depth_format_, profile} {}
 
   // The depth output is the depth register's rounded value (no bias, the fixed-point word): what the
-  // fast path's run kernels compute (ZAdder::Run).
+  // fast paths (fast/) compute from ZAdder::Run.
   bool plain_depth_output() const { return depth_output_.plain(); }
 
   void load(const SetupResult& s) {
@@ -196,7 +188,7 @@ class ZAdder {
   PlaneRegister depth_register() const { return {value_[0], depth_format_}; }
   PlaneRegister color_register(int c) const { return {value_[1 + c], color_format_}; }
   // The registers at the current pixel and their x steps, for a run of pixels taken at once
-  // (ZBuffer::test_and_write_run).
+  // (fast/zbuffer_runs.h).
   struct Run {
     uint64_t value[4], step_x[4];  // depth, r, g, b
     PlaneFormat depth_format, color_format;

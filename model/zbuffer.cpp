@@ -5,14 +5,7 @@
 
 namespace rastersim {
 
-ZBuffer::ZBuffer(const Profile& p)
-    : width_(p.width), height_(p.height), pass_mask_(pass_mask(p.depth_func)), depth_write_(p.depth_write),
-      latency_(p.memory_latency), run_kernel_(selected_run_kernel_version().kernel),
-      run_kernel_name_(selected_run_kernel_version().name),
-      short_run_limit_(selected_run_kernel_version().short_run_limit), memory_(p),
-      inflight_address_(size_t(p.memory_latency)), inflight_cycle_(size_t(p.memory_latency)) {
-  clear();
-}
+ZBuffer::ZBuffer(const Profile& p) : ZBufferState(p, pass_mask(p.depth_func)) { clear(); }
 
 void ZBuffer::clear() {
   memory_.clear();

@@ -1,14 +1,16 @@
 // Without a fragment sink the pipeline takes whole runs of fragments at once when no hazard can
-// stall them (fast/fast_walk.cpp, ZBuffer::take_run). The traced path handles every fragment one
-// at a time and is the one co-simulation checks against the RTL; this test requires the untraced
-// path to give the same frame: every counter, every triangle record, every buffer word, also under
-// a memory stall pattern (which may refuse any read, so no run is taken at once: ZBuffer::settled).
+// stall them (fast/fast_walk.cpp, fast/zbuffer_runs.h). The traced path handles every fragment one
+// at a time and is the one co-simulation checks against the RTL; this test requires the fast walk
+// to give the same frame: every counter, every triangle record, every buffer word, also under a
+// memory stall pattern (which may refuse any read, so no run is taken at once: ZBufferRuns::settled).
 #include <gtest/gtest.h>
 
 #include <random>
 #include <string>
 #include <tuple>
 
+#include "fast/fast_walk.h"
+#include "fast/run_kernels.h"
 #include "test_util.h"
 
 namespace rastersim::test {
@@ -20,10 +22,19 @@ struct Frame {
   std::vector<uint32_t> depth, color;
 };
 
-Frame render(const Profile& profile, const std::vector<SnappedTriangle>& triangles, bool traced) {
+// Traced: the specification's walk with a fragment sink; Plain: the same without one; Fast: the
+// fast walk (fast_walk_runner), which must apply.
+enum class Walk { Traced, Plain, Fast };
+
+Frame render(const Profile& profile, const std::vector<SnappedTriangle>& triangles, Walk walk) {
   Pipeline pipeline(profile);
   FragmentLog log;
   Frame frame;
+  const bool traced = walk == Walk::Traced;
+  pipeline.set_walk_runner(walk == Walk::Fast ? fast_walk_runner(pipeline) : nullptr);
+  if (walk == Walk::Fast) {
+    EXPECT_NE(pipeline.walk_runner(), nullptr) << "the fast walk must apply";
+  }
   if (traced) pipeline.set_fragment_sink(&log);
   pipeline.set_triangle_log(&frame.records);
   for (const SnappedTriangle& t : triangles) pipeline.submit(t);
@@ -106,23 +117,47 @@ TEST_P(FastPath, UntracedFrameEqualsTracedFrame) {
         default: triangles.push_back(gen.guard_band()); break;
       }
     }
-    const Frame traced = render(profile, triangles, true);
+    const Frame traced = render(profile, triangles, Walk::Traced);
     ASSERT_GT(traced.stats.fragments, 0);
+    {
+      SCOPED_TRACE(describe(profile) + " seed " + std::to_string(seed) + ", the specification's walk untraced");
+      expect_same_frame(traced, render(profile, triangles, Walk::Plain));
+    }
     for (const std::string& kernel : run_kernel_versions()) {
       select_run_kernel(kernel);
       SCOPED_TRACE(describe(profile) + " seed " + std::to_string(seed) + ", run kernel " + kernel);
-      expect_same_frame(traced, render(profile, triangles, false));
+      expect_same_frame(traced, render(profile, triangles, Walk::Fast));
     }
     select_run_kernel(run_kernel_versions().front());
     if (stall_percent > 0) {  // the pattern must bite: the same frame without it is shorter
       Profile unstalled = profile;
       unstalled.memory_stall_percent = 0;
-      const Frame plain = render(unstalled, triangles, false);
-      EXPECT_GT(traced.stats.cycles, plain.stats.cycles);
-      EXPECT_GT(traced.stats.zbuffer.stall, plain.stats.zbuffer.stall);
-      EXPECT_TRUE(plain.depth == traced.depth) << "a stall pattern changed the depth buffer";
+      const Frame unstalled_frame = render(unstalled, triangles, Walk::Fast);
+      EXPECT_GT(traced.stats.cycles, unstalled_frame.stats.cycles);
+      EXPECT_GT(traced.stats.zbuffer.stall, unstalled_frame.stats.zbuffer.stall);
+      EXPECT_TRUE(unstalled_frame.depth == traced.depth) << "a stall pattern changed the depth buffer";
     }
   }
+}
+
+// After use_fast_walk() a pipeline takes the fast walk unless given a fragment sink, except where it
+// does not apply: with a texture unit or another depth output.
+TEST(FastPath, PipelinesTakeTheFastWalkWhereItApplies) {
+  const Profile profile = make_profile(96, 64, 4, Traversal::Span, 24);
+  const WalkRunnerChoice before = Pipeline::walk_runner_choice();
+  EXPECT_EQ(Pipeline(profile).walk_runner() != nullptr, before != nullptr) << "the choice applies to new pipelines";
+  use_fast_walk();
+  ASSERT_EQ(Pipeline::walk_runner_choice(), &fast_walk_runner);
+  EXPECT_NE(Pipeline(profile).walk_runner(), nullptr);
+  Profile textured = profile, biased = profile, float_word = profile;
+  textured.texture_unit = true;
+  biased.depth_bias_constant = 3;
+  float_word.depth_exponent_bits = 4;
+  for (const Profile& p : {textured, biased, float_word}) {
+    EXPECT_EQ(fast_walk_runner(Pipeline(p)), nullptr) << describe(p);
+    EXPECT_EQ(Pipeline(p).walk_runner(), nullptr) << describe(p);
+  }
+  Pipeline::set_walk_runner_choice(before);
 }
 
 // The run kernels compute a plane register's output without a 64-bit arithmetic shift: equal to
@@ -133,12 +168,13 @@ TEST(FastPath, UnsignedOutputEqualsOutput) {
        {std::tuple{58, 24, (int64_t(1) << 32) - 1}, std::tuple{41, 16, (int64_t(1) << 24) - 1},
         std::tuple{26, 9, (int64_t(1) << 16) - 1}, std::tuple{30, 21, int64_t(255)}}) {
     const PlaneFormat format(reg_bits, guard_bits, out_max);
+    const UnsignedPlaneOutput output_unsigned(format);
     for (int i = 0; i < 200000; ++i) {
       // Random words, and values near 0 and near the output's top, where rounding and clamping act.
       const uint64_t word = rng();
       const uint64_t near = uint64_t((int64_t(word % 4096) - 2048) + ((i & 1) ? out_max << guard_bits : 0));
       for (const uint64_t value : {word, near})
-        ASSERT_EQ(int64_t(format.output_unsigned(value)), format.output(value)) << "value " << value;
+        ASSERT_EQ(int64_t(output_unsigned(value)), format.output(value)) << "value " << value;
     }
   }
 }
