@@ -60,6 +60,10 @@ Backend select_backend(const std::string& name) {
 }
 
 #ifdef RASTERSIM_HAVE_RTL
+std::string design_library(const modules::DutDesign& design) {
+  return modules::dut_library(design, print_progress);
+}
+
 void ensure_rtl_configuration(const Profile& profile) {
   // No build runs a z-buffer memory stall pattern (rastersim_top's memory has none): configuration_error
   // says so without a module being built first.

@@ -10,6 +10,9 @@
 
 #include "model/pipeline.h"
 #include "outputs.h"
+#ifdef RASTERSIM_HAVE_RTL
+#include "testbench/modules.h"
+#endif
 
 namespace rastersim {
 
@@ -30,6 +33,9 @@ void check_backend_profile(Backend backend, const Profile& profile);
 // The RTL backend's part of check_backend_profile: loads (building it first when the cache lacks
 // it) a module for a valid profile no built configuration runs.
 void ensure_rtl_configuration(const Profile& profile);
+// The library of a user's design behind the verification interface, verilated on demand with
+// progress on stderr (testbench/dut_backend.h).
+std::string design_library(const modules::DutDesign& design);
 #endif
 
 struct BackendOptions {

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -9,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -22,6 +24,7 @@
 #include "backend.h"
 #include "testbench/cosim_cases.h"
 #include "testbench/cosim_coverage.h"
+#include "testbench/dut_backend.h"
 #include "testbench/functional_compare.h"
 #include "testbench/rtl_backend.h"
 #endif
@@ -171,10 +174,20 @@ CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
                       std::to_string(o.seed) + ")")
       ->type_name("S");
   cmd->add_option("--compare", o.compare,
-                  "what must agree: cycle (every event at the model's cycle, the default), stream (decisions and "
-                  "fragments in order, any timing), triangle (triangles in order, each one's fragments as a set) or "
-                  "frame (the final buffers); docs/verification.md")
+                  "what must agree: cycle (every event at the model's cycle; the default for rastersim's RTL), stream "
+                  "(decisions and fragments in order, any timing; the default with --dut), triangle (triangles in "
+                  "order, each one's fragments as a set) or frame (the final buffers); docs/verification.md")
       ->type_name("MODE");
+  cmd->add_option("--dut", o.dut,
+                  "check a design of your own behind the verification interface instead of rastersim's RTL: a .f "
+                  "file list or a folder of .sv/.v files, verilated on demand into the module cache "
+                  "(docs/verification.md)")
+      ->type_name("LIST|DIR");
+  cmd->add_option("--top", o.top, "with --dut: the design's top module")->type_name("NAME");
+  cmd->add_option("-G", o.generics,
+                  "with --dut: a parameter of the top, NAME=value (repeatable; WIDTH, HEIGHT, SUBPIXEL_BITS and "
+                  "Z_BITS come from the profile)")
+      ->type_name("NAME=value");
   cmd->add_option("--tolerance", o.tolerance,
                   "depth=N,color=M: functional modes accept a fragment's depth and colour (and the buffer words) "
                   "within N and M LSBs of the model's; coverage stays exact")
@@ -211,6 +224,65 @@ CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
   return cmd;
 }
 
+#ifdef RASTERSIM_HAVE_RTL
+namespace {
+
+// In a functional mode the coverage JSON also holds the differences' histograms: "compare" with the
+// mode and, per attribute, each difference (design - model) and how often it occurred.
+nlohmann::ordered_json with_distributions(nlohmann::ordered_json j, verify::CompareMode mode,
+                                          const verify::ErrorDistribution& depth,
+                                          const verify::ErrorDistribution& color) {
+  if (mode == verify::CompareMode::Cycle) return j;
+  nlohmann::ordered_json compare;
+  compare["mode"] = verify::to_string(mode);
+  for (const auto& [name, d] : {std::pair<const char*, const verify::ErrorDistribution*>{"depth_error", &depth},
+                                {"color_error", &color}}) {
+    nlohmann::ordered_json histogram = nlohmann::ordered_json::object();
+    for (const auto& [error, count] : d->counts) histogram[std::to_string(error)] = count;
+    compare[name] = histogram;
+  }
+  j["compare"] = compare;
+  return j;
+}
+
+// One frame of a user's design: the model's run, the design's, their comparison by mode. On a
+// mismatch with a replay prefix, the frame again with a waveform at <prefix>.fst.
+struct DesignFrame {
+  rtl::RtlResult model;
+  verify::FunctionalReport report;
+  bool passed = false;
+  std::string message;
+};
+DesignFrame design_frame(const dut::Design& design, const rtl::CosimCase& c, const std::string& prefix,
+                         verify::CompareMode mode, const verify::Tolerance& tolerance, const std::string& replay) {
+  DesignFrame d;
+  d.model = rtl::run_model(c.profile, c.triangles, c.texture);
+  try {
+    const rtl::RtlResult result = design.run(c.profile, c.triangles);
+    d.report = verify::compare(c.profile, d.model, result, mode, tolerance);
+    d.passed = d.report.passed();
+    d.message = d.passed ? "" : d.report.summary();
+  } catch (const std::runtime_error& e) {
+    d.message = e.what();
+  }
+  if (d.passed) return d;
+  d.message += "; replay: " + replay;
+  if (!prefix.empty()) {
+    dut::DutRunOptions wave;
+    wave.wave_path = prefix + ".fst";
+    try {
+      design.run(c.profile, c.triangles, wave);
+    } catch (const std::runtime_error&) {
+      // The stall is reported above; the waveform holds the frame up to it.
+    }
+    d.message += "; waveform: " + wave.wave_path;
+  }
+  return d;
+}
+
+}  // namespace
+#endif
+
 int run_cosim(const CosimOptions& o) {
   const Profile profile = resolve_profile(o.profile);
   // Frame indices must not overflow (a huge count once ran nothing and passed).
@@ -219,8 +291,15 @@ int run_cosim(const CosimOptions& o) {
     throw InputError("--count " + std::to_string(o.count) + " is outside 0.." + std::to_string(kMaxCount) +
                      " (random frames; split a longer run with --shard and several seeds)");
   if (o.triangles < 1 || o.triangles > 100000) throw InputError("--triangles must be in 1..100000");
-  const std::optional<verify::CompareMode> mode = verify::parse_compare_mode(o.compare);
+  const bool with_dut = !o.dut.empty();
+  const std::string compare = !o.compare.empty() ? o.compare : with_dut ? "stream" : "cycle";
+  const std::optional<verify::CompareMode> mode = verify::parse_compare_mode(compare);
   if (!mode) throw InputError("--compare '" + o.compare + "' is not cycle, stream, triangle or frame");
+  if (with_dut && *mode == verify::CompareMode::Cycle)
+    throw InputError("--compare cycle checks rastersim's own micro-architecture cycle for cycle: run cosim without "
+                     "--dut for that; a design of your own is checked with stream, triangle or frame");
+  if (with_dut == o.top.empty()) throw InputError(with_dut ? "--dut needs --top NAME" : "--top and -G go with --dut");
+  if (!with_dut && !o.generics.empty()) throw InputError("--top and -G go with --dut");
   verify::Tolerance tolerance;
   if (const std::string error = verify::parse_tolerance(o.tolerance, tolerance); !error.empty()) throw InputError(error);
   if (*mode == verify::CompareMode::Cycle && !o.tolerance.empty())
@@ -243,9 +322,17 @@ int run_cosim(const CosimOptions& o) {
     throw InputError("--export writes .tri replays, which carry no texture: with the texture unit, rerun a frame "
                      "with --frame");
   if (o.jobs < 1 || o.jobs > 256) throw InputError("--jobs " + std::to_string(o.jobs) + " is outside 1..256");
-  ensure_rtl_configuration(profile);  // verilated on demand when the build lacks it
-  const std::string problem = rtl::configuration_error(profile);
-  if (!problem.empty()) throw InputError(problem);
+  std::unique_ptr<dut::Design> design;
+  if (with_dut) {
+    if (const std::string problem = dut::interface_error(profile); !problem.empty()) throw InputError(problem);
+    modules::DutDesign files = dut::read_design(o.dut, o.top);
+    files.parameters = dut::design_parameters(profile, o.generics);
+    design = std::make_unique<dut::Design>(design_library(files));
+  } else {
+    ensure_rtl_configuration(profile);  // verilated on demand when the build lacks it
+    const std::string problem = rtl::configuration_error(profile);
+    if (!problem.empty()) throw InputError(problem);
+  }
   OutputFiles outputs;
   const std::string junit_temp = o.junit_out.empty() ? "" : outputs.add(o.junit_out, "--junit");
   const WaveFiles wave = add_waveform(outputs, o.wave);
@@ -257,7 +344,7 @@ int run_cosim(const CosimOptions& o) {
   if (o.fixed_settings)
     pinned.insert({"texture_latency", "texture_stall_percent", "texture_stall_seed", "depth_bias_constant",
                    "depth_bias_slope"});
-  const int max_latency = rtl::built_max_memory_latency(profile);
+  const int max_latency = with_dut ? kMaxMemoryLatency : rtl::built_max_memory_latency(profile);
   const rtl::CosimPlan plan(profile, pinned, max_latency, o.seed, o.triangles, o.directed);
   const std::vector<std::string>& varied = plan.varied();
   const std::vector<rtl::CoverageBin> bins = rtl::coverage_bins(profile, pinned, max_latency);
@@ -304,6 +391,29 @@ int run_cosim(const CosimOptions& o) {
     int64_t cycles = 0;
     verify::ErrorDistribution depth_error, color_error;  // functional modes
   };
+  // A design's frame is replayed by this command with --frame K.
+  std::string replay_command;
+  if (design) {
+    const auto quoted = [](const std::string& word) {
+      return word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-+=.,/:") ==
+                     std::string::npos
+                 ? word
+                 : "'" + word + "'";  // read_design and design_parameters refuse quotes in names and values
+    };
+    replay_command = "rastersim cosim --dut " + quoted(std::filesystem::absolute(o.dut).string()) + " --top " + o.top;
+    for (const std::string& g : o.generics) replay_command += " -G " + quoted(g);
+    replay_command += " --compare " + compare;
+    if (!o.tolerance.empty()) replay_command += " --tolerance " + quoted(o.tolerance);
+    for (const ProfileKey& row : profile_table())
+      if (given_profile_keys(o.profile).count(row.key)) {
+        std::string flag = row.key;
+        std::replace(flag.begin(), flag.end(), '_', '-');
+        replay_command += " --" + flag + " " + quoted(key_value_text(row, row.get(profile)));
+      }
+    replay_command += " --seed " + std::to_string(o.seed) + " --triangles " + std::to_string(o.triangles) +
+                      " --count " + std::to_string(o.count) + (o.directed ? "" : " --no-directed") +
+                      (o.fixed_settings ? " --fixed-settings" : "");
+  }
   auto run_frame = [&](int64_t k, bool with_outputs) {
     rtl::CosimCase c = plan.frame(k);
     if (!varied.empty() || k < directed) c.name += " (" + settings_summary(c.profile) + ")";
@@ -314,8 +424,23 @@ int run_cosim(const CosimOptions& o) {
     const std::string prefix =
         with_outputs ? (std::filesystem::path(o.replay_dir) / ("rastersim-replay-" + std::to_string(k))).string() : "";
     const auto start = std::chrono::steady_clock::now();
-    const rtl::CosimReport report = rtl::cosim(c.profile, c.triangles, options, prefix);
     Outcome out;
+    if (design) {
+      DesignFrame d = design_frame(*design, c, with_outputs ? prefix : "", *mode, tolerance,
+                                   replay_command + " --frame " + std::to_string(k));
+      out.k = k;
+      out.name = c.name;
+      out.triangles = c.triangles.size();
+      out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      out.passed = d.passed;
+      out.message = d.message;
+      out.depth_error = d.report.depth_error;
+      out.color_error = d.report.color_error;
+      out.hits = rtl::frame_coverage(c.profile, c.triangles, d.model, max_latency);
+      out.cycles = d.model.stats.cycles;
+      return out;
+    }
+    const rtl::CosimReport report = rtl::cosim(c.profile, c.triangles, options, prefix);
     out.k = k;
     out.name = c.name;
     out.triangles = c.triangles.size();
@@ -325,8 +450,10 @@ int run_cosim(const CosimOptions& o) {
     if (*mode != verify::CompareMode::Cycle) {
       // A functional mode: what the mode does not compare (cycles, order) may differ.
       const verify::FunctionalReport functional = verify::compare(c.profile, report.model, report.rtl, *mode, tolerance);
-      out.passed = functional.passed();
-      out.message = out.passed ? "" : functional.summary() + (report.message().empty() ? "" : "; " + report.message());
+      out.passed = functional.passed() && report.rtl.finished;
+      out.message = !report.rtl.finished ? report.rtl.note
+                    : out.passed         ? ""
+                                         : functional.summary() + (report.message().empty() || report.passed ? "" : "; " + report.message());
       out.depth_error = functional.depth_error;
       out.color_error = functional.color_error;
     }
@@ -413,7 +540,10 @@ int run_cosim(const CosimOptions& o) {
   if (!junit_temp.empty()) write_text_file(junit_temp, o.junit_out, junit_xml(results, profile, o));
   if (!coverage_temp.empty())
     write_text_file(coverage_temp, o.coverage_out,
-                    coverage_json(bins, total_hits, frames_hit, frame_hits, holes, gated).dump(2) + "\n");
+                    with_distributions(coverage_json(bins, total_hits, frames_hit, frame_hits, holes, gated), *mode,
+                                       depth_error, color_error)
+                            .dump(2) +
+                        "\n");
   // The last frame's waveform is kept whether it passed or not: it is what a divergence is debugged with.
   if (!wave.wave_temp.empty() && passed + failed > 0) check_waveform_written(wave, o.wave, last_cycles);
   if (!junit_temp.empty() || !coverage_temp.empty() || (!wave.wave_temp.empty() && passed + failed > 0)) outputs.commit();

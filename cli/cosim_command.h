@@ -32,7 +32,10 @@ struct CosimOptions {
   std::string export_dir;       // write the frames as replay files instead of running them
   std::string coverage_out;     // the functional coverage as JSON, when not empty
   bool coverage_gate = true;    // a whole run exits 1 when a reachable coverage bin stays at zero
-  std::string compare = "cycle";  // cycle, stream, triangle or frame (docs/verification.md)
+  std::string compare;            // cycle, stream, triangle or frame; empty: cycle, stream with --dut
+  std::string dut;                // a user's design behind the verification interface: file list or folder
+  std::string top;                // its top module
+  std::vector<std::string> generics;  // -G NAME=value for it
   std::string tolerance;          // depth=N,color=M in LSBs of the model's words (functional modes)
   ProfileOptions profile;
 };

@@ -228,7 +228,9 @@ int64_t ErrorDistribution::max_abs() const {
 std::string ErrorDistribution::summary() const {
   std::vector<std::pair<int64_t, int64_t>> by_count(counts.begin(), counts.end());
   std::stable_sort(by_count.begin(), by_count.end(), [](auto a, auto b) { return a.second > b.second; });
-  std::string out = std::to_string(samples()) + " samples, |error| <= " + std::to_string(max_abs());
+  std::string out = std::to_string(samples()) + " samples";
+  if (counts.empty()) return out;
+  out += ", error " + std::to_string(counts.begin()->first) + ".." + std::to_string(counts.rbegin()->first);
   for (size_t i = 0; i < by_count.size() && i < 5; ++i)
     out += (i ? ", " : ": ") + std::to_string(by_count[i].first) + " x" + std::to_string(by_count[i].second);
   return out;

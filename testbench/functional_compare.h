@@ -38,7 +38,7 @@ struct ErrorDistribution {
   void add(int64_t error) { ++counts[error]; }
   int64_t samples() const;
   int64_t max_abs() const;
-  // "n samples, |error| <= m, 0: a, 1: b, -1: c" (values by frequency, the 5 most common).
+  // "n samples, error lo..hi: 0 xa, -1 xb" (the range, then the 5 most common values and their counts).
   std::string summary() const;
 };
 

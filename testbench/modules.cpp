@@ -150,25 +150,18 @@ std::string cache_root() {
 
 CoreParameters module_parameters(const Profile& profile) { return core_parameters(profile, CoreBounds::Largest); }
 
-std::string module_library(Kind kind, const Profile& profile, const Progress& progress) {
-  const CoreParameters parameters = module_parameters(profile);
-  const std::string config = "module:" + core_parameters_text(parameters, ",");
-  Digest key;
-  key.add(kind == Kind::Rtl ? "rtl" : "systemc");
-  key.add(config);
-  key.add(RASTERSIM_MODULE_TOOLCHAIN);
-  key.add(abi_stamp());
-  key.add(sources_digest());
-  // The entry's name: the kind, the parameters' values in core_parameters() order, the key.
-  std::string name = kind == Kind::Rtl ? "rtl" : "systemc";
-  for (const CoreParameter& c : parameters) name += "-" + std::to_string(c.value);
-  name += "-" + key.hex();
+namespace {
+
+// One cache entry: `name` (its key at the end), built from the CMake project `project` with
+// `defines` into `library`, unless a finished entry is there; `what` names it in messages and
+// `config` in the line that starts the build.
+std::string cached_build(const std::string& name, const std::string& what, const std::string& config,
+                         const fs::path& project,
+                         const std::vector<std::string>& defines, const std::string& library,
+                         const Progress& progress) {
   const fs::path modules = fs::path(cache_root()) / "modules";
   const fs::path entry = modules / name;
-  const std::string library = kind == Kind::Rtl ? "librastersim_module.so" : "librastersim_systemc.so";
   if (fs::exists(entry / library)) return (entry / library).string();
-
-  const std::string what = describe(kind, parameters);
   std::error_code ec;
   fs::create_directories(modules, ec);
   if (ec) throw std::runtime_error("cannot create the module cache " + modules.string() + ": " + ec.message());
@@ -194,12 +187,11 @@ std::string module_library(Kind kind, const Profile& profile, const Progress& pr
     }
   };
   const std::string jobs = std::to_string(std::max(1u, std::thread::hardware_concurrency()));
-  const std::vector<std::vector<std::string>> steps = {
-      {RASTERSIM_CMAKE_COMMAND, "-S", std::string(kSourceDir) + "/testbench/ondemand", "-B", build.string(),
-       "-DCMAKE_BUILD_TYPE=Release", "-DCMAKE_CXX_COMPILER=" RASTERSIM_MODULE_CXX,
-       std::string("-DRASTERSIM_MODULE_KIND=") + (kind == Kind::Rtl ? "rtl" : "systemc"),
-       "-DRASTERSIM_MODULE_CONFIG=" + config},
-      {RASTERSIM_CMAKE_COMMAND, "--build", build.string(), "-j", jobs}};
+  std::vector<std::string> configure = {RASTERSIM_CMAKE_COMMAND, "-S", project.string(), "-B", build.string(),
+                                        "-DCMAKE_BUILD_TYPE=Release", "-DCMAKE_CXX_COMPILER=" RASTERSIM_MODULE_CXX};
+  configure.insert(configure.end(), defines.begin(), defines.end());
+  const std::vector<std::vector<std::string>> steps = {configure,
+                                                       {RASTERSIM_CMAKE_COMMAND, "--build", build.string(), "-j", jobs}};
   for (const std::vector<std::string>& step : steps) {
     if (&step == &steps.front()) progress("verilating (" + config + ")");
     log << "$";
@@ -224,4 +216,54 @@ std::string module_library(Kind kind, const Profile& profile, const Progress& pr
   return (entry / library).string();
 }
 
+}  // namespace
+
+std::string module_library(Kind kind, const Profile& profile, const Progress& progress) {
+  const CoreParameters parameters = module_parameters(profile);
+  const std::string config = "module:" + core_parameters_text(parameters, ",");
+  Digest key;
+  key.add(kind == Kind::Rtl ? "rtl" : "systemc");
+  key.add(config);
+  key.add(RASTERSIM_MODULE_TOOLCHAIN);
+  key.add(abi_stamp());
+  key.add(sources_digest());
+  // The entry's name: the kind, the parameters' values in core_parameters() order, the key.
+  std::string name = kind == Kind::Rtl ? "rtl" : "systemc";
+  for (const CoreParameter& c : parameters) name += "-" + std::to_string(c.value);
+  name += "-" + key.hex();
+  return cached_build(name, describe(kind, parameters), config, fs::path(kSourceDir) / "testbench/ondemand",
+                      {std::string("-DRASTERSIM_MODULE_KIND=") + (kind == Kind::Rtl ? "rtl" : "systemc"),
+                       "-DRASTERSIM_MODULE_CONFIG=" + config},
+                      kind == Kind::Rtl ? "librastersim_module.so" : "librastersim_systemc.so", progress);
+}
+
+std::string dut_library(const DutDesign& design, const Progress& progress) {
+  Digest key;
+  key.add("dut");
+  key.add(design.top);
+  for (const std::string& p : design.parameters) key.add(p);
+  for (const std::string& d : design.include_dirs) key.add(d);
+  for (const std::string& f : design.files) {
+    key.add(f);
+    std::ifstream in(f, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read the design's file " + f);
+    key.add(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
+  }
+  key.add(RASTERSIM_MODULE_TOOLCHAIN);
+  key.add(abi_stamp());
+  key.add(sources_digest());
+  const auto joined = [](const std::vector<std::string>& items) {
+    std::string out;
+    for (const std::string& i : items) out += (out.empty() ? "" : ";") + i;
+    return out;
+  };
+  std::string params;
+  for (const std::string& p : design.parameters) params += " " + p;
+  return cached_build("dut-" + design.top + "-" + key.hex(), "the design " + design.top + params,
+                      "dut:" + design.top + params, fs::path(kSourceDir) / "testbench/dut",
+                      {"-DRASTERSIM_DUT_TOP=" + design.top, "-DRASTERSIM_DUT_FILES=" + joined(design.files),
+                       "-DRASTERSIM_DUT_INCLUDES=" + joined(design.include_dirs),
+                       "-DRASTERSIM_DUT_PARAMETERS=" + joined(design.parameters)},
+                      "librastersim_dut.so", progress);
+}
 }  // namespace rastersim::modules

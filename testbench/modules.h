@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "model/core_parameters.h"
 #include "model/pipeline.h"
@@ -28,6 +29,18 @@ using Progress = std::function<void(const std::string& line)>;
 // that one module runs every memory and texture latency and record FIFO depth.
 CoreParameters module_parameters(const Profile& profile);
 std::string module_library(Kind kind, const Profile& profile, const Progress& progress);
+
+// A user's design behind the verification interface (docs/verification.md), verilated on demand
+// with testbench/dut/ around it: its files in order, include folders, top module and -G options
+// (NAME=value).
+struct DutDesign {
+  std::vector<std::string> files, include_dirs;
+  std::string top;
+  std::vector<std::string> parameters;
+};
+// Its shared library (librastersim_dut.so) from the cache, built first when missing; the cache key
+// holds the files' contents, so an edited design is built again.
+std::string dut_library(const DutDesign& design, const Progress& progress);
 
 // The records a module passes across the library boundary, as their sizes: a module compiled
 // against other headers than the program is refused instead of misread.

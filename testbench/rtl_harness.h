@@ -14,6 +14,7 @@
 
 #include "testbench/rtl_backend.h"
 #include "testbench/core_ports.h"
+#include "testbench/frame_config.h"
 #include "testbench/waveform.h"
 #include "model/zbuffer_memory.h"
 
@@ -65,13 +66,8 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
     ++time;
   };
 
-  top->cfg_depth_func = uint8_t(p.depth_func);
-  top->cfg_depth_write = p.depth_write;
-  top->cfg_depth_clear = p.depth_clear_value();
-  top->cfg_cull = uint8_t(p.cull);
-  top->cfg_front_face = p.front_face == FrontFace::CW;
+  drive_frame_config(*top, p);
   top->cfg_traversal = p.traversal == Traversal::Span;
-  top->cfg_shading = p.shading == Shading::Gouraud;
   top->cfg_memory_latency = uint8_t(p.memory_latency);
   top->cfg_setup_fifo_depth = uint8_t(p.setup_fifo_depth);
   // The texture: its size and sampling, and its texels through the load port during reset (none

@@ -1,0 +1,29 @@
+// What a design verilated on demand behind the verification interface (testbench/dut/) exports,
+// and what the program asks of it: one frame, its records back (docs/verification.md).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "model/pipeline.h"
+#include "model/profile.h"
+#include "model/triangle.h"
+#include "testbench/rtl_backend.h"
+
+namespace rastersim::dut {
+
+struct DutRunOptions {
+  // Cycles with no handshake, decision or retired fragment before the design is called stalled.
+  int64_t max_idle_cycles = 200000;
+  std::string wave_path;  // an FST of the whole frame when not empty
+};
+
+// The library's entry point (extern "C", RASTERSIM_DUT_RUN_SYMBOL): runs one frame into `out`;
+// returns false with `error` set when the design broke the interface or stalled.
+using RunFunction = bool (*)(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
+                             const DutRunOptions& options, rtl::RtlResult& out, std::string& error);
+
+}  // namespace rastersim::dut
+
+#define RASTERSIM_DUT_RUN_SYMBOL "rastersim_dut_run"

@@ -1,0 +1,42 @@
+// A user's design behind the verification interface (docs/verification.md): its file list read,
+// verilated on demand into the module cache (modules.h dut_library) and run frame by frame.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "model/profile.h"
+#include "testbench/dut/dut_run.h"
+#include "testbench/modules.h"
+
+namespace rastersim::dut {
+
+// The design's files from a `.f` file list or a folder (every .sv and .v file in it, sorted, the
+// folder an include folder). A file list holds one item a line: a source file, `+incdir+DIR`,
+// `-F LIST` or `-f LIST` (a nested list); `//` and `#` start comments; paths are relative to the
+// list that names them. Throws InputError naming the list, the line and the problem (a missing
+// file, an unknown option).
+modules::DutDesign read_design(const std::string& list_or_folder, const std::string& top);
+
+// The -G options the harness gives every design: the interface's parameters from the profile
+// (WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS), then the user's NAME=value options in order (a user's
+// option for one of them replaces it). Throws InputError for an option that is not NAME=value.
+std::vector<std::string> design_parameters(const Profile& profile, const std::vector<std::string>& options);
+
+// Empty when a design behind the verification interface can be checked at `profile`; otherwise
+// why not (the interface carries the fixed-point depth word, no texture and no depth bias).
+std::string interface_error(const Profile& profile);
+
+class Design {
+ public:
+  // Loads a library built by dut_library; throws std::runtime_error when it is not one of this program.
+  explicit Design(const std::string& library_path);
+  // One frame; throws std::runtime_error with the harness's sentence when the design stalls.
+  rtl::RtlResult run(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
+                     const DutRunOptions& options = {}) const;
+
+ private:
+  RunFunction run_ = nullptr;
+};
+
+}  // namespace rastersim::dut

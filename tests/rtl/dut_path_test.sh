@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# cosim --dut (docs/verification.md): rastersim's own core behind the verification interface
+# (testbench/dut/rastersim_dut.sv) passes stream, triangle and frame; the same core with its depth
+# test `<` written `<=` fails frame mode at the default --count, and the printed replay command
+# fails alone; a design that never takes a triangle is a clear stall error naming cmd_ready; bad
+# file lists are bad input (exit 2) naming the file and line.
+# Usage: dut_path_test.sh RASTERSIM SOURCE_DIR
+set -euo pipefail
+exe="$1"
+src="$(cd "$2" && pwd)"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+export RASTERSIM_CACHE_DIR="$work/cache"
+fail() { echo "dut_path_test: $*" >&2; exit 1; }
+flags=(--width 64 --height 48)
+
+for mode in stream triangle frame; do
+  "$exe" cosim --dut "$src/testbench/dut/rastersim_dut.f" --top rastersim_dut -G TRAVERSAL_SPAN=0 -G MEMORY_LATENCY=5 \
+    "${flags[@]}" --count 20 --compare "$mode" --coverage "own-$mode.json" > "own-$mode.txt" 2> "own-$mode.err" || fail "rastersim's core failed --compare $mode: $(grep -E '^frame|passed' "own-$mode.txt" | head -3)"
+  grep -q "^51 passed, 0 failed$" "own-$mode.txt" || fail "--compare $mode: $(tail -1 "own-$mode.txt")"
+  grep -q "^compare $mode: depth error (design - model) [0-9]* samples, error 0\.\.0: 0 x" "own-$mode.txt" || fail "no error distribution for $mode"
+  # The same histogram in the JSON: every difference 0.
+  python3 - "own-$mode.json" "$mode" <<'PY' || fail "no histogram in the coverage JSON for $mode"
+import json, sys
+compare = json.load(open(sys.argv[1]))["compare"]
+assert compare["mode"] == sys.argv[2] and list(compare["depth_error"]) == ["0"] and compare["depth_error"]["0"] > 0, compare
+assert list(compare["color_error"]) == ["0"], compare
+PY
+done
+
+# The depth test's < written <=.
+mkdir -p bug/rtl bug/testbench/dut
+cp "$src"/rtl/*.sv "$src"/rtl/*.vh "$src"/rtl/rastersim.f bug/rtl/
+cp "$src"/testbench/dut/rastersim_dut.sv "$src"/testbench/dut/rastersim_dut.f bug/testbench/dut/
+sed -i 's/RS_DEPTH_LESS: pass = done_z < mem_rd_depth;/RS_DEPTH_LESS: pass = done_z <= mem_rd_depth;/' bug/rtl/zbuffer.sv
+cmp -s bug/rtl/zbuffer.sv "$src/rtl/zbuffer.sv" && fail "the depth test's line was not found"
+status=0
+"$exe" cosim --dut bug/testbench/dut/rastersim_dut.f --top rastersim_dut "${flags[@]}" --compare frame > bug.txt 2> bug.err || status=$?
+[ "$status" -eq 1 ] || fail "the <= depth test: exit $status, not 1"
+line="$(grep -m1 '^frame ' bug.txt)" || fail "no failing frame reported"
+case "$line" in *"colour word"* | *"depth word"*) ;; *) fail "the report names no buffer word: $line" ;; esac
+replay="${line##*; replay: }"
+replay="${replay%%; waveform: *}"
+case "$replay" in "rastersim cosim --dut "*" --frame "*) ;; *) fail "no replay command: $line" ;; esac
+wave="${line##*; waveform: }"
+[ -s "$wave" ] || fail "no waveform at $wave"
+status=0
+eval "\"$exe\" ${replay#rastersim }" > replay.txt 2>&1 || status=$?
+[ "$status" -eq 1 ] || fail "the replay command exited $status, not 1: $replay"
+grep -q "^0 passed, 1 failed$" replay.txt || fail "the replay did not fail its one frame: $(tail -1 replay.txt)"
+
+# The installed template as it stands: a design that never takes a triangle.
+mkdir stuck
+cp "$src/testbench/dut/rastersim_dut_template.sv" stuck/
+status=0
+"$exe" cosim --dut stuck --top rastersim_dut_template "${flags[@]}" --count 0 --frame 0 > stuck.txt 2>&1 || status=$?
+[ "$status" -eq 1 ] || fail "a stalled design: exit $status, not 1"
+grep -q "the design stalled: cmd_ready stayed low for [0-9]* cycles with triangle 0 offered" stuck.txt ||
+  fail "the stall is not named: $(grep -m1 '^frame' stuck.txt)"
+
+# Bad input.
+printf 'rastersim_dut.sv\n+define+X\n' > bad.f
+cp "$src/testbench/dut/rastersim_dut.sv" .
+status=0
+"$exe" cosim --dut bad.f --top rastersim_dut "${flags[@]}" > bad.txt 2>&1 || status=$?
+[ "$status" -eq 2 ] || fail "an unknown file-list option: exit $status, not 2"
+grep -q "bad.f:2: '+define+X' is not a source file" bad.txt || fail "bad.f:2 not named: $(cat bad.txt)"
+status=0
+"$exe" cosim --dut missing.f --top x "${flags[@]}" > missing.txt 2>&1 || status=$?
+[ "$status" -eq 2 ] || fail "a missing file list: exit $status, not 2"
+status=0
+"$exe" cosim --dut bad.f "${flags[@]}" > notop.txt 2>&1 || status=$?
+[ "$status" -eq 2 ] && grep -q "needs --top" notop.txt || fail "--dut without --top: exit $status"
+status=0
+"$exe" cosim --dut stuck --top rastersim_dut_template --compare cycle "${flags[@]}" > cycle.txt 2>&1 || status=$?
+[ "$status" -eq 2 ] || fail "--dut with --compare cycle: exit $status, not 2"
+echo "dut_path_test: rastersim's core passes stream, triangle and frame; the <= depth test, the stall and bad input are caught"
