@@ -291,6 +291,12 @@ int run_cosim(const CosimOptions& o) {
     throw InputError("--count " + std::to_string(o.count) + " is outside 0.." + std::to_string(kMaxCount) +
                      " (random frames; split a longer run with --shard and several seeds)");
   if (o.triangles < 1 || o.triangles > 100000) throw InputError("--triangles must be in 1..100000");
+  const Shard shard = parse_shard(o.shard);
+#ifndef RASTERSIM_HAVE_RTL
+  (void)profile;
+  (void)shard;
+  throw InputError("cosim needs the RTL backend, which is not built in this binary (install Verilator and rebuild)");
+#else
   const bool with_dut = !o.dut.empty();
   const std::string compare = !o.compare.empty() ? o.compare : with_dut ? "stream" : "cycle";
   const std::optional<verify::CompareMode> mode = verify::parse_compare_mode(compare);
@@ -304,12 +310,6 @@ int run_cosim(const CosimOptions& o) {
   if (const std::string error = verify::parse_tolerance(o.tolerance, tolerance); !error.empty()) throw InputError(error);
   if (*mode == verify::CompareMode::Cycle && !o.tolerance.empty())
     throw InputError("--tolerance applies to --compare stream, triangle or frame; cycle compares every bit");
-  const Shard shard = parse_shard(o.shard);
-#ifndef RASTERSIM_HAVE_RTL
-  (void)profile;
-  (void)shard;
-  throw InputError("cosim needs the RTL backend, which is not built in this binary (install Verilator and rebuild)");
-#else
   if (!std::filesystem::is_directory(o.replay_dir))
     throw InputError("--replay-dir: folder '" + o.replay_dir + "' does not exist");
   if (!o.export_dir.empty() && !std::filesystem::is_directory(o.export_dir))
