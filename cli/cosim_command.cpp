@@ -227,6 +227,12 @@ CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
 #ifdef RASTERSIM_HAVE_RTL
 namespace {
 
+std::string replace_all(std::string text, const std::string& from, const std::string& to) {
+  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
 // In a functional mode the coverage JSON also holds the differences' histograms: "compare" with the
 // mode and, per attribute, each difference (design - model) and how often it occurred.
 nlohmann::ordered_json with_distributions(nlohmann::ordered_json j, verify::CompareMode mode,
@@ -322,6 +328,8 @@ int run_cosim(const CosimOptions& o) {
     throw InputError("--export writes .tri replays, which carry no texture: with the texture unit, rerun a frame "
                      "with --frame");
   if (o.jobs < 1 || o.jobs > 256) throw InputError("--jobs " + std::to_string(o.jobs) + " is outside 1..256");
+  if (with_dut && !o.wave.path.empty())
+    throw InputError("--wave writes rastersim's RTL; with --dut a failing frame's waveform goes to --replay-dir");
   std::unique_ptr<dut::Design> design;
   if (with_dut) {
     if (const std::string problem = dut::interface_error(profile); !problem.empty()) throw InputError(problem);
@@ -398,7 +406,7 @@ int run_cosim(const CosimOptions& o) {
       return word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-+=.,/:") ==
                      std::string::npos
                  ? word
-                 : "'" + word + "'";  // read_design and design_parameters refuse quotes in names and values
+                 : "'" + replace_all(word, "'", "'\\''") + "'";
     };
     replay_command = "rastersim cosim --dut " + quoted(std::filesystem::absolute(o.dut).string()) + " --top " + o.top;
     for (const std::string& g : o.generics) replay_command += " -G " + quoted(g);

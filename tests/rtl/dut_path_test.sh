@@ -75,4 +75,8 @@ status=0
 status=0
 "$exe" cosim --dut stuck --top rastersim_dut_template --compare cycle "${flags[@]}" > cycle.txt 2>&1 || status=$?
 [ "$status" -eq 2 ] || fail "--dut with --compare cycle: exit $status, not 2"
+status=0
+"$exe" cosim --dut stuck --top rastersim_dut_template --wave w.fst "${flags[@]}" > wave.txt 2>&1 || status=$?
+[ "$status" -eq 2 ] && grep -q -- "--replay-dir" wave.txt || fail "--dut with --wave: exit $status: $(cat wave.txt)"
+[ ! -e w.fst ] || fail "--wave with --dut wrote w.fst"
 echo "dut_path_test: rastersim's core passes stream, triangle and frame; the <= depth test, the stall and bad input are caught"
