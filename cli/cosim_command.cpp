@@ -602,9 +602,21 @@ int run_junit_merge(const JunitMergeOptions& o) {
       throw InputError(file, 0, "a <testsuite> whose " + name + " is '" + text + "', not a number");
     return value;
   };
+  // A property of a testsuite block: <property name="NAME" value="..."/>.
+  auto property = [](const std::string& block, const std::string& name, const std::string& file) {
+    const std::string key = "<property name=\"" + name + "\" value=\"";
+    const size_t at = block.find(key);
+    if (at == std::string::npos) throw InputError(file, 0, "a <testsuite> without the property " + name);
+    return block.substr(at + key.size(), block.find('"', at + key.size()) - at - key.size());
+  };
   std::string suites;
   double tests = 0, failures = 0, time = 0;
   std::set<std::string> frames;
+  // The run every shard must belong to (its profile, seed, count, triangles, shard count) and the
+  // shards seen.
+  std::string run, run_file;
+  std::set<int64_t> shards;
+  int64_t shard_count = 0;
   for (const std::string& file : o.inputs) {
     const std::string xml = read_text_file(file, "junit-merge", size_t(1) << 30);
     if (xml.find("<testsuite name=\"rastersim.cosim.") == std::string::npos)
@@ -626,8 +638,29 @@ int run_junit_merge(const JunitMergeOptions& o) {
         if (!frames.insert(name).second)
           throw InputError(file, 0, "'" + name + "' is in another input too: shards of one run do not overlap");
       }
+      std::string this_run;
+      for (const char* name : {"profile", "seed", "count", "triangles"})
+        this_run += std::string(name) + " " + property(block, name, file) + ", ";
+      const std::string shard_text = property(block, "shard", file);
+      const size_t slash = shard_text.find('/');
+      const int64_t k = std::atoll(shard_text.substr(0, slash).c_str());
+      const int64_t n = slash == std::string::npos ? 0 : std::atoll(shard_text.substr(slash + 1).c_str());
+      if (k < 1 || k > n) throw InputError(file, 0, "a <testsuite> whose shard is '" + shard_text + "', not K/N");
+      this_run += std::to_string(n) + " shards";
+      if (run.empty()) run = this_run, run_file = file, shard_count = n;
+      else if (this_run != run)
+        throw InputError(file, 0, "a shard of another run (" + this_run + ") than " + run_file + "'s (" + run + ")");
+      if (!shards.insert(k).second)
+        throw InputError(file, 0, "shard " + shard_text + " is in another input too");
       suites += "  " + block + "\n";
     }
+  }
+  if (int64_t(shards.size()) != shard_count) {
+    std::string missing;
+    for (int64_t k = 1; k <= shard_count; ++k)
+      if (!shards.count(k)) missing += (missing.empty() ? "" : ", ") + std::to_string(k) + "/" + std::to_string(shard_count);
+    throw InputError("junit-merge: the inputs are not a whole run: shard" + std::string(shard_count - shards.size() > 1 ? "s " : " ") +
+                     missing + " missing");
   }
   OutputFiles outputs;
   for (const std::string& file : o.inputs) outputs.protect(file);  // -o naming an input is refused

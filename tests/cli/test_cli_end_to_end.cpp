@@ -779,8 +779,21 @@ TEST(CliRtl, JunitMergeOfShardsIsTheWholeRun) {
   r = run_rastersim(dir, {"junit-merge", "-o", "g.xml", "garbled.xml"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_TRUE(contains(r.err, "garbled.xml")) << r.err;
+  // An incomplete set of shards, and shards of two runs, are not a whole run.
+  r = run_rastersim(dir, {"junit-merge", "-o", "part.xml", "s1.xml"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(contains(r.err, "not a whole run: shard 2/2 missing")) << r.err;
+  args = run;
+  args[args.size() - 1] = "4";  // --seed 4: another run
+  args.insert(args.end(), {"--shard", "2/2", "--junit", "other_seed.xml"});
+  ASSERT_EQ(run_rastersim(dir, args).exit_code, 0);
+  r = run_rastersim(dir, {"junit-merge", "-o", "mixed.xml", "s1.xml", "other_seed.xml"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(contains(r.err, "other_seed.xml: a shard of another run")) << r.err;
   EXPECT_FALSE(fs::exists(dir.path("twice.xml")));
   EXPECT_FALSE(fs::exists(dir.path("x.xml")));
+  EXPECT_FALSE(fs::exists(dir.path("part.xml")));
+  EXPECT_FALSE(fs::exists(dir.path("mixed.xml")));
 }
 
 TEST(CliRtl, CosimRejectsABadShardAndWritesNothing) {
