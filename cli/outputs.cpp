@@ -24,6 +24,19 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Where a symlink chain ends, the last link's target also when it does not exist yet (a dangling
+// link: weakly_canonical would stop at the link itself, and the output would replace it). A chain
+// longer than the system allows is left to the write, which reports it.
+fs::path link_target(fs::path path) {
+  std::error_code ec;
+  for (int hops = 0; hops < 40 && fs::is_symlink(fs::symlink_status(path, ec)); ++hops) {
+    const fs::path next = fs::read_symlink(path, ec);
+    if (ec) break;
+    path = next.is_absolute() ? next : path.parent_path() / next;
+  }
+  return fs::weakly_canonical(path, ec);
+}
+
 std::string lower_extension(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
@@ -132,9 +145,9 @@ std::string OutputFiles::add(const std::string& final_path, const std::string& w
     entries_.push_back({final_path, "/dev/stdout", "/dev/stdout", true});
     return entries_.back().temp_path;
   }
-  // A symlink (or a chain of them) is followed: its target is what gets written.
+  // A symlink (or a chain of them) is followed: its target is what gets written, made if missing.
   const fs::path path(final_path);
-  const fs::path target = fs::is_symlink(fs::symlink_status(path, ec)) ? fs::weakly_canonical(path, ec) : path;
+  const fs::path target = fs::is_symlink(fs::symlink_status(path, ec)) ? link_target(path) : path;
   const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   if (!fs::is_directory(folder, ec))
     throw InputError(final_path, 0, "cannot write " + what + ": folder '" + folder.string() + "' does not exist");

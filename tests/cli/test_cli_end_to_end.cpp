@@ -149,6 +149,21 @@ TEST(CliOutputs, ASymlinkIsFollowed) {
   EXPECT_EQ(dir.listing(), (std::set<std::string>{"small.tri", "target.json", "link.json"}));
 }
 
+// A dangling symlink is followed too: its target is made and the link stays (issue 44 J: the link
+// was replaced by a regular file).
+TEST(CliOutputs, ADanglingSymlinkGetsItsTargetMade) {
+  ScratchDir dir;
+  dir.write("small.tri", kSmallTri);
+  fs::create_directory(dir.path("sub"));
+  fs::create_symlink("sub/made.json", dir.path("link.json"));
+  const RunResult r = run_rastersim(dir, with({"render", "small.tri", "--stats", "link.json"}, kSmallProfile));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir.path("link.json"))));
+  ASSERT_TRUE(fs::is_regular_file(dir.path("sub/made.json")));
+  EXPECT_GT(read_json(dir.path("sub/made.json"))["fragments"].get<int64_t>(), 0);
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"small.tri", "sub", "link.json"}));
+}
+
 // A FIFO is written into, not replaced: a reader on the other end gets the stats.
 TEST(CliOutputs, AFifoIsWrittenDirectly) {
   ScratchDir dir;
