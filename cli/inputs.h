@@ -20,6 +20,11 @@ namespace rastersim {
 // The texture a built-in scene's textured objects sample; nullptr for a scene without one.
 std::shared_ptr<const Texture> builtin_scene_texture(const std::string& scene_name);
 
+// A check for INPUT and --scene options: an empty name is refused (it meant the default scene).
+inline std::string non_empty_name(const std::string& value) {
+  return value.empty() ? "an empty name names no file and no scene" : "";
+}
+
 std::vector<ScreenTriangle> load_input(const std::string& path_or_empty, const std::string& scene_name,
                                        const Profile& profile, const frontend::CameraOptions& camera = {});
 

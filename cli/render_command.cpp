@@ -94,9 +94,11 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
 void add_scene_options(CLI::App& app, RenderOptions& o) {
   CLI::App* cmd = &app;
   cmd->add_option("input", o.input, "a screen-space .tri file, a Wavefront .obj mesh or a .json scene file")
-      ->type_name("INPUT");
+      ->type_name("INPUT")
+      ->check(non_empty_name);
   cmd->add_option("--scene", o.scene, "built-in scene to render when no INPUT is given (see `rastersim scenes`)")
-      ->type_name("NAME");
+      ->type_name("NAME")
+      ->check(non_empty_name);
   add_camera_options(app, o);
 }
 

@@ -24,10 +24,12 @@ CLI::App* add_vectors_command(CLI::App& app, VectorsOptions& o) {
       ->type_name("DIR")
       ->required();
   cmd->add_option("input", o.input, "a screen-space .tri file, a Wavefront .obj mesh or a .json scene file")
-      ->type_name("INPUT");
+      ->type_name("INPUT")
+      ->check(non_empty_name);
   cmd->add_option("--scene", o.scene, "a built-in scene (see `rastersim scenes`); the default scene when no "
                                       "INPUT, --random or --suite is given")
-      ->type_name("NAME");
+      ->type_name("NAME")
+      ->check(non_empty_name);
   o.random_option = cmd->add_option("--random", o.random, "N constrained-random triangles (rastersim cosim's generator)")
                         ->type_name("N");
   o.seed_option = cmd->add_option("--seed", o.seed, "seed of --random (default 1)")->type_name("S");

@@ -149,6 +149,20 @@ TEST(CliOutputs, ASymlinkIsFollowed) {
   EXPECT_EQ(dir.listing(), (std::set<std::string>{"small.tri", "target.json", "link.json"}));
 }
 
+// An empty INPUT or --scene name is bad input (issue 44 L: it rendered the default scene).
+TEST(CliInputs, AnEmptyNameIsRefused) {
+  ScratchDir dir;
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"render", "", "-o", "x.png"}, {"render", "--scene", "", "-o", "x.png"},
+        {"vectors", "--out", "pkg", ""}, {"vectors", "--out", "pkg", "--scene", ""},
+        {"sweep", "--out", "study", "--vary", "width=8,16", "--scene", ""}}) {
+    const RunResult r = run_rastersim(dir, args);
+    EXPECT_EQ(r.exit_code, 2) << args[0];
+    EXPECT_TRUE(contains(r.err, "an empty name names no file and no scene")) << r.err;
+  }
+  EXPECT_TRUE(dir.listing().empty());
+}
+
 // A dangling symlink is followed too: its target is made and the link stays (issue 44 J: the link
 // was replaced by a regular file).
 TEST(CliOutputs, ADanglingSymlinkGetsItsTargetMade) {
