@@ -48,7 +48,7 @@ void add_bench_input_options(CLI::App& cmd, BenchInput& o) {
       ->check(CLI::Range(int64_t(1), int64_t(10000000)))
       ->capture_default_str();
   cmd.add_option("--size", o.size, "random triangle size range in pixels, MIN..MAX")->capture_default_str();
-  cmd.add_option("--seed", o.seed, "random seed")->capture_default_str();
+  cmd.add_option("--seed", o.seed, "random seed")->capture_default_str()->check(unsigned_64_text);
 }
 
 CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {

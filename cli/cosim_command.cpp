@@ -172,7 +172,8 @@ CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
   cmd->add_option("--seed", o.seed,
                   "frame k draws its triangles, settings and the RTL's power-on state from seed + k (default " +
                       std::to_string(o.seed) + ")")
-      ->type_name("S");
+      ->type_name("S")
+      ->check(unsigned_64_text);
   cmd->add_option("--compare", o.compare,
                   "what must agree: cycle (every event at the model's cycle; the default for rastersim's RTL), stream "
                   "(decisions and fragments in order, any timing; the default with --dut), triangle (triangles in "
@@ -214,6 +215,9 @@ CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
                   "frames run in parallel, each on its own model and RTL (the report is the same as with 1; default 1)")
       ->type_name("N");
   cmd->add_option("--frame", o.frame, "run only frame K (as numbered in reports: the directed frames from 0, then the random ones)")
+      ->check([](const std::string& v) {
+        return unsigned_64_text(v).empty() ? std::string() : "'" + v + "' is not a frame number (0 or more)";
+      })
       ->type_name("K");
   cmd->add_option("--export", o.export_dir,
                   "write the frames (all, a shard's, or --frame K) as replay files into DIR instead of running them: "

@@ -20,6 +20,16 @@ struct ProfileOptions {
 
 void add_profile_options(CLI::App& app, ProfileOptions& options);
 
+// A check for unsigned 64-bit options (seeds): a decimal number 0..2^64-1 without leading zeros.
+// Without it CLI11 takes -1 and larger numbers as 2^64-1, and 010 as octal.
+inline std::string unsigned_64_text(const std::string& value) {
+  const std::string max = "18446744073709551615";
+  const bool digits = !value.empty() && value.find_first_not_of("0123456789") == std::string::npos &&
+                      (value == "0" || value[0] != '0');
+  if (digits && (value.size() < max.size() || (value.size() == max.size() && value <= max))) return "";
+  return "'" + value + "' is not a decimal number in 0.." + max;
+}
+
 // Defaults, then the profile file, then the flags given (in profile_keys() order), then
 // validate(). Throws InputError with every problem found, one a line.
 Profile resolve_profile(const ProfileOptions& options);

@@ -73,6 +73,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   cmd->add_option("--stats", o.stats_out, "stats JSON: counters, per-unit busy/stall, resolved profile")
       ->type_name("FILE");
   cmd->add_option("--seed", o.seed, "rtl, cosim, systemc: seed of the random power-on state of registers and memories")
+      ->check(unsigned_64_text)
       ->type_name("S");
   add_wave_options(*cmd, o.wave, "rtl, cosim: ");
   cmd->add_option("--replay-dir", o.replay_dir, "cosim: folder for the replay files of a divergence")

@@ -32,7 +32,7 @@ CLI::App* add_vectors_command(CLI::App& app, VectorsOptions& o) {
       ->check(non_empty_name);
   o.random_option = cmd->add_option("--random", o.random, "N constrained-random triangles (rastersim cosim's generator)")
                         ->type_name("N");
-  o.seed_option = cmd->add_option("--seed", o.seed, "seed of --random (default 1)")->type_name("S");
+  o.seed_option = cmd->add_option("--seed", o.seed, "seed of --random (default 1)")->type_name("S")->check(unsigned_64_text);
   cmd->add_option("--suite", o.suite, "a directed suite: rules (rasterization corner cases) or depth (for every "
                                       "depth function)")
       ->type_name("NAME");

@@ -163,6 +163,25 @@ TEST(CliInputs, AnEmptyNameIsRefused) {
   EXPECT_TRUE(dir.listing().empty());
 }
 
+// Seeds and frame numbers out of range are bad input (issue 44 N: -1 and 2^64 became 2^64-1, 010
+// was octal, --frame -1 ran every frame).
+TEST(CliInputs, SeedsAndFramesOutOfRangeAreRefused) {
+  ScratchDir dir;
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"cosim", "--count", "1", "--seed", "-1"},
+        {"cosim", "--count", "1", "--seed", "18446744073709551616"},
+        {"cosim", "--count", "1", "--seed", "010"}, {"vectors", "--out", "pkg", "--random", "2", "--seed", "-5"},
+        {"render", "--seed", "x", "-o", "x.png"}, {"bench", "--seed", "-2"}}) {
+    const RunResult r = run_rastersim(dir, args);
+    EXPECT_EQ(r.exit_code, 2) << args[0] << " " << args[args.size() - 1];
+    EXPECT_TRUE(contains(r.err, "is not a decimal number in 0..18446744073709551615")) << r.err;
+  }
+  const RunResult frame = run_rastersim(dir, {"cosim", "--count", "1", "--frame", "-1"});
+  EXPECT_EQ(frame.exit_code, 2);
+  EXPECT_TRUE(contains(frame.err, "'-1' is not a frame number")) << frame.err;
+  EXPECT_TRUE(dir.listing().empty());
+}
+
 // A dangling symlink is followed too: its target is made and the link stays (issue 44 J: the link
 // was replaced by a regular file).
 TEST(CliOutputs, ADanglingSymlinkGetsItsTargetMade) {
