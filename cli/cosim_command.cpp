@@ -74,6 +74,7 @@ std::string profile_summary(const Profile& p) {
   std::ostringstream s;
   s << p.width << "x" << p.height << " S=" << p.subpixel_bits << " N=" << p.z_bits;
   if (p.depth_exponent_bits >= 2) s << " Ne=" << p.depth_exponent_bits;
+  if (const std::string conventions = conventions_text(p); !conventions.empty()) s << " (" << conventions << ")";
   return s.str();
 }
 

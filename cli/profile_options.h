@@ -14,6 +14,7 @@ namespace rastersim {
 
 struct ProfileOptions {
   std::string profile_file;
+  std::string conventions;  // a preset's name (convention_presets()), or empty
   std::map<std::string, std::string> flag_values;  // by profile key
   std::map<std::string, CLI::Option*> flags;       // by profile key
 };

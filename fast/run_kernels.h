@@ -19,16 +19,16 @@ class UnsignedPlaneOutput {
  public:
   explicit UnsignedPlaneOutput(const PlaneFormat& f)
       : wrap_shift_(64 - f.reg_bits()), round_shift_(64 - f.reg_bits() + f.guard_bits()),
-        half_(uint64_t(1) << (f.guard_bits() - 1)), out_max_(uint64_t(f.out_max())) {}
+        addend_(f.rounding_addend()), out_max_(uint64_t(f.out_max())) {}
   uint32_t operator()(uint64_t value) const {
-    const uint64_t shifted = (value + half_) << wrap_shift_;
+    const uint64_t shifted = (value + addend_) << wrap_shift_;
     const uint64_t rounded = shifted >> round_shift_;
     return int64_t(shifted) < 0 ? 0u : uint32_t(rounded > out_max_ ? out_max_ : rounded);
   }
 
  private:
   int wrap_shift_, round_shift_;
-  uint64_t half_, out_max_;
+  uint64_t addend_, out_max_;
 };
 
 // The depth test and conditional write of n fragments at consecutive words from `depth` and

@@ -24,25 +24,25 @@ inline bool avx512_masked_fits(const ZAdder::Run& p) { return !p.gouraud || p.co
 // A plane format's operands for UnsignedPlaneOutput (fast/run_kernels.h) in vector registers;
 // `lane_bits` 64 (depth) or 32 (colour, registers held modulo 2^32: the shifts are 32 less).
 struct Avx512Format {
-  __m512i half, max;
+  __m512i addend, max;
   __m128i wrap, round;
 };
 RASTERSIM_AVX512 inline Avx512Format avx512_format(const PlaneFormat& f, int lane_bits) {
   const int reg_bits = std::min(f.reg_bits(), lane_bits);
-  const uint64_t half = uint64_t(1) << (f.guard_bits() - 1);
-  return {lane_bits == 64 ? _mm512_set1_epi64(int64_t(half)) : _mm512_set1_epi32(int32_t(half)),
+  const uint64_t addend = f.rounding_addend();
+  return {lane_bits == 64 ? _mm512_set1_epi64(int64_t(addend)) : _mm512_set1_epi32(int32_t(addend)),
           lane_bits == 64 ? _mm512_set1_epi64(f.out_max()) : _mm512_set1_epi32(int32_t(f.out_max())),
           _mm_cvtsi32_si128(lane_bits - reg_bits), _mm_cvtsi32_si128(lane_bits - reg_bits + f.guard_bits())};
 }
 // UnsignedPlaneOutput of eight 64-bit registers, narrowed to 32 bits.
 RASTERSIM_AVX512 inline __m256i avx512_depth_out(__m512i v, const Avx512Format& f) {
-  const __m512i shifted = _mm512_sll_epi64(_mm512_add_epi64(v, f.half), f.wrap);
+  const __m512i shifted = _mm512_sll_epi64(_mm512_add_epi64(v, f.addend), f.wrap);
   const __m512i rounded = _mm512_min_epu64(_mm512_srl_epi64(shifted, f.round), f.max);
   return _mm512_cvtepi64_epi32(_mm512_maskz_mov_epi64(_mm512_cmpge_epi64_mask(shifted, _mm512_setzero_si512()), rounded));
 }
 // UnsignedPlaneOutput of sixteen registers held modulo 2^32.
 RASTERSIM_AVX512 inline __m512i avx512_color_out(__m512i v, const Avx512Format& f) {
-  const __m512i shifted = _mm512_sll_epi32(_mm512_add_epi32(v, f.half), f.wrap);
+  const __m512i shifted = _mm512_sll_epi32(_mm512_add_epi32(v, f.addend), f.wrap);
   const __m512i rounded = _mm512_min_epu32(_mm512_srl_epi32(shifted, f.round), f.max);
   return _mm512_maskz_mov_epi32(_mm512_cmpge_epi32_mask(shifted, _mm512_setzero_si512()), rounded);
 }

@@ -120,7 +120,7 @@ void triangulate(const int64_t* x, const int64_t* y, int n, std::vector<Corners>
 }  // namespace
 
 Clipper::Clipper(const Profile& p)
-    : width_(p.width), height_(p.height), subpixel_bits_(p.subpixel_bits), band_x_(3.0 - 2.0 / p.width), band_y_(3.0 - 2.0 / p.height) {}
+    : width_(p.width), height_(p.height), subpixel_bits_(p.subpixel_bits), vertex_snap_(p.vertex_snap), band_x_(3.0 - 2.0 / p.width), band_y_(3.0 - 2.0 / p.height) {}
 
 // The new vertex of an edge crossing a plane, or the inside vertex itself when the two snap within
 // one subpixel of each other: such a tiny edge could reverse its direction when snapped and fold
@@ -131,8 +131,8 @@ ClipVertex Clipper::cut(const ClipVertex& in, double in_value, const ClipVertex&
   if (!(in.position.w > 0 && made.position.w > 0)) return made;
   const ScreenVertex a = to_screen(in), b = to_screen(made);
   if (!(std::fabs(a.x) < 1e7 && std::fabs(a.y) < 1e7 && std::fabs(b.x) < 1e7 && std::fabs(b.y) < 1e7)) return made;
-  const int64_t dx = snap_coordinate(a.x, subpixel_bits_) - snap_coordinate(b.x, subpixel_bits_);
-  const int64_t dy = snap_coordinate(a.y, subpixel_bits_) - snap_coordinate(b.y, subpixel_bits_);
+  const int64_t dx = snap_coordinate(a.x, subpixel_bits_, vertex_snap_) - snap_coordinate(b.x, subpixel_bits_, vertex_snap_);
+  const int64_t dy = snap_coordinate(a.y, subpixel_bits_, vertex_snap_) - snap_coordinate(b.y, subpixel_bits_, vertex_snap_);
   return std::max(std::abs(dx), std::abs(dy)) <= 1 ? in : made;
 }
 
@@ -198,8 +198,8 @@ void Clipper::clip(const ClipVertex (&triangle)[3], std::vector<ScreenTriangle>&
   int64_t snapped_x[kMaxPolygon], snapped_y[kMaxPolygon];
   for (int i = 0; i < current->n; ++i) {
     screen[i] = to_screen(current->v[i]);
-    snapped_x[i] = snap_coordinate(screen[i].x, subpixel_bits_);
-    snapped_y[i] = snap_coordinate(screen[i].y, subpixel_bits_);
+    snapped_x[i] = snap_coordinate(screen[i].x, subpixel_bits_, vertex_snap_);
+    snapped_y[i] = snap_coordinate(screen[i].y, subpixel_bits_, vertex_snap_);
   }
   std::vector<Corners> corners;
   if (!clipped) corners.push_back({0, 1, 2});  // an unclipped triangle stays as it is, even degenerate

@@ -52,6 +52,7 @@ class Clipper {
   ScreenVertex to_screen(const ClipVertex& v) const;
   ClipVertex cut(const ClipVertex& in, double in_value, const ClipVertex& out, double out_value) const;
   int width_, height_, subpixel_bits_;
+  VertexSnap vertex_snap_;
   double band_x_, band_y_;
 };
 

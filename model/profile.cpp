@@ -33,6 +33,10 @@ const char* const kFrontFaceNames[] = {"ccw", "cw"};
 const char* const kTraversalNames[] = {"bbox", "span"};
 const char* const kShadingNames[] = {"flat", "gouraud"};
 const char* const kDepthBufferNames[] = {"z", "inverse_w"};
+const char* const kPixelCenterNames[] = {"half", "corner"};
+const char* const kFillRuleNames[] = {"top_left", "top_right", "bottom_left", "bottom_right"};
+const char* const kVertexSnapNames[] = {"nearest", "nearest_even", "floor", "toward_zero"};
+const char* const kRoundingNames[] = {"nearest", "truncate"};
 
 // A slope factor held in sixteenths, as a decimal (exact: 1/16 has a finite decimal).
 std::string slope_text(int sixteenths) {
@@ -73,6 +77,10 @@ const char* to_string(FrontFace v) { return kFrontFaceNames[int(v)]; }
 const char* to_string(Traversal v) { return kTraversalNames[int(v)]; }
 const char* to_string(Shading v) { return kShadingNames[int(v)]; }
 const char* to_string(DepthBuffer v) { return kDepthBufferNames[int(v)]; }
+const char* to_string(PixelCenter v) { return kPixelCenterNames[int(v)]; }
+const char* to_string(FillRule v) { return kFillRuleNames[int(v)]; }
+const char* to_string(VertexSnap v) { return kVertexSnapNames[int(v)]; }
+const char* to_string(Rounding v) { return kRoundingNames[int(v)]; }
 std::optional<DepthFunc> parse_depth_func(const std::string& s) { return parse_enum<DepthFunc>(s, kDepthFuncNames); }
 std::optional<CullMode> parse_cull(const std::string& s) { return parse_enum<CullMode>(s, kCullNames); }
 std::optional<FrontFace> parse_front_face(const std::string& s) { return parse_enum<FrontFace>(s, kFrontFaceNames); }
@@ -176,6 +184,22 @@ const std::vector<ProfileKey> kTable = {
      RS_MEMBER(texture_stall_percent)},
     {"texture_stall_seed", KeyType::Integer, 0, INT32_MAX, nullptr, 0, {}, nullptr, "seed of its stall pattern",
      RtlPlace::None, "", RS_MEMBER(texture_stall_seed)},
+    {"pixel_center", KeyType::Choice, 0, 1, nullptr, 0, RS_CHOICES(kPixelCenterNames), nullptr,
+     "where a pixel is sampled: its centre (i + 1/2, j + 1/2) or its corner (i, j) "
+     "([arithmetic.md](arithmetic.md) section 7)",
+     RtlPlace::Default, "", RS_MEMBER(pixel_center)},
+    {"fill_rule", KeyType::Choice, 0, 3, nullptr, 0, RS_CHOICES(kFillRuleNames), nullptr,
+     "which edges own a sample that lies exactly on them ([arithmetic.md](arithmetic.md) section 7)", RtlPlace::Default, "", RS_MEMBER(fill_rule)},
+    {"vertex_snap", KeyType::Choice, 0, 3, nullptr, 0, RS_CHOICES(kVertexSnapNames), nullptr,
+     "how vertex x and y become subpixels: round half up, round half to even, floor, toward zero "
+     "([arithmetic.md](arithmetic.md) section 7; the host's work: the RTL takes snapped words)",
+     RtlPlace::None, "", RS_MEMBER(vertex_snap)},
+    {"depth_rounding", KeyType::Choice, 0, 1, nullptr, 0, RS_CHOICES(kRoundingNames), nullptr,
+     "the depth plane's output: rounded to nearest or truncated ([arithmetic.md](arithmetic.md) section 7)", RtlPlace::Default, "",
+     RS_MEMBER(depth_rounding)},
+    {"color_rounding", KeyType::Choice, 0, 1, nullptr, 0, RS_CHOICES(kRoundingNames), nullptr,
+     "the colour planes' outputs: rounded to nearest or truncated ([arithmetic.md](arithmetic.md) section 7)", RtlPlace::Default, "",
+     RS_MEMBER(color_rounding)},
 };
 #undef RS_MEMBER
 #undef RS_CHOICES
@@ -263,7 +287,7 @@ std::string profile_table_markdown() {
       at = end ? end + 2 : at + name.size();
     }
     out += "| `" + std::string(row.key) + "` | " + values_text(row) + " | " +
-           (row.word && def == row.word ? "`" + def + "`" : def) + " | " + (rtl.empty() ? "-" : rtl) + " | " +
+           (row.word && def == row.word ? "`" + def + "`" : def) + " | " + (row.place == RtlPlace::Default ? "default only" : rtl.empty() ? "-" : rtl) + " | " +
            row.meaning + " |\n";
   }
   return out;
@@ -388,6 +412,44 @@ void load_profile_text(Profile& profile, const std::string& text, const std::str
     const std::string key = error.substr(0, error.find(' '));
     if (doc.contains(key)) throw InputError(file_name, lines.line(JsonLines::child("", key)), error);
   }
+}
+
+const std::vector<ConventionPreset>& convention_presets() {
+  static const std::vector<ConventionPreset> presets = {
+      {"rastersim", "rastersim's own", {{"pixel_center", "half"}, {"fill_rule", "top_left"}}},
+      {"d3d9", "Direct3D 9: pixel centres at integer coordinates, the top-left rule",
+       {{"pixel_center", "corner"}, {"fill_rule", "top_left"}}},
+      {"d3d10", "Direct3D 10 to 12: pixel centres at half-integer coordinates, the top-left rule, 8 subpixel bits",
+       {{"pixel_center", "half"}, {"fill_rule", "top_left"}, {"subpixel_bits", "8"}}},
+  };
+  return presets;
+}
+
+const ConventionPreset* find_convention_preset(const std::string& name) {
+  for (const ConventionPreset& p : convention_presets())
+    if (name == p.name) return &p;
+  return nullptr;
+}
+
+std::string conventions_text(const Profile& p) {
+  const Profile defaults;
+  std::string out;
+  for (const char* key : {"pixel_center", "fill_rule", "vertex_snap", "depth_rounding", "color_rounding"}) {
+    const ProfileKey& row = *find_profile_key(key);
+    if (row.get(p) != row.get(defaults)) out += (out.empty() ? "" : ", ") + std::string(key) + " " + key_value_text(row, row.get(p));
+  }
+  return out;
+}
+
+std::string rtl_convention_error(const Profile& p) {
+  const Profile defaults;
+  for (const ProfileKey& row : kTable) {
+    if (row.place != RtlPlace::Default || row.get(p) == row.get(defaults)) continue;
+    return std::string(row.key) + " " + key_value_text(row, row.get(p)) + ": rastersim's RTL has " + row.key + " " +
+           key_value_text(row, row.get(defaults)) + " only (the model and cosim --dut, which checks a design of "
+           "your own, take every convention; docs/verification.md)";
+  }
+  return "";
 }
 
 std::string profile_to_json(const Profile& p, int indent) {

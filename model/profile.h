@@ -18,6 +18,20 @@ enum class Shading { Flat, Gouraud };
 // What the 3D front end puts in the depth plane: the projected z, or near / w (docs/arithmetic.md
 // section 6).
 enum class DepthBuffer { Z, InverseW };
+// Conventions a design may choose differently (docs/arithmetic.md section 7). The first value of
+// each is rastersim's own.
+// Where pixel (i, j) is sampled: its centre (i + 1/2, j + 1/2) or its corner (i, j).
+enum class PixelCenter { Half, Corner };
+// Which edges own the samples that lie exactly on them: a horizontal edge is owned when the
+// interior lies below it (top) or above it (bottom), another edge when the interior lies to its
+// right (left) or to its left (right). y points down.
+enum class FillRule { TopLeft, TopRight, BottomLeft, BottomRight };
+// How a vertex coordinate x becomes X subpixels: floor(x 2^S + 1/2), ties to even, floor(x 2^S),
+// or toward zero.
+enum class VertexSnap { Nearest, NearestEven, Floor, TowardZero };
+// How a plane register value V with F fraction bits becomes an integer output: floor(V / 2^F + 1/2)
+// or floor(V / 2^F).
+enum class Rounding { Nearest, Truncate };
 
 constexpr int kMaxSetupFifoDepth = 16;  // the RTL's MAX_SETUP_FIFO_DEPTH default
 constexpr int kMaxMemoryLatency = 64, kMaxTextureLatency = 64;  // memory_latency, texture_latency
@@ -68,6 +82,11 @@ struct Profile {
   int texture_latency = 2;        // cycles from a texture read request to its texels, 1..64
   int texture_stall_percent = 0;  // texture memory back-pressure, 0..90, as memory_stall_percent
   int texture_stall_seed = 1;     // 0..2^31-1
+  PixelCenter pixel_center = PixelCenter::Half;
+  FillRule fill_rule = FillRule::TopLeft;
+  VertexSnap vertex_snap = VertexSnap::Nearest;
+  Rounding depth_rounding = Rounding::Nearest;
+  Rounding color_rounding = Rounding::Nearest;
 
   uint32_t depth_max() const { return uint32_t((uint64_t(1) << z_bits) - 1); }
   uint32_t depth_clear_value() const {
@@ -76,6 +95,8 @@ struct Profile {
   // Np: the depth plane's bits (z_bits with the fixed-point word).
   int depth_plane_bits() const { return rastersim::depth_plane_bits(z_bits, depth_exponent_bits); }
   bool depth_biased() const { return depth_bias_constant != 0 || depth_bias_slope != 0; }
+  // The sample point's offset from pixel i's left (top) edge, in subpixels: 2^(S-1) or 0.
+  int64_t sample_offset() const { return pixel_center == PixelCenter::Half ? int64_t(1) << (subpixel_bits - 1) : 0; }
 };
 
 // Every error found, each a sentence naming the key; empty when the profile is valid.
@@ -88,6 +109,10 @@ const char* to_string(FrontFace v);
 const char* to_string(Traversal v);
 const char* to_string(Shading v);
 const char* to_string(DepthBuffer v);
+const char* to_string(PixelCenter v);
+const char* to_string(FillRule v);
+const char* to_string(VertexSnap v);
+const char* to_string(Rounding v);
 std::optional<DepthFunc> parse_depth_func(const std::string& s);
 std::optional<CullMode> parse_cull(const std::string& s);
 std::optional<FrontFace> parse_front_face(const std::string& s);
@@ -109,6 +134,7 @@ enum class RtlPlace {
   Port,       // a cfg_* input of rastersim_core (`rtl_name`), sampled during reset
   Parameter,  // a build parameter of rastersim_core (`rtl_name`; core_parameters() maps it)
   Both,       // a cfg_* input whose largest value (or whose presence) is a build parameter
+  Default,    // a convention the RTL has at its default value only (rtl_convention_error)
 };
 struct ProfileKey {
   const char* key;  // JSON key; the flag is --key with '-' for '_'
@@ -150,6 +176,26 @@ constexpr size_t kMaxProfileBytes = size_t(1) << 20;
 void load_profile_file(Profile& profile, const std::string& path);
 // The same for the JSON text of a profile; `file_name` names it in errors.
 void load_profile_text(Profile& profile, const std::string& text, const std::string& file_name);
+
+// A named set of convention keys for an API whose specification states them exactly
+// (docs/arithmetic.md section 7): `--conventions NAME` sets them, before the flags that name a
+// key themselves.
+struct ConventionPreset {
+  const char* name;
+  const char* source;  // what states them
+  std::vector<std::pair<const char*, const char*>> keys;  // key, value
+};
+const std::vector<ConventionPreset>& convention_presets();
+const ConventionPreset* find_convention_preset(const std::string& name);
+
+// The conventions of docs/arithmetic.md section 7 that differ from the defaults, as
+// "pixel_center corner, fill_rule top_right"; empty with rastersim's own.
+std::string conventions_text(const Profile& profile);
+
+// Why rastersim's RTL cannot run the profile's conventions (keys whose place is RtlPlace::Default
+// at another value than the default), or "" when it can. Designs of one's own with other conventions
+// are checked through cosim --dut (docs/verification.md).
+std::string rtl_convention_error(const Profile& profile);
 
 // The profile as a JSON object text (all keys, resolved values).
 std::string profile_to_json(const Profile& profile, int indent = 2);

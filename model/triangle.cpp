@@ -11,12 +11,19 @@
 
 namespace rastersim {
 
-int64_t snap_coordinate(double v, int subpixel_bits) {
-  // a = v * 2^S is exact (a power-of-two scale); floor(a + 1/2) is decided on the exact fraction
-  // so that no rounding of the sum can move a value across an integer.
+int64_t snap_coordinate(double v, int subpixel_bits, VertexSnap rule) {
+  // a = v * 2^S is exact (a power-of-two scale), and so is its fraction a - floor(a); each rule is
+  // decided on that fraction, so no rounding of a sum can move a value across an integer.
   const double a = std::ldexp(v, subpixel_bits);
-  const double whole = std::floor(a);
-  return int64_t(whole) + (a - whole >= 0.5 ? 1 : 0);
+  const double whole = std::floor(a), fraction = a - whole;
+  const int64_t below = int64_t(whole);
+  switch (rule) {
+    case VertexSnap::Nearest: return below + (fraction >= 0.5 ? 1 : 0);
+    case VertexSnap::NearestEven: return below + (fraction > 0.5 || (fraction == 0.5 && (below & 1)) ? 1 : 0);
+    case VertexSnap::Floor: return below;
+    case VertexSnap::TowardZero: return below + (a < 0 && fraction > 0 ? 1 : 0);
+  }
+  return below;
 }
 
 uint32_t quantize_depth(double z, int z_bits) {
@@ -119,8 +126,8 @@ std::string check_texture_w_ratio(const ScreenTriangle& tri) {
 SnappedTriangle snap(const ScreenTriangle& tri, const Profile& p) {
   SnappedTriangle out;
   for (int k = 0; k < 3; ++k) {
-    out.v[k].x = int32_t(snap_coordinate(tri.v[k].x, p.subpixel_bits));
-    out.v[k].y = int32_t(snap_coordinate(tri.v[k].y, p.subpixel_bits));
+    out.v[k].x = int32_t(snap_coordinate(tri.v[k].x, p.subpixel_bits, p.vertex_snap));
+    out.v[k].y = int32_t(snap_coordinate(tri.v[k].y, p.subpixel_bits, p.vertex_snap));
     out.v[k].z = quantize_depth(tri.v[k].z, p.depth_plane_bits());
     out.v[k].color = tri.v[k].color;
   }

@@ -62,7 +62,8 @@ std::string check_texture_w_ratio(const ScreenTriangle& tri);
 // are dropped: the hardware has nowhere to put them).
 SnappedTriangle snap(const ScreenTriangle& tri, const Profile& profile);
 
-int64_t snap_coordinate(double v, int subpixel_bits);
+// X subpixels of a coordinate x by the profile's vertex_snap rule (docs/arithmetic.md section 7).
+int64_t snap_coordinate(double v, int subpixel_bits, VertexSnap rule);
 uint32_t quantize_depth(double z, int z_bits);
 // floor(2^P w_min / w + 1/2) and floor(c q + 1/2), exact (no rounding before the last one);
 // 0 < w_min <= w <= 2^14 w_min, |c| < 128, 0 < q <= 2^P.

@@ -16,6 +16,16 @@ const char* to_string(SetupStatus status) {
   return "?";
 }
 
+bool owns_samples_on_edge(FillRule rule, int64_t dx, int64_t dy) {
+  // The ordered triangle (area2 > 0) has its interior to the right of each edge as y points down:
+  // dy < 0 is a left edge, dy > 0 a right one; a horizontal edge with dx > 0 has the interior
+  // below it (a top edge), with dx < 0 above it (a bottom edge).
+  const bool left = rule == FillRule::TopLeft || rule == FillRule::BottomLeft;
+  const bool top = rule == FillRule::TopLeft || rule == FillRule::TopRight;
+  if (dy != 0) return left ? dy < 0 : dy > 0;
+  return top ? dx > 0 : dx < 0;
+}
+
 TriangleSetup::TriangleSetup(const Profile& profile) : profile_(profile), widths_(derive_widths(profile)) {}
 
 // Plane through the three vertex values, by barycentric weights of the edge functions:
@@ -78,10 +88,10 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
   if (area2 < 0) std::swap(v[1], v[2]);  // either winding rasterizes: order to area2 > 0
   const int64_t area = area2 < 0 ? -area2 : area2;
 
-  const int64_t half = int64_t(1) << (S - 1);
+  const int64_t half = profile_.sample_offset();  // the sample point within a pixel: 2^(S-1) or 0
   const int64_t x_min = std::min({v[0].x, v[1].x, v[2].x}), x_max = std::max({v[0].x, v[1].x, v[2].x});
   const int64_t y_min = std::min({v[0].y, v[1].y, v[2].y}), y_max = std::max({v[0].y, v[1].y, v[2].y});
-  // Pixel i is a candidate when its centre i 2^S + 2^(S-1) lies in [min, max]: columns [xa, xb]
+  // Pixel i is a candidate when its sample point i 2^S + half lies in [min, max]: columns [xa, xb]
   // and rows [ya, yb] of the whole grid, then clipped to the screen.
   const int64_t xa = (x_min - half + (int64_t(1) << S) - 1) >> S, xb = (x_max - half) >> S;
   const int64_t ya = (y_min - half + (int64_t(1) << S) - 1) >> S, yb = (y_max - half) >> S;
@@ -94,7 +104,7 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
   if (r.x0 > r.x1 || r.y0 > r.y1) return reject(SetupStatus::NoCentre);
   r.status = SetupStatus::Drawn;
 
-  // Edge functions at the first candidate's centre.
+  // Edge functions at the first candidate's sample point.
   const int64_t px = (int64_t(r.x0) << S) + half, py = (int64_t(r.y0) << S) + half;
   i128 unbiased[3];
   int64_t step_x[3], step_y[3];
@@ -105,10 +115,9 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
     check_signed(dx, w.delta_bits, "edge dx");
     check_signed(dy, w.delta_bits, "edge dy");
     EdgeSetup& e = r.edge[k];
-    // Interior to the right (dy < 0) is a left edge; horizontal with interior below (dx > 0) is top.
-    e.top_left = dy < 0 || (dy == 0 && dx > 0);
+    e.owns_samples = owns_samples_on_edge(profile_.fill_rule, dx, dy);
     unbiased[k] = i128(dx) * (py - a.y) - i128(dy) * (px - a.x);
-    e.start = int64_t(unbiased[k]) - (e.top_left ? 0 : 1);
+    e.start = int64_t(unbiased[k]) - (e.owns_samples ? 0 : 1);
     e.step_x = -dy * (int64_t(1) << S);
     e.step_y = dx * (int64_t(1) << S);
     check_signed(unbiased[k], w.edge_bits, "edge start");

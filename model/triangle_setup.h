@@ -45,7 +45,7 @@ struct EdgeSetup {
   EdgeValue start;      // E at the first candidate's centre (bbox x0, y0), s(edge_bits).2S, biased
   EdgeStep step_x;      // E change per pixel in x = -dy * 2^S, s(edge_step_x_bits).2S
   EdgeStep step_y;      // E change per pixel in y =  dx * 2^S, s(edge_step_y_bits).2S
-  bool top_left;        // bias 0 (top or left edge) or 1
+  bool owns_samples;    // bias 0: the samples on the edge are inside (the profile's fill_rule), else 1
   // Span walker (exact row bounds without division per row): with d = |step_x| > 0,
   // start = span_quot * d + span_rem and step_y = span_step_quot * d + span_step_rem, remainders
   // in [0, d). Unused when step_x == 0.
@@ -54,6 +54,10 @@ struct EdgeSetup {
   SpanStepQuotient span_step_quot;
   SpanRemainder span_step_rem;
 };
+
+// Whether an edge from a to b (dx = Xb - Xa, dy = Yb - Ya) of a triangle ordered to area2 > 0
+// owns the samples that lie on it under `rule` (docs/arithmetic.md sections 2 and 7).
+bool owns_samples_on_edge(FillRule rule, int64_t dx, int64_t dy);
 
 // A plane P(x, y) = start + (x - x0) * step_x + (y - y0) * step_y held in a wrapping register of
 // `reg_bits` with F fraction bits: start = floor(2^F P(x0 + 1/2, y0 + 1/2)), step = floor(2^F dP).

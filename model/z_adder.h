@@ -15,30 +15,33 @@
 namespace rastersim {
 
 // The format of a plane register: a two's-complement value of `reg_bits` with `guard_bits` fraction
-// bits (depth s(N+1).F, colour s9.F), and its output: the rounded integer clamped to [0, out_max].
+// bits (depth s(N+1).F, colour s9.F), and its output: the integer rounded by the profile's
+// depth_rounding or color_rounding (docs/arithmetic.md section 7), clamped to [0, out_max].
 class PlaneFormat {
  public:
-  PlaneFormat(int reg_bits, int guard_bits, int64_t out_max)
+  PlaneFormat(int reg_bits, int guard_bits, int64_t out_max, Rounding rounding)
       : wrap_shift_(64 - reg_bits), round_shift_(64 - reg_bits + guard_bits),
-        half_(uint64_t(1) << (guard_bits - 1)), out_max_(out_max) {}
+        rounding_addend_(rounding == Rounding::Nearest ? uint64_t(1) << (guard_bits - 1) : 0), out_max_(out_max) {}
 
   // v modulo 2^reg_bits: what the register holds.
   int reg_bits() const { return 64 - wrap_shift_; }
   int guard_bits() const { return round_shift_ - wrap_shift_; }
   int64_t out_max() const { return out_max_; }
+  // What is added before the fraction bits are dropped: 2^(F-1) to round to nearest, 0 to truncate.
+  uint64_t rounding_addend() const { return rounding_addend_; }
 
   int64_t wrap(uint64_t v) const { return int64_t(v << wrap_shift_) >> wrap_shift_; }
-  // clamp((value + 2^(F-1)) >> F, 0, out_max), the sum taken in the register's width. `value` may be
+  // clamp((value + rounding_addend) >> F, 0, out_max), the sum taken in the register's width. `value` may be
   // held modulo 2^64: 2^reg_bits divides 2^64, so wrapping the sum once gives the register's result
   // (the wrap's right shift and the rounding shift are one shift).
   int64_t output(uint64_t value) const {
-    const int64_t rounded = int64_t((value + half_) << wrap_shift_) >> round_shift_;
+    const int64_t rounded = int64_t((value + rounding_addend_) << wrap_shift_) >> round_shift_;
     return rounded < 0 ? 0 : (rounded > out_max_ ? out_max_ : rounded);
   }
 
  private:
   int wrap_shift_, round_shift_;
-  uint64_t half_;
+  uint64_t rounding_addend_;
   int64_t out_max_;
 };
 
@@ -104,7 +107,7 @@ class DepthOutput {
   }
   uint32_t word(uint64_t value, int64_t bias) const {
     if (bias == 0) return word_.encode(uint64_t(plane_.output(value)));
-    const __int128 sum = __int128(plane_.wrap(value)) + bias + (__int128(1) << (plane_.guard_bits() - 1));
+    const __int128 sum = __int128(plane_.wrap(value)) + bias + __int128(plane_.rounding_addend());
     const __int128 rounded = sum >> plane_.guard_bits();  // arithmetic: floor
     return word_.encode(uint64_t(std::clamp(rounded, __int128(0), __int128(plane_.out_max()))));
   }
@@ -124,9 +127,10 @@ class ZAdder {
  public:
   ZAdder(const Widths& widths, const Profile& profile)
       : gouraud_(profile.shading == Shading::Gouraud),
-        depth_format_{widths.z_reg_bits, widths.guard_bits, (int64_t(1) << profile.depth_plane_bits()) - 1},
-        color_format_{widths.color_reg_bits, widths.guard_bits, 255},
-        texture_format_{widths.texture_reg_bits, widths.texture_guard_bits, 0},
+        depth_format_{widths.z_reg_bits, widths.guard_bits, (int64_t(1) << profile.depth_plane_bits()) - 1,
+                      profile.depth_rounding},
+        color_format_{widths.color_reg_bits, widths.guard_bits, 255, profile.color_rounding},
+        texture_format_{widths.texture_reg_bits, widths.texture_guard_bits, 0, Rounding::Nearest},
         depth_output_{depth_format_, profile} {}
 
   // The depth output is the depth register's rounded value (no bias, the fixed-point word): what the

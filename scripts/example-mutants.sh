@@ -2,7 +2,8 @@
 # The example design that is not rastersim's (examples/bbox_rasterizer, docs/verification.md):
 # passes `cosim --dut ... --compare triangle`, and each of five bugs injected into a copy of it is
 # caught by the same command with a first mismatch, a replay command that fails alone and a
-# waveform of the frame.
+# waveform of the frame; with fewer depth fraction bits it passes only within its tolerance, and
+# sampling at pixel corners only with the matching profile.
 # Usage: example-mutants.sh RASTERSIM [COUNT]   (COUNT random frames, default 100)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -73,4 +74,14 @@ low, high = map(int, re.search(r"depth error \(design - model\) \d+ samples, err
 assert -7 <= low < 0 and high <= 0, (low, high)
 PY
 echo "example-mutants: fewer depth fraction bits: exact fails, depth=7 passes: ${line:0:160}"
+# A design that samples pixels at their corners (PIXEL_CENTER_CORNER 1) passes only when the
+# profile says so (pixel_center corner, docs/arithmetic.md section 7).
+corner=(--dut original/bbox_rasterizer.f --top bbox_rasterizer -G PIXEL_CENTER_CORNER=1 --width 64 --height 48
+        --compare triangle --count "$count")
+status=0
+"$exe" cosim "${corner[@]}" > corner-centre.txt 2>&1 || status=$?
+[ "$status" -eq 1 ] || fail "corner sampling passed against pixel_center half (exit $status)"
+"$exe" cosim "${corner[@]}" --pixel-center corner > corner-corner.txt 2>&1 ||
+  fail "corner sampling failed against pixel_center corner: $(grep -m1 '^frame ' corner-corner.txt)"
+echo "example-mutants: corner sampling fails with pixel_center half, passes with corner: $(tail -1 corner-corner.txt)"
 echo "example-mutants: the example passes and all ${#mutants[@]} injected bugs are caught"

@@ -142,7 +142,7 @@ CoverageCounts frame_coverage(const Profile& p, const std::vector<SnappedTriangl
         for (int k = 0; k < 3; ++k) {
           const EdgeSetup& e = s.edge[k];
           biased[k] = int64_t(e.start) + int64_t(x - s.x0) * int64_t(e.step_x) + int64_t(y - s.y0) * int64_t(e.step_y);
-          const int64_t unbiased = biased[k] + (e.top_left ? 0 : 1);
+          const int64_t unbiased = biased[k] + (e.owns_samples ? 0 : 1);
           zeros += unbiased == 0;
           inside += unbiased >= 0;
         }
@@ -153,9 +153,11 @@ CoverageCounts frame_coverage(const Profile& p, const std::vector<SnappedTriangl
         }
         for (int k = 0; k < 3; ++k) {
           const EdgeSetup& e = s.edge[k];
-          if (biased[k] + (e.top_left ? 0 : 1) != 0) continue;
+          if (biased[k] + (e.owns_samples ? 0 : 1) != 0) continue;
+          // Where the interior lies (y down): below a horizontal edge with dx > 0 (a top edge), right
+          // of an edge with dy < 0 (a left edge); step_x = -dy 2^S, step_y = dx 2^S.
           const bool horizontal = int64_t(e.step_x) == 0;
-          ++hits[horizontal ? (e.top_left ? kTieTop : kTieBottom) : (e.top_left ? kTieLeft : kTieRight)];
+          ++hits[horizontal ? (int64_t(e.step_y) > 0 ? kTieTop : kTieBottom) : (int64_t(e.step_x) > 0 ? kTieLeft : kTieRight)];
         }
       }
     }

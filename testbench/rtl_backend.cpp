@@ -84,6 +84,7 @@ int built_max_memory_latency(const Profile& p) {
 std::string configuration_error(const Profile& p) {
   const std::vector<std::string> errors = validate(p);
   if (!errors.empty()) return "invalid profile: " + errors.front();
+  if (std::string convention = rtl_convention_error(p); !convention.empty()) return convention;
   // Whatever the geometry: rastersim_top's on-chip memories have no stall pattern.
   if (p.memory_stall_percent > 0)
     return "memory_stall_percent " + std::to_string(p.memory_stall_percent) +
@@ -135,7 +136,7 @@ RtlResult run_model(const Profile& profile, const std::vector<SnappedTriangle>& 
     // Fields the RTL record does not carry (see RtlResult::setups).
     s.front_facing = false;
     s.area2 = 0;
-    for (EdgeSetup& e : s.edge) e.top_left = false;
+    for (EdgeSetup& e : s.edge) e.owns_samples = false;
     out.setups.push_back(s);
     pipe.submit(t);
   }

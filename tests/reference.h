@@ -14,6 +14,9 @@ namespace rastersim::reference {
 
 // True when the centre of pixel (i, j) is covered by the snapped triangle (top-left rule).
 bool covers(const SnappedTriangle& tri, int subpixel_bits, int i, int j);
+// The same with the profile's conventions: its pixel_center's sample point and its fill_rule
+// (docs/arithmetic.md section 7).
+bool covers(const SnappedTriangle& tri, const Profile& profile, int i, int j);
 
 // Exact depth of the plane through the three vertex depths at the centre of pixel (i, j), as
 // numerator / denominator with denominator > 0. Requires a non-degenerate triangle.
@@ -22,8 +25,11 @@ struct Rational {
   __int128 den;
 };
 Rational plane_at_centre(const SnappedTriangle& tri, const uint32_t value[3], int subpixel_bits, int i, int j);
+// The same at the profile's sample point of pixel (i, j).
+Rational plane_at_sample(const SnappedTriangle& tri, const uint32_t value[3], const Profile& profile, int i, int j);
 
-// All covered on-screen pixels, row by row, left to right.
+// All covered on-screen pixels, row by row, left to right; this and the functions below follow the
+// profile's pixel_center and fill_rule.
 struct Pixel {
   int x, y;
 };
@@ -56,8 +62,8 @@ std::vector<int> covered_in_row(const SnappedTriangle& tri, const Profile& profi
 // start + (x - x0) step_x + (y - y0) step_y.
 i128 absolute_plane(const PlaneSetup& plane, const SetupResult& s, int x, int y);
 
-// The rounded, clamped output of a plane register (docs/arithmetic.md):
-// clamp((V + 2^(F-1)) >> F, 0, max).
-int64_t rounded_plane_output(int64_t register_value, int guard_bits, int64_t max);
+// The rounded, clamped output of a plane register (docs/arithmetic.md sections 3 and 7):
+// clamp((V + 2^(F-1)) >> F, 0, max) to nearest, clamp(V >> F, 0, max) truncated.
+int64_t rounded_plane_output(int64_t register_value, int guard_bits, int64_t max, Rounding rounding = Rounding::Nearest);
 
 }  // namespace rastersim::reference

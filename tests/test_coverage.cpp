@@ -69,17 +69,22 @@ std::vector<Family> families() {
   };
 }
 
-class Coverage : public ::testing::TestWithParam<std::tuple<int, Traversal>> {};
+// A pixel_center and a fill_rule (docs/arithmetic.md section 7).
+using Convention = std::pair<PixelCenter, FillRule>;
+class Coverage : public ::testing::TestWithParam<std::tuple<int, Traversal, Convention>> {};
 
-TEST_P(Coverage, RandomAndDirectedFamiliesMatchTheTopLeftRule) {
-  const auto [S, traversal] = GetParam();
-  const Profile p = test::make_profile(48, 40, S, traversal);
+TEST_P(Coverage, RandomAndDirectedFamiliesMatchTheFillRule) {
+  const auto [S, traversal, convention] = GetParam();
+  Profile p = test::make_profile(48, 40, S, traversal);
+  p.pixel_center = convention.first;
+  p.fill_rule = convention.second;
   Pipeline pipe(p);  // depth_func always: coverage does not depend on the buffer contents
   FragmentLog log;
   pipe.set_fragment_sink(&log);
   int family_index = 0;
   for (const Family& family : families()) {
-    const uint64_t seed = 1000 * uint64_t(S) + 17 * uint64_t(family_index++) + 3;
+    const uint64_t seed = 1000 * uint64_t(S) + 17 * uint64_t(family_index++) + 3 + 100000 * uint64_t(convention.first) +
+                          10000 * uint64_t(convention.second);
     SCOPED_TRACE(::testing::Message() << describe(p) << " family " << family.name << " seed " << seed);
     TriangleGen gen(p, seed);
     int drawn = 0, offscreen = 0, no_centre = 0, degenerate = 0;
@@ -113,12 +118,22 @@ TEST_P(Coverage, RandomAndDirectedFamiliesMatchTheTopLeftRule) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(SubpixelBitsAndTraversals, Coverage,
+std::vector<Convention> every_convention() {
+  std::vector<Convention> out;
+  for (PixelCenter c : {PixelCenter::Half, PixelCenter::Corner})
+    for (FillRule r : {FillRule::TopLeft, FillRule::TopRight, FillRule::BottomLeft, FillRule::BottomRight})
+      out.push_back({c, r});
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(SubpixelBitsTraversalsAndConventions, Coverage,
                          ::testing::Combine(::testing::Values(8, 4, 1),
-                                            ::testing::Values(Traversal::BBox, Traversal::Span)),
+                                            ::testing::Values(Traversal::BBox, Traversal::Span),
+                                            ::testing::ValuesIn(every_convention())),
                          [](const auto& info) {
+                           const Convention c = std::get<2>(info.param);
                            return "S" + std::to_string(std::get<0>(info.param)) + "_" +
-                                  to_string(std::get<1>(info.param));
+                                  to_string(std::get<1>(info.param)) + "_" + to_string(c.first) + "_" + to_string(c.second);
                          });
 
 // Directed cases whose coverage is known by hand, so that the reference itself is checked too.

@@ -66,7 +66,7 @@ struct Collect : FragmentSink {
 
 std::string setup_line(const EdgeSetup& e) {
   return "start " + std::to_string(e.start) + " step_x " + std::to_string(e.step_x) + " step_y " +
-         std::to_string(e.step_y) + " top_left " + std::to_string(int(e.top_left));
+         std::to_string(e.step_y) + " owns " + std::to_string(int(e.owns_samples));
 }
 
 TEST(Docs, ArithmeticWorkedExample) {
@@ -173,6 +173,63 @@ TEST(Docs, ArithmeticEmptyBoxExample) {
     }
   }
   EXPECT_EQ(checked, 3);
+}
+
+// docs/arithmetic.md section 7: each convention's pixels of the example triangle, vertex snaps and
+// rounded register values, against the model.
+TEST(Docs, ConventionsExample) {
+  SnappedTriangle t;
+  int checked = 0;
+  for (const auto& [key, value] : doc_block("arithmetic.md", "example-conventions")) {
+    SCOPED_TRACE(key + " = " + value);
+    std::istringstream words(key);
+    std::string what;
+    words >> what;
+    Profile p;
+    p.width = p.height = 16;
+    p.subpixel_bits = 4;
+    p.z_bits = 16;
+    if (what == "triangle") {
+      std::istringstream in(value);
+      char comma;
+      for (SnappedVertex& v : t.v) in >> v.x >> comma >> v.y, v.z = 0, v.color = {};
+      ASSERT_TRUE(in);
+      continue;
+    }
+    if (what == "snap") {
+      double x = 0;
+      words >> x;
+      std::string made;
+      for (const char* rule : {"nearest", "nearest_even", "floor", "toward_zero"}) {
+        ASSERT_EQ(set_profile_key(p, "vertex_snap", rule), "");
+        made += std::string(made.empty() ? "" : " ") + rule + " " + std::to_string(snap_coordinate(x, 4, p.vertex_snap));
+      }
+      EXPECT_EQ(made, value);
+    } else if (what == "round") {
+      int guard = 0;
+      int64_t value_register = 0;
+      words >> guard >> value_register;
+      std::string made;
+      for (Rounding r : {Rounding::Nearest, Rounding::Truncate})
+        made += std::string(made.empty() ? "" : " ") + to_string(r) + " " +
+                std::to_string(PlaneFormat(guard + 25, guard, 65535, r).output(uint64_t(value_register)));
+      EXPECT_EQ(made, value);
+    } else {
+      std::string rule;
+      words >> rule;
+      ASSERT_EQ(set_profile_key(p, "pixel_center", what), "");
+      ASSERT_EQ(set_profile_key(p, "fill_rule", rule), "");
+      Pipeline pipe(p);
+      Collect collect;
+      pipe.set_fragment_sink(&collect);
+      pipe.submit(t);
+      std::string made;
+      for (const Fragment& f : collect.fragments) made += (made.empty() ? "" : " ") + std::to_string(f.x) + "," + std::to_string(f.y);
+      EXPECT_EQ(made, value);
+    }
+    ++checked;
+  }
+  EXPECT_EQ(checked, 14);
 }
 
 TEST(Docs, CycleModelWorkedExample) { check_timeline("example-timeline"); }

@@ -95,6 +95,9 @@ TEST_P(FastPath, UntracedFrameEqualsTracedFrame) {
     profile.memory_stall_seed = int(seed);
     profile.shading = seed % 3 ? Shading::Gouraud : Shading::Flat;
     profile.depth_write = seed != 4;
+    // Other conventions (docs/arithmetic.md section 7): the fast paths round and sample as the model.
+    if (seed == 2 || seed == 7) profile.depth_rounding = profile.color_rounding = Rounding::Truncate;
+    if (seed == 3) profile.pixel_center = PixelCenter::Corner, profile.fill_rule = FillRule::BottomRight;
     TriangleGen gen(profile, seed * 7919 + uint64_t(latency));
     // Overlapping large triangles (long runs, depth tests both ways), back-to-back tiny ones
     // (hazard stalls inside and across triangles), slivers and off-screen ones.
@@ -161,13 +164,15 @@ TEST(FastPath, PipelinesTakeTheFastWalkWhereItApplies) {
 }
 
 // The run kernels compute a plane register's output without a 64-bit arithmetic shift: equal to
-// PlaneFormat::output() for every register value, wrapped or not, in or out of the output range.
+// PlaneFormat::output() for every register value, wrapped or not, in or out of the output range,
+// rounded or truncated.
 TEST(FastPath, UnsignedOutputEqualsOutput) {
   std::mt19937_64 rng(11);
   for (const auto& [reg_bits, guard_bits, out_max] :
        {std::tuple{58, 24, (int64_t(1) << 32) - 1}, std::tuple{41, 16, (int64_t(1) << 24) - 1},
-        std::tuple{26, 9, (int64_t(1) << 16) - 1}, std::tuple{30, 21, int64_t(255)}}) {
-    const PlaneFormat format(reg_bits, guard_bits, out_max);
+        std::tuple{26, 9, (int64_t(1) << 16) - 1}, std::tuple{30, 21, int64_t(255)}})
+  for (const Rounding rounding : {Rounding::Nearest, Rounding::Truncate}) {
+    const PlaneFormat format(reg_bits, guard_bits, out_max, rounding);
     const UnsignedPlaneOutput output_unsigned(format);
     for (int i = 0; i < 200000; ++i) {
       // Random words, and values near 0 and near the output's top, where rounding and clamping act.

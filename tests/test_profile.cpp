@@ -256,7 +256,7 @@ TEST(ProfileFile, ErrorsNameFileLineAndProblem) {
 
 // Exact check of Z = floor(a + 1/2) for a = v 2^S (exact in double): Z - 1/2 <= a < Z + 1/2.
 void expect_snapped(double v, int S) {
-  const int64_t z = snap_coordinate(v, S);
+  const int64_t z = snap_coordinate(v, S, VertexSnap::Nearest);
   const double a = std::ldexp(v, S);
   EXPECT_TRUE(double(z) - 0.5 <= a && a < double(z) + 0.5) << "v " << v << " S " << S << " gave " << z;
 }
@@ -267,21 +267,21 @@ TEST(Snapping, CoordinatesRoundHalfUpExactly) {
     const double unit = std::ldexp(1.0, -S);
     for (int64_t n = -40; n <= 40; ++n) {
       const double tie = (double(n) + 0.5) * unit;  // exactly halfway between two subpixels
-      EXPECT_EQ(snap_coordinate(tie, S), n + 1) << "tie " << tie << " S " << S;
-      EXPECT_EQ(snap_coordinate(std::nextafter(tie, -1e9), S), n) << "just below the tie " << tie;
-      EXPECT_EQ(snap_coordinate(std::nextafter(tie, 1e9), S), n + 1) << "just above the tie " << tie;
-      EXPECT_EQ(snap_coordinate(double(n) * unit, S), n);
+      EXPECT_EQ(snap_coordinate(tie, S, VertexSnap::Nearest), n + 1) << "tie " << tie << " S " << S;
+      EXPECT_EQ(snap_coordinate(std::nextafter(tie, -1e9), S, VertexSnap::Nearest), n) << "just below the tie " << tie;
+      EXPECT_EQ(snap_coordinate(std::nextafter(tie, 1e9), S, VertexSnap::Nearest), n + 1) << "just above the tie " << tie;
+      EXPECT_EQ(snap_coordinate(double(n) * unit, S, VertexSnap::Nearest), n);
     }
     std::uniform_real_distribution<double> anywhere(-4096.0, 8192.0);
     for (int k = 0; k < 2000; ++k) expect_snapped(anywhere(rng), S);
     // Ties at the ends of the guard band's coordinate range.
     for (int64_t n : {-(int64_t(4096) << S), (int64_t(8192) << S) - 1, int64_t(1234567) % (int64_t(8192) << S)}) {
       const double tie = (double(n) + 0.5) * unit;
-      EXPECT_EQ(snap_coordinate(tie, S), n + 1) << tie;
+      EXPECT_EQ(snap_coordinate(tie, S, VertexSnap::Nearest), n + 1) << tie;
       expect_snapped(std::nextafter(tie, 0.0), S);
     }
   }
-  EXPECT_EQ(snap_coordinate(-0.0, 4), 0);
+  EXPECT_EQ(snap_coordinate(-0.0, 4, VertexSnap::Nearest), 0);
 }
 
 // Exact check of Z = floor(z (2^N - 1) + 1/2) with z = m 2^-k: (2Z - 1) 2^k <= 2 m (2^N - 1) < (2Z + 1) 2^k.

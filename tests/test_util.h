@@ -83,8 +83,8 @@ class TriangleGen {
   int64_t y_hi() const { return 2 * int64_t(p_.height) * M_; }
   int64_t clamp_x(int64_t x) const { return std::clamp(x, x_lo(), x_hi()); }
   int64_t clamp_y(int64_t y) const { return std::clamp(y, y_lo(), y_hi()); }
-  // Centre of pixel i in subpixels.
-  int64_t centre(int64_t i) const { return i * M_ + M_ / 2; }
+  // Sample point of pixel i in subpixels: its centre, or its corner with pixel_center corner.
+  int64_t centre(int64_t i) const { return i * M_ + p_.sample_offset(); }
 
   SnappedVertex vertex(int64_t x, int64_t y) {
     SnappedVertex v;
@@ -177,18 +177,18 @@ class TriangleGen {
   }
   // Entirely off screen (inside the guard band), or between two rows / columns of pixel centres.
   SnappedTriangle offscreen() {
-    const int64_t W = int64_t(p_.width) * M_, H = int64_t(p_.height) * M_;
-    const int64_t edge_x = M_ / 2 - 1, edge_y = M_ / 2 - 1;  // last subpixel before the first centre
-    // (the right and bottom cases start one subpixel after the last centre)
+    const int64_t edge = centre(0) - 1;  // last subpixel before the first sample point
+    // (the right and bottom cases start one subpixel after the last sample point)
+    const int64_t right = centre(p_.width - 1) + 1, bottom = centre(p_.height - 1) + 1;
     switch (uniform(0, 4)) {
-      case 0: return triangle(uniform(x_lo(), edge_x), uniform(y_lo(), y_hi()), uniform(x_lo(), edge_x),
-                              uniform(y_lo(), y_hi()), uniform(x_lo(), edge_x), uniform(y_lo(), y_hi()));
-      case 1: return triangle(uniform(W - M_ / 2 + 1, x_hi()), uniform(y_lo(), y_hi()), uniform(W - M_ / 2 + 1, x_hi()),
-                              uniform(y_lo(), y_hi()), uniform(W - M_ / 2 + 1, x_hi()), uniform(y_lo(), y_hi()));
-      case 2: return triangle(uniform(x_lo(), x_hi()), uniform(y_lo(), edge_y), uniform(x_lo(), x_hi()),
-                              uniform(y_lo(), edge_y), uniform(x_lo(), x_hi()), uniform(y_lo(), edge_y));
-      case 3: return triangle(uniform(x_lo(), x_hi()), uniform(H - M_ / 2 + 1, y_hi()), uniform(x_lo(), x_hi()),
-                              uniform(H - M_ / 2 + 1, y_hi()), uniform(x_lo(), x_hi()), uniform(H - M_ / 2 + 1, y_hi()));
+      case 0: return triangle(uniform(x_lo(), edge), uniform(y_lo(), y_hi()), uniform(x_lo(), edge),
+                              uniform(y_lo(), y_hi()), uniform(x_lo(), edge), uniform(y_lo(), y_hi()));
+      case 1: return triangle(uniform(right, x_hi()), uniform(y_lo(), y_hi()), uniform(right, x_hi()),
+                              uniform(y_lo(), y_hi()), uniform(right, x_hi()), uniform(y_lo(), y_hi()));
+      case 2: return triangle(uniform(x_lo(), x_hi()), uniform(y_lo(), edge), uniform(x_lo(), x_hi()),
+                              uniform(y_lo(), edge), uniform(x_lo(), x_hi()), uniform(y_lo(), edge));
+      case 3: return triangle(uniform(x_lo(), x_hi()), uniform(bottom, y_hi()), uniform(x_lo(), x_hi()),
+                              uniform(bottom, y_hi()), uniform(x_lo(), x_hi()), uniform(bottom, y_hi()));
       default: {
         // A thin vertical strip strictly between the centres of columns i and i + 1 (S >= 2 leaves
         // room; at S = 1 the strip is a single subpixel column at the pixel boundary).

@@ -2,7 +2,8 @@
 // exactly once and nothing outside it, whatever the diagonals, the winding of each triangle and the
 // submission order. The meshes tile an axis-aligned rectangle [X0, X1) x [Y0, Y1) (subpixels), so
 // the expected coverage is known without any rasterizer: by the top-left rule a centre on the left
-// or top side is inside, one on the right or bottom side is not.
+// or top side is inside, one on the right or bottom side is not (and likewise for the other fill
+// rules and for samples at pixel corners, docs/arithmetic.md section 7).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -136,14 +137,21 @@ struct PixelCounter : FragmentSink {
   void on_fragment(const Fragment& f) override { ++count[size_t(f.y) * width + f.x]; }
 };
 
-class Watertight : public ::testing::TestWithParam<std::tuple<int, Traversal>> {};
+class Watertight : public ::testing::TestWithParam<std::tuple<int, Traversal, PixelCenter, FillRule>> {};
 
-TEST_P(Watertight, MeshesCoverEveryInsideCentreExactlyOnce) {
-  const auto [S, traversal] = GetParam();
-  const Profile p = test::make_profile(64, 48, S, traversal);
+// Every sample inside the mesh's boundary rectangle is covered once. A sample on the boundary is
+// inside when the rule owns that side: top_left the left and top sides, and so on (the rectangle's
+// left side is a left edge of the triangles along it, its top side a top edge).
+TEST_P(Watertight, MeshesCoverEveryInsideSampleExactlyOnce) {
+  const auto [S, traversal, center, rule] = GetParam();
+  Profile p = test::make_profile(64, 48, S, traversal);
+  p.pixel_center = center;
+  p.fill_rule = rule;
+  const bool owns_left = rule == FillRule::TopLeft || rule == FillRule::BottomLeft;
+  const bool owns_top = rule == FillRule::TopLeft || rule == FillRule::TopRight;
   const int64_t M = int64_t(1) << S;
   for (int mesh_index = 0; mesh_index < 400; ++mesh_index) {
-    const uint64_t seed = 77 * uint64_t(S) + uint64_t(mesh_index);
+    const uint64_t seed = 77 * uint64_t(S) + uint64_t(mesh_index) + 1000 * uint64_t(center) + 10000 * uint64_t(rule);
     MeshBuilder builder(p, seed);
     Mesh mesh = mesh_index % 2 ? builder.fan() : builder.grid();
     builder.shuffle_and_flip(mesh);
@@ -157,8 +165,10 @@ TEST_P(Watertight, MeshesCoverEveryInsideCentreExactlyOnce) {
     int inside = 0;
     for (int j = 0; j < p.height; ++j)
       for (int i = 0; i < p.width; ++i) {
-        const int64_t cx = i * M + M / 2, cy = j * M + M / 2;
-        const bool in = cx >= mesh.X0 && cx < mesh.X1 && cy >= mesh.Y0 && cy < mesh.Y1;
+        const int64_t cx = i * M + p.sample_offset(), cy = j * M + p.sample_offset();
+        const bool in_x = owns_left ? cx >= mesh.X0 && cx < mesh.X1 : cx > mesh.X0 && cx <= mesh.X1;
+        const bool in_y = owns_top ? cy >= mesh.Y0 && cy < mesh.Y1 : cy > mesh.Y0 && cy <= mesh.Y1;
+        const bool in = in_x && in_y;
         inside += in;
         ASSERT_EQ(counter.count[size_t(j) * p.width + i], in ? 1 : 0) << "pixel (" << i << ", " << j << ")";
       }
@@ -166,12 +176,16 @@ TEST_P(Watertight, MeshesCoverEveryInsideCentreExactlyOnce) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(SubpixelBitsAndTraversals, Watertight,
+INSTANTIATE_TEST_SUITE_P(SubpixelBitsTraversalsAndConventions, Watertight,
                          ::testing::Combine(::testing::Values(1, 4, 8),
-                                            ::testing::Values(Traversal::BBox, Traversal::Span)),
+                                            ::testing::Values(Traversal::BBox, Traversal::Span),
+                                            ::testing::Values(PixelCenter::Half, PixelCenter::Corner),
+                                            ::testing::Values(FillRule::TopLeft, FillRule::TopRight,
+                                                              FillRule::BottomLeft, FillRule::BottomRight)),
                          [](const auto& info) {
                            return "S" + std::to_string(std::get<0>(info.param)) + "_" +
-                                  to_string(std::get<1>(info.param));
+                                  to_string(std::get<1>(info.param)) + "_" + to_string(std::get<2>(info.param)) +
+                                  "_" + to_string(std::get<3>(info.param));
                          });
 
 }  // namespace

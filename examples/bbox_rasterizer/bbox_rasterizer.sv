@@ -18,7 +18,10 @@ module bbox_rasterizer #(
   // A design that keeps fewer fraction bits: the depth plane's start and steps lose their lowest
   // DEPTH_DROP_BITS bits (rounded down). Its depth then lies below the model's by at most
   // floor((W + H - 1) (2^DEPTH_DROP_BITS - 1) / 2^F) + 1 LSBs (docs/verification.md "Tolerances").
-  parameter integer DEPTH_DROP_BITS = 0
+  parameter integer DEPTH_DROP_BITS = 0,
+  // 1: a design that samples pixel (i, j) at its corner (i, j), not at its centre; the model must
+  // then be told so (profile pixel_center corner, docs/arithmetic.md section 7).
+  parameter integer PIXEL_CENTER_CORNER = 0
 ) (
   input  wire clk,
   input  wire rst,
@@ -50,6 +53,7 @@ module bbox_rasterizer #(
   localparam integer WORDS = WIDTH * HEIGHT;
   localparam integer M = 1 << SUBPIXEL_BITS;
   localparam integer HALF = 1 << (SUBPIXEL_BITS - 1);
+  localparam integer SAMPLE = PIXEL_CENTER_CORNER ? 0 : HALF;  // the sample point within a pixel
   // F: the plane registers' fraction bits, the smallest with 2^F >= 2 (W + H - 1), at least 1.
   function integer guard_bits(input integer w, input integer h);
     integer f;
@@ -103,11 +107,11 @@ module bbox_rasterizer #(
       if (oy[vk] < ymin) ymin = oy[vk];
       if (oy[vk] > ymax) ymax = oy[vk];
     end
-    // Columns xa..xb (rows ya..yb) have their centre i M + M/2 inside [min, max].
-    xa = (xmin - HALF + M - 1) >>> SUBPIXEL_BITS;
-    xb = (xmax - HALF) >>> SUBPIXEL_BITS;
-    ya = (ymin - HALF + M - 1) >>> SUBPIXEL_BITS;
-    yb = (ymax - HALF) >>> SUBPIXEL_BITS;
+    // Columns xa..xb (rows ya..yb) have their sample point i M + SAMPLE inside [min, max].
+    xa = (xmin - SAMPLE + M - 1) >>> SUBPIXEL_BITS;
+    xb = (xmax - SAMPLE) >>> SUBPIXEL_BITS;
+    ya = (ymin - SAMPLE + M - 1) >>> SUBPIXEL_BITS;
+    yb = (ymax - SAMPLE) >>> SUBPIXEL_BITS;
     if (area2 == 0) status = 3'd1;  // degenerate
     else if ((cfg_cull == 2'd1 && !front_facing) || (cfg_cull == 2'd2 && front_facing)) status = 3'd2;  // culled
     else if (xb < 0 || yb < 0 || xa > WIDTH - 1 || ya > HEIGHT - 1) status = 3'd3;  // offscreen
@@ -122,14 +126,14 @@ module bbox_rasterizer #(
   // Edge k from vertex k to vertex k + 1: E = dx (Py - Ya) - dy (Px - Xa) - bias, bias 0 on top
   // and left edges.
   reg signed [63:0] edge_dx [0:2], edge_dy [0:2], edge_bias [0:2];
-  reg signed [127:0] e0 [0:2];  // unbiased, at the first candidate's centre
+  reg signed [127:0] e0 [0:2];  // unbiased, at the first candidate's sample point
   always @* begin
     for (ek = 0; ek < 3; ek = ek + 1) begin
       edge_dx[ek] = ox[(ek + 1) % 3] - ox[ek];
       edge_dy[ek] = oy[(ek + 1) % 3] - oy[ek];
       edge_bias[ek] = ((edge_dy[ek] == 0 && edge_dx[ek] > 0) || edge_dy[ek] < 0) ? 64'sd0 : 64'sd1;
-      e0[ek] = 128'(edge_dx[ek]) * 128'((by0 << SUBPIXEL_BITS) + HALF - oy[ek]) -
-              128'(edge_dy[ek]) * 128'((bx0 << SUBPIXEL_BITS) + HALF - ox[ek]);
+      e0[ek] = 128'(edge_dx[ek]) * 128'((by0 << SUBPIXEL_BITS) + SAMPLE - oy[ek]) -
+              128'(edge_dy[ek]) * 128'((bx0 << SUBPIXEL_BITS) + SAMPLE - ox[ek]);
     end
   end
 
@@ -194,8 +198,8 @@ module bbox_rasterizer #(
   always @* begin
     covered = 1'b1;
     for (xk = 0; xk < 3; xk = xk + 1) begin
-      e_here = 128'(dx_q[xk]) * 128'((y_q << SUBPIXEL_BITS) + HALF - ay_q[xk]) -
-               128'(dy_q[xk]) * 128'((x_q << SUBPIXEL_BITS) + HALF - ax_q[xk]) - 128'(bias_q[xk]);
+      e_here = 128'(dx_q[xk]) * 128'((y_q << SUBPIXEL_BITS) + SAMPLE - ay_q[xk]) -
+               128'(dy_q[xk]) * 128'((x_q << SUBPIXEL_BITS) + SAMPLE - ax_q[xk]) - 128'(bias_q[xk]);
       if (e_here < 0) covered = 1'b0;
     end
     v_here = wrap(start_q[0] + 128'(x_q - wx0_q) * step_x_q[0] + 128'(y_q - wy0_q) * step_y_q[0], Z_REG_BITS);

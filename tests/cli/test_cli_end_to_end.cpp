@@ -377,6 +377,27 @@ TEST(CliRender, ProfileFileThenFlags) {
   EXPECT_GT(stats.at("triangles_culled").get<int64_t>(), 0);
 }
 
+// --conventions sets its keys before the flags; a flag naming one of them wins; an unknown name is
+// bad input naming the presets.
+TEST(CliRender, ConventionPresetsThenFlags) {
+  ScratchDir dir;
+  RunResult r = run_rastersim(dir, {"render", "--conventions", "d3d10", "--stats", "s.json", "--scene", "stress",
+                                    "--width", "32", "--height", "24"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  nlohmann::json stats = read_json(dir.path("s.json"));
+  EXPECT_EQ(stats.at("profile").at("subpixel_bits").get<int>(), 8);
+  EXPECT_EQ(stats.at("profile").at("pixel_center").get<std::string>(), "half");
+  r = run_rastersim(dir, {"render", "--conventions", "d3d9", "--fill-rule", "bottom_right", "--stats", "s.json",
+                          "--scene", "stress", "--width", "32", "--height", "24"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  stats = read_json(dir.path("s.json"));
+  EXPECT_EQ(stats.at("profile").at("pixel_center").get<std::string>(), "corner");
+  EXPECT_EQ(stats.at("profile").at("fill_rule").get<std::string>(), "bottom_right");
+  r = run_rastersim(dir, {"render", "--conventions", "opengl", "--scene", "stress"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(contains(r.err, "'opengl' is not a preset; the presets are rastersim, d3d9, d3d10")) << r.err;
+}
+
 TEST(CliRender, EmptyTriListRendersAClearFrame) {
   ScratchDir dir;
   dir.write("empty.tri", "# nothing here\n\n");
@@ -646,6 +667,27 @@ TEST(CliRtl, CosimEndsWithPassedLine) {
   const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
   EXPECT_TRUE(contains(last, " passed, 0 failed")) << r.out;
   EXPECT_FALSE(contains(last, "0 passed")) << r.out;
+}
+
+// rastersim's RTL has its own conventions only: another is refused before anything is built, and
+// the model runs it.
+TEST(CliRtl, OtherConventionsAreRefusedForRastersimsRtl) {
+  ScratchDir dir;
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"cosim", "--count", "1", "--width", "64", "--height", "48", "--pixel-center", "corner"},
+        std::vector<std::string>{"render", "--backend", "rtl", "--scene", "stress", "--width", "64", "--height", "48",
+                                 "--depth-rounding", "truncate"},
+        std::vector<std::string>{"vectors", "--random", "3", "--width", "64", "--height", "48", "--fill-rule",
+                                 "top_right", "--out", "pk"}}) {
+    const RunResult r = run_rastersim(dir, args);
+    EXPECT_EQ(r.exit_code, 2) << args[0] << ": " << r.out << r.err;
+    EXPECT_TRUE(contains(r.err, "rastersim's RTL has")) << args[0] << ": " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir.work() / "pk"));
+  EXPECT_FALSE(fs::exists(dir.root() / "cache"));
+  const RunResult model = run_rastersim(dir, {"render", "--scene", "stress", "--width", "64", "--height", "48",
+                                              "--pixel-center", "corner", "--depth-rounding", "truncate"});
+  EXPECT_EQ(model.exit_code, 0) << model.err;
 }
 
 // The testcase names of a JUnit file, in order.

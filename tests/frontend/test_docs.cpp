@@ -108,8 +108,8 @@ void check_projection_example(const std::string& name) {
   expect_near3({s.x, s.y, s.z}, vec(b, "screen"), 1e-9, "screen (front end)");
   expect_near3(independent_of(b).project(point), vec(b, "screen"), 1e-9, "screen (independent formula)");
   if (b.count("snapped_s4")) {
-    EXPECT_EQ(snap_coordinate(s.x, 4), int64_t(b.at("snapped_s4")[0]));
-    EXPECT_EQ(snap_coordinate(s.y, 4), int64_t(b.at("snapped_s4")[1]));
+    EXPECT_EQ(snap_coordinate(s.x, 4, VertexSnap::Nearest), int64_t(b.at("snapped_s4")[0]));
+    EXPECT_EQ(snap_coordinate(s.y, 4, VertexSnap::Nearest), int64_t(b.at("snapped_s4")[1]));
   }
   if (b.count("depth_z24")) {
     EXPECT_EQ(quantize_depth(s.z, 24), uint32_t(b.at("depth_z24")[0]));

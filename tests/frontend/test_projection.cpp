@@ -121,8 +121,8 @@ void check_kept_vertex(const ScreenVertex& v, const Vec3& expected, const Profil
   EXPECT_NEAR(v.y, expected.y, 1e-9) << what;
   EXPECT_NEAR(v.z, expected.z, 1e-9) << what;
   const double subpixel = std::ldexp(1.0, -p.subpixel_bits);
-  EXPECT_LE(std::fabs(snap_coordinate(v.x, p.subpixel_bits) * subpixel - expected.x), 0.5 * subpixel + 1e-9) << what;
-  EXPECT_LE(std::fabs(snap_coordinate(v.y, p.subpixel_bits) * subpixel - expected.y), 0.5 * subpixel + 1e-9) << what;
+  EXPECT_LE(std::fabs(snap_coordinate(v.x, p.subpixel_bits, VertexSnap::Nearest) * subpixel - expected.x), 0.5 * subpixel + 1e-9) << what;
+  EXPECT_LE(std::fabs(snap_coordinate(v.y, p.subpixel_bits, VertexSnap::Nearest) * subpixel - expected.y), 0.5 * subpixel + 1e-9) << what;
   EXPECT_LE(std::fabs(double(quantize_depth(v.z, p.z_bits)) - expected.z * double(p.depth_max())), 1.0) << what;
 }
 

@@ -29,8 +29,8 @@ struct Exact {
 Exact exact_coordinate(const ScreenTriangle& tri, int x, int y, int c, int subpixel_bits) {
   long double px[3], py[3];
   for (int k = 0; k < 3; ++k) {
-    px[k] = std::ldexp(static_cast<long double>(snap_coordinate(tri.v[k].x, subpixel_bits)), -subpixel_bits);
-    py[k] = std::ldexp(static_cast<long double>(snap_coordinate(tri.v[k].y, subpixel_bits)), -subpixel_bits);
+    px[k] = std::ldexp(static_cast<long double>(snap_coordinate(tri.v[k].x, subpixel_bits, VertexSnap::Nearest)), -subpixel_bits);
+    py[k] = std::ldexp(static_cast<long double>(snap_coordinate(tri.v[k].y, subpixel_bits, VertexSnap::Nearest)), -subpixel_bits);
   }
   auto edge = [&](int a, int b, long double qx, long double qy) {
     return (px[b] - px[a]) * (qy - py[a]) - (py[b] - py[a]) * (qx - px[a]);
