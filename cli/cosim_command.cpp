@@ -312,9 +312,6 @@ int run_cosim(const CosimOptions& o) {
   const std::string compare = !o.compare.empty() ? o.compare : with_dut ? "stream" : "cycle";
   const std::optional<verify::CompareMode> mode = verify::parse_compare_mode(compare);
   if (!mode) throw InputError("--compare '" + o.compare + "' is not cycle, stream, triangle or frame");
-  if (with_dut && *mode == verify::CompareMode::Cycle)
-    throw InputError("--compare cycle checks rastersim's own micro-architecture cycle for cycle: run cosim without "
-                     "--dut for that; a design of your own is checked with stream, triangle or frame");
   if (with_dut == o.top.empty()) throw InputError(with_dut ? "--dut needs --top NAME" : "--top and -G go with --dut");
   if (!with_dut && !o.generics.empty()) throw InputError("--top and -G go with --dut");
   verify::Tolerance tolerance;
@@ -357,6 +354,9 @@ int run_cosim(const CosimOptions& o) {
   if (o.fixed_settings)
     pinned.insert({"texture_latency", "texture_stall_percent", "texture_stall_seed", "depth_bias_constant",
                    "depth_bias_slope"});
+  // A design is told only the settings on the interface's cfg_* ports; the others are the model's
+  // micro-architecture, which cycle mode needs equal to the design's.
+  if (with_dut) pinned.insert({"traversal", "memory_latency", "setup_fifo_depth"});
   const int max_latency = with_dut ? kMaxMemoryLatency : rtl::built_max_memory_latency(profile);
   const rtl::CosimPlan plan(profile, pinned, max_latency, o.seed, o.triangles, o.directed);
   const std::vector<std::string>& varied = plan.varied();

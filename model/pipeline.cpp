@@ -72,6 +72,7 @@ void Pipeline::submit(const SnappedTriangle& tri) {
   stats_.setup.stall += accept - setup_free_;  // a triangle waits, the FIFO is full
   ++stats_.triangles;
   const int drawn_latency = s.textured ? timing_.textured_drawn_latency : timing_.drawn_latency;
+  record.setup_decided = accept + timing_.rejected_latency;
   record.setup_done = accept + (s.status == SetupStatus::Drawn ? drawn_latency : timing_.rejected_latency);
   setup_free_ = interval > 0 ? accept + interval : record.setup_done + 1;
   // Busy: cycles in which the unit holds a triangle, [accept, setup_done] of each, counted once.

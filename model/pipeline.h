@@ -27,6 +27,7 @@ struct Fragment {
   int64_t cycle;   // cycle the z-buffer took it from the walker (or the texture unit; docs/cycle-model.md)
   bool textured = false;  // its triangle is textured: uv holds the divided texture coordinate
   TextureCoordinate uv;   // s8.20 each (docs/arithmetic.md section 5)
+  int64_t tested = -1;    // cycle of its depth test and conditional write: its memory read + L
 };
 
 class FragmentSink {
@@ -40,6 +41,7 @@ struct TriangleRecord {
   int64_t index = 0;
   SetupStatus status = SetupStatus::Degenerate;
   int64_t setup_accept = 0;    // cycle the setup unit accepted the triangle
+  int64_t setup_decided = 0;   // cycle its status is decided (every triangle, drawn or not)
   int64_t setup_done = 0;      // drawn: the cycle its record is in the output register; rejected: its decision cycle
   int64_t walker_load = -1;    // cycle the walker took the record (handshake), -1 if not drawn
   int64_t walker_end = -1;     // walker's last cycle on this triangle
@@ -168,7 +170,9 @@ class Pipeline {
     const bool pass = zbuffer_.test_and_write(address, z, color);
     ++record.fragments;
     record.depth_pass += pass;
-    if (Trace) sink_->on_fragment(Fragment{record.index, x, y, z, color, pass, taken, textured, uv});
+    if (Trace)
+      sink_->on_fragment(
+          Fragment{record.index, x, y, z, color, pass, taken, textured, uv, zbuffer_.last_read() + profile_.memory_latency});
     return walker_taken;
   }
 

@@ -232,6 +232,7 @@ class TraceObserver {
     if (s.setup_decided && !undecided_.empty()) {
       TriangleRecord& r = out_.triangles[size_t(undecided_.front())];
       r.status = SetupStatus(s.setup_status);
+      r.setup_decided = cycle;
       switch (r.status) {
         case SetupStatus::Drawn: ++stats.triangles_drawn, in_setup_.push_back(r.index); break;
         case SetupStatus::Degenerate: ++stats.triangles_degenerate, r.setup_done = cycle; break;
@@ -276,6 +277,7 @@ class TraceObserver {
       Fragment& f = out_.fragments[in_flight_.front()];
       in_flight_.pop_front();
       f.pass = s.result_pass;
+      f.tested = cycle;
       if (f.tri >= 0) {
         TriangleRecord& r = out_.triangles[size_t(f.tri)];
         r.depth_pass += f.pass;

@@ -1,7 +1,9 @@
 // Comparing a design whose micro-architecture is not rastersim's against the model
 // (docs/verification.md "Compare modes"): the same frame's decisions, fragments and final buffers,
 // compared as strictly as the design's conventions allow.
-//   cycle     every event at the model's cycle (rtl::compare: rastersim's own micro-architecture)
+//   cycle     every event at the model's cycle: rastersim's own micro-architecture (rtl::compare of
+//             every record), or through the verification interface each decision, retirement and
+//             the frame's end at the model's cycle and the stream exactly
 //   stream    the same decisions and fragments in the same order, any timing
 //   triangle  triangles in order, each triangle's fragments as a set (any order within it)
 //   frame     the final colour and depth buffers only

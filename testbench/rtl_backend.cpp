@@ -227,6 +227,9 @@ Divergence compare(const RtlResult& model, const RtlResult& rtl) {
       return divergence(t, "triangle_setup", "setup_accept", to_string(m.setup_accept), to_string(r.setup_accept), m.setup_accept);
     if (m.status != r.status)
       return divergence(t, "triangle_setup", "status", to_string(m.status), to_string(r.status), m.setup_accept + 1);
+    if (m.setup_decided != r.setup_decided)
+      return divergence(t, "triangle_setup", "setup_decided", to_string(m.setup_decided), to_string(r.setup_decided),
+                        m.setup_decided);
     if (m.setup_done != r.setup_done)
       return divergence(t, "triangle_setup", "setup_done", to_string(m.setup_done), to_string(r.setup_done), m.setup_done);
     if (m.status == SetupStatus::Drawn && i < model.setups.size() && i < rtl.setups.size()) {
@@ -264,6 +267,8 @@ Divergence compare(const RtlResult& model, const RtlResult& rtl) {
                           rgb_text(b.color), a.cycle);
       if (a.pass != b.pass)
         return divergence(t, "zbuffer", at + " depth test pass", to_string(a.pass), to_string(b.pass), a.cycle);
+      if (a.tested != b.tested)
+        return divergence(t, "zbuffer", at + " depth test cycle", to_string(a.tested), to_string(b.tested), a.cycle);
     }
     if (m.walker_end != r.walker_end)
       return divergence(t, "scanline_walker", "walker_end", to_string(m.walker_end), to_string(r.walker_end), m.walker_end);

@@ -43,10 +43,14 @@ struct RtlResult {
   std::vector<uint32_t> depth, color;
   FrameStats stats;
   // Per triangle, the setup unit's output record as the walker took it (drawn triangles only;
-  // front_facing, area2 and the top-left flags are not part of the record and stay default).
+  // front_facing, area2 and the owns_samples flags are not part of the record and stay default).
   std::vector<SetupResult> setups;
   bool finished = true;  // false: the RTL did not finish within max_cycles
   std::string note;      // why it did not finish
+  // Only what the verification interface carries (a design behind cosim --dut): each triangle's
+  // index, status and setup_decided, each fragment's fields and `tested` (its retirement), the final
+  // buffers and stats.cycles (frame_done); cycles count from the first command handshake.
+  bool interface_only = false;
 };
 
 // The profiles verilated into this build and loaded from modules, as "name: WxH subpixel_bits .."

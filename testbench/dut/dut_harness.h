@@ -43,8 +43,9 @@ rtl::RtlResult run(const Profile& p, const std::vector<SnappedTriangle>& tris, c
   top->rst = 0;
 
   rtl::RtlResult out;
+  out.interface_only = true;
   size_t next = 0;
-  int64_t idle = 0, last_accept = -1;
+  int64_t idle = 0, last_accept = -1, first_accept = 0;
   for (int64_t cycle = 0;; ++cycle) {
     const bool offering = next < tris.size();
     top->cmd_valid = offering;
@@ -61,9 +62,7 @@ rtl::RtlResult run(const Profile& p, const std::vector<SnappedTriangle>& tris, c
     // This cycle's handshakes and retirements, before the rising edge.
     bool progress = false;
     if (offering && top->cmd_ready) {
-      TriangleRecord r;
-      r.index = int64_t(next);
-      r.setup_accept = cycle;
+      if (next == 0) first_accept = cycle;
       ++next;
       last_accept = cycle;
       progress = true;
@@ -73,7 +72,7 @@ rtl::RtlResult run(const Profile& p, const std::vector<SnappedTriangle>& tris, c
       TriangleRecord r;
       r.index = int64_t(uint32_t(top->dec_index));
       r.status = SetupStatus(top->dec_status);
-      r.setup_done = cycle;
+      r.setup_decided = cycle;
       out.triangles.push_back(r);
       progress = true;
     }
@@ -85,7 +84,8 @@ rtl::RtlResult run(const Profile& p, const std::vector<SnappedTriangle>& tris, c
       const uint32_t c = uint32_t(top->frag_rgb);
       f.color = Rgb{uint8_t(c >> 16), uint8_t(c >> 8), uint8_t(c)};
       f.pass = top->frag_pass;
-      f.cycle = cycle;
+      f.cycle = -1;  // the interface has no take; the retirement is the depth test's cycle
+      f.tested = cycle;
       out.fragments.push_back(f);
       ++(f.pass ? out.stats.depth_pass : out.stats.depth_fail);
       progress = true;
@@ -109,6 +109,11 @@ rtl::RtlResult run(const Profile& p, const std::vector<SnappedTriangle>& tris, c
     }
   }
   out.stats.fragments = out.stats.depth_pass + out.stats.depth_fail;
+  // Cycles from the first handshake, as docs/cycle-model.md numbers them (the design may spend
+  // cycles after reset before it takes a triangle: rastersim's core clears its buffers).
+  for (TriangleRecord& r : out.triangles) r.setup_decided -= first_accept;
+  for (Fragment& f : out.fragments) f.tested -= first_accept;
+  out.stats.cycles -= first_accept;
   // The final buffers, a word a cycle: rb_depth and rb_rgb hold the word of the address of the
   // cycle before.
   const size_t words = size_t(p.width) * size_t(p.height);

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # cosim --dut (docs/verification.md): rastersim's own core behind the verification interface
-# (testbench/dut/rastersim_dut.sv) passes stream, triangle and frame; the same core with its depth
+# (testbench/dut/rastersim_dut.sv) passes cycle, stream, triangle and frame, and cycle mode's report
+# and coverage equal cosim's without --dut; a latency other than the profile's fails cycle mode on a
+# retirement cycle; the same core with its depth
 # test `<` written `<=` fails frame mode at the default --count, and the printed replay command
 # fails alone; a design that never takes a triangle is a clear stall error naming cmd_ready; bad
 # file lists are bad input (exit 2) naming the file and line.
@@ -15,10 +17,14 @@ export RASTERSIM_CACHE_DIR="$work/cache"
 fail() { echo "dut_path_test: $*" >&2; exit 1; }
 flags=(--width 64 --height 48)
 
-for mode in stream triangle frame; do
-  "$exe" cosim --dut "$src/testbench/dut/rastersim_dut.f" --top rastersim_dut -G TRAVERSAL_SPAN=0 -G MEMORY_LATENCY=5 \
-    "${flags[@]}" --count 20 --compare "$mode" --coverage "own-$mode.json" > "own-$mode.txt" 2> "own-$mode.err" || fail "rastersim's core failed --compare $mode: $(grep -E '^frame|passed' "own-$mode.txt" | head -3)"
-  grep -q "^51 passed, 0 failed$" "own-$mode.txt" || fail "--compare $mode: $(tail -1 "own-$mode.txt")"
+# The design's micro-architecture as parameters, the model's as the profile's keys (with --dut they
+# are not varied between frames).
+own=(--dut "$src/testbench/dut/rastersim_dut.f" --top rastersim_dut -G TRAVERSAL_SPAN=0 -G MEMORY_LATENCY=5
+     --traversal bbox --memory-latency 5)
+for mode in cycle stream triangle frame; do
+  "$exe" cosim "${own[@]}" "${flags[@]}" --count 20 --compare "$mode" --coverage "own-$mode.json" > "own-$mode.txt" 2> "own-$mode.err" || fail "rastersim's core failed --compare $mode: $(grep -E '^frame|passed' "own-$mode.txt" | head -3)"
+  grep -q "^47 passed, 0 failed$" "own-$mode.txt" || fail "--compare $mode: $(tail -1 "own-$mode.txt")"
+  [ "$mode" = cycle ] && continue
   grep -q "^compare $mode: depth error (design - model) [0-9]* samples, error 0\.\.0: 0 x" "own-$mode.txt" || fail "no error distribution for $mode"
   # The same histogram in the JSON: every difference 0.
   python3 - "own-$mode.json" "$mode" <<'PY' || fail "no histogram in the coverage JSON for $mode"
@@ -28,6 +34,20 @@ assert compare["mode"] == sys.argv[2] and list(compare["depth_error"]) == ["0"] 
 assert list(compare["color_error"]) == ["0"], compare
 PY
 done
+
+# Cycle mode through the interface reports what cosim reports of rastersim_top: the same frames,
+# table, summary and coverage JSON.
+"$exe" cosim "${flags[@]}" --traversal bbox --memory-latency 5 --setup-fifo-depth 8 --count 20 --coverage top.json > top.txt 2> top.err ||
+  fail "cosim of rastersim_top failed: $(tail -1 top.txt)"
+cmp -s top.txt own-cycle.txt || fail "cycle mode's report differs from cosim's: $(diff top.txt own-cycle.txt | head -5)"
+cmp -s top.json own-cycle.json || fail "cycle mode's coverage JSON differs from cosim's"
+# A design whose memory latency is not the profile's: the first retirement a cycle early.
+status=0
+"$exe" cosim --dut "$src/testbench/dut/rastersim_dut.f" --top rastersim_dut -G TRAVERSAL_SPAN=0 -G MEMORY_LATENCY=4 \
+  --traversal bbox --memory-latency 5 "${flags[@]}" --count 2 --compare cycle > latency.txt 2>&1 || status=$?
+[ "$status" -eq 1 ] || fail "a latency of 4 against the profile's 5 passed cycle mode (exit $status)"
+grep -m1 '^frame ' latency.txt | grep -q "retirement cycle: expected cycle [0-9]*, the design gave cycle" ||
+  fail "the early retirement is not named: $(grep -m1 '^frame ' latency.txt)"
 
 # The depth test's < written <=.
 mkdir -p bug/rtl bug/testbench/dut
@@ -73,10 +93,7 @@ status=0
 "$exe" cosim --dut bad.f "${flags[@]}" > notop.txt 2>&1 || status=$?
 [ "$status" -eq 2 ] && grep -q "needs --top" notop.txt || fail "--dut without --top: exit $status"
 status=0
-"$exe" cosim --dut stuck --top rastersim_dut_template --compare cycle "${flags[@]}" > cycle.txt 2>&1 || status=$?
-[ "$status" -eq 2 ] || fail "--dut with --compare cycle: exit $status, not 2"
-status=0
 "$exe" cosim --dut stuck --top rastersim_dut_template --wave w.fst "${flags[@]}" > wave.txt 2>&1 || status=$?
 [ "$status" -eq 2 ] && grep -q -- "--replay-dir" wave.txt || fail "--dut with --wave: exit $status: $(cat wave.txt)"
 [ ! -e w.fst ] || fail "--wave with --dut wrote w.fst"
-echo "dut_path_test: rastersim's core passes stream, triangle and frame; the <= depth test, the stall and bad input are caught"
+echo "dut_path_test: rastersim's core passes cycle, stream, triangle and frame; the latency, the <= depth test, the stall and bad input are caught"

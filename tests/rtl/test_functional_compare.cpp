@@ -65,6 +65,53 @@ TEST(FunctionalCompare, OtherTimingPassesAllButCycle) {
     EXPECT_TRUE(compare(f.profile, f.model, design, mode).passed()) << to_string(mode);
 }
 
+// What the verification interface reports of the model's own frame: decisions with their cycles,
+// retirements, frame_done; no take cycles, no walker records.
+RtlResult as_interface_reports(const RtlResult& model) {
+  RtlResult d;
+  d.interface_only = true;
+  for (const TriangleRecord& m : model.triangles) {
+    TriangleRecord r;
+    r.index = m.index, r.status = m.status, r.setup_decided = m.setup_decided;
+    d.triangles.push_back(r);
+  }
+  d.fragments = model.fragments;
+  for (Fragment& fr : d.fragments) fr.cycle = -1;
+  d.depth = model.depth, d.color = model.color;
+  d.stats.cycles = model.stats.cycles;
+  return d;
+}
+
+// Cycle mode through the interface: the same events at the same cycles pass; one decision, one
+// retirement or the frame's end a cycle off is named.
+TEST(FunctionalCompare, CycleModeThroughTheInterfaceComparesEachEventsCycle) {
+  const Frame f = random_frame(6);
+  ASSERT_GT(f.model.fragments.size(), 10u);
+  const RtlResult same = as_interface_reports(f.model);
+  EXPECT_TRUE(compare(f.profile, f.model, same, CompareMode::Cycle).passed())
+      << compare(f.profile, f.model, same, CompareMode::Cycle).summary();
+  RtlResult late_decision = same;
+  ++late_decision.triangles[3].setup_decided;
+  FunctionalReport r = compare(f.profile, f.model, late_decision, CompareMode::Cycle);
+  ASSERT_FALSE(r.passed());
+  EXPECT_EQ(r.mismatches.front().field, "decision cycle");
+  EXPECT_EQ(r.mismatches.front().triangle, 3);
+  RtlResult early_retirement = same;
+  --early_retirement.fragments[7].tested;
+  r = compare(f.profile, f.model, early_retirement, CompareMode::Cycle);
+  ASSERT_FALSE(r.passed());
+  EXPECT_EQ(r.mismatches.front().field, "retirement cycle");
+  EXPECT_EQ(r.mismatches.front().x, f.model.fragments[7].x);
+  RtlResult late_end = same;
+  ++late_end.stats.cycles;
+  r = compare(f.profile, f.model, late_end, CompareMode::Cycle);
+  ASSERT_FALSE(r.passed());
+  EXPECT_EQ(r.mismatches.front().field, "frame_done cycle");
+  RtlResult other_colour = same;
+  other_colour.fragments[2].color.r ^= 1;
+  EXPECT_FALSE(compare(f.profile, f.model, other_colour, CompareMode::Cycle).passed());
+}
+
 TEST(FunctionalCompare, AnotherOrderWithinATrianglePassesTriangleAndFrameOnly) {
   const Frame f = random_frame(5);
   RtlResult design = f.model;
