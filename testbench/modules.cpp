@@ -23,9 +23,22 @@ namespace fs = std::filesystem;
 namespace rastersim::modules {
 namespace {
 
-// The sources a module is built from (testbench/ondemand/CMakeLists.txt reads them from here).
-const char* const kSourceDir = RASTERSIM_SOURCE_DIR;
+// The sources a module is built from (testbench/ondemand/CMakeLists.txt reads them from there): an
+// installed rastersim's copy, PREFIX/share/rastersim/source beside PREFIX/bin of the running
+// program, so that an installed tree stands alone; otherwise the source tree it was built from.
 const char* const kSourceFolders[] = {"rtl", "model", "testbench", "cmake"};
+const fs::path& source_dir() {
+  static const fs::path dir = [] {
+    std::error_code error;
+    const fs::path program = fs::read_symlink("/proc/self/exe", error);
+    if (!error) {
+      const fs::path installed = program.parent_path().parent_path() / RASTERSIM_INSTALLED_SOURCE;
+      if (fs::is_directory(installed / "testbench" / "ondemand")) return installed;
+    }
+    return fs::path(RASTERSIM_SOURCE_DIR);
+  }();
+  return dir;
+}
 
 // FNV-1a, 64 bits: a digest for cache keys, not a defence against a malicious cache.
 struct Digest {
@@ -46,10 +59,11 @@ struct Digest {
 std::string sources_digest() {
   std::vector<fs::path> files;
   for (const char* folder : kSourceFolders) {
-    const fs::path root = fs::path(kSourceDir) / folder;
+    const fs::path root = source_dir() / folder;
     if (!fs::is_directory(root))
       throw std::runtime_error("cannot build a module: the source folder " + root.string() +
-                               " this rastersim was built from is gone");
+                               " this rastersim was built from is gone (an installed rastersim keeps a copy in "
+                               "share/rastersim/source)");
     for (const fs::directory_entry& e : fs::recursive_directory_iterator(root))
       if (e.is_regular_file()) files.push_back(e.path());
   }
@@ -58,7 +72,7 @@ std::string sources_digest() {
   for (const fs::path& f : files) {
     std::ifstream in(f, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    d.add(fs::relative(f, kSourceDir).string());
+    d.add(fs::relative(f, source_dir()).string());
     d.add(bytes);
   }
   return d.hex();
@@ -231,7 +245,7 @@ std::string module_library(Kind kind, const Profile& profile, const Progress& pr
   std::string name = kind == Kind::Rtl ? "rtl" : "systemc";
   for (const CoreParameter& c : parameters) name += "-" + std::to_string(c.value);
   name += "-" + key.hex();
-  return cached_build(name, describe(kind, parameters), config, fs::path(kSourceDir) / "testbench/ondemand",
+  return cached_build(name, describe(kind, parameters), config, source_dir() / "testbench/ondemand",
                       {std::string("-DRASTERSIM_MODULE_KIND=") + (kind == Kind::Rtl ? "rtl" : "systemc"),
                        "-DRASTERSIM_MODULE_CONFIG=" + config},
                       kind == Kind::Rtl ? "librastersim_module.so" : "librastersim_systemc.so", progress);
@@ -260,7 +274,7 @@ std::string dut_library(const DutDesign& design, const Progress& progress) {
   std::string params;
   for (const std::string& p : design.parameters) params += " " + p;
   return cached_build("dut-" + design.top + "-" + key.hex(), "the design " + design.top + params,
-                      "dut:" + design.top + params, fs::path(kSourceDir) / "testbench/dut",
+                      "dut:" + design.top + params, source_dir() / "testbench/dut",
                       {"-DRASTERSIM_DUT_TOP=" + design.top, "-DRASTERSIM_DUT_FILES=" + joined(design.files),
                        "-DRASTERSIM_DUT_INCLUDES=" + joined(design.include_dirs),
                        "-DRASTERSIM_DUT_PARAMETERS=" + joined(design.parameters)},
