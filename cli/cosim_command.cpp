@@ -27,6 +27,7 @@
 #include "testbench/dut_backend.h"
 #include "testbench/functional_compare.h"
 #include "testbench/rtl_backend.h"
+#include "testbench/waveform.h"
 #endif
 
 namespace rastersim {
@@ -268,25 +269,37 @@ DesignFrame design_frame(const dut::Design& design, const rtl::CosimCase& c, con
                          verify::CompareMode mode, const verify::Tolerance& tolerance, const std::string& replay) {
   DesignFrame d;
   d.model = rtl::run_model(c.profile, c.triangles, c.texture);
+  int64_t at = -1;  // the mismatch's cycle in the design, -1 for a stall
   try {
     const rtl::RtlResult result = design.run(c.profile, c.triangles);
     d.report = verify::compare(c.profile, d.model, result, mode, tolerance);
     d.passed = d.report.passed();
     d.message = d.passed ? "" : d.report.summary();
+    if (!d.passed) at = verify::design_cycle(d.report.mismatches.front(), result);
   } catch (const std::runtime_error& e) {
     d.message = e.what();
   }
   if (d.passed) return d;
+  constexpr int64_t kAround = 32;
+  if (!prefix.empty() && at >= 0) d.message += "; the design's cycle " + std::to_string(at) + ", marked in " + prefix + ".gtkw";
   d.message += "; replay: " + replay;
   if (!prefix.empty()) {
+    // The frame again: a window of the cycles around the mismatch, the marker at it (a stall's
+    // waveform holds the whole frame up to it).
     dut::DutRunOptions wave;
     wave.wave_path = prefix + ".fst";
+    wave.wave_window = at >= 0;
+    wave.wave_from = at - kAround, wave.wave_to = at + kAround;
+    rtl::RtlResult again;
     try {
-      design.run(c.profile, c.triangles, wave);
+      again = design.run(c.profile, c.triangles, wave);
     } catch (const std::runtime_error&) {
-      // The stall is reported above; the waveform holds the frame up to it.
     }
     d.message += "; waveform: " + wave.wave_path;
+    if (at >= 0) {
+      const int64_t edge = 2 * (again.first_handshake + at) + 9;  // the rising edge of the mismatch's cycle
+      rtl::write_design_gtkwave_save(wave.wave_path, prefix + ".gtkw", edge - 2 * kAround - 1, edge);
+    }
   }
   return d;
 }

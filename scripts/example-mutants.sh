@@ -2,8 +2,9 @@
 # The example design that is not rastersim's (examples/bbox_rasterizer, docs/verification.md):
 # passes `cosim --dut ... --compare triangle`, and each of five bugs injected into a copy of it is
 # caught by the same command with a first mismatch, a replay command that fails alone and a
-# waveform of the frame; with fewer depth fraction bits it passes only within its tolerance, and
-# sampling at pixel corners only with the matching profile.
+# waveform window around the mismatch with a GTKWave save file marking it; with fewer depth
+# fraction bits it passes only within its tolerance, and sampling at pixel corners only with the
+# matching profile.
 # Usage: example-mutants.sh RASTERSIM [COUNT]   (COUNT random frames, default 100)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -51,6 +52,11 @@ PY
   replay="${replay%%; waveform: *}"
   wave="${line##*; waveform: }"
   [ -s "$wave" ] || fail "mutant $name: no waveform at $wave"
+  # The GTKWave save file opens the window with the primary marker at the mismatch's cycle.
+  save="${wave%.fst}.gtkw"
+  grep -q '^\[timestart\] [0-9]' "$save" && grep -q '^\*-[0-9.]* [0-9][0-9]* ' "$save" ||
+    fail "mutant $name: no GTKWave save file with a marker at $save"
+  case "$line" in *"; the design's cycle "*", marked in $save; replay: "*) ;; *) fail "mutant $name: the cycle is not named: $line" ;; esac
   status=0
   eval "\"$exe\" ${replay#rastersim }" > "$name.replay.txt" 2>&1 || status=$?
   [ "$status" -eq 1 ] || fail "mutant $name: its replay exited $status: $replay"

@@ -213,6 +213,16 @@ void compare_buffers(const Profile& profile, const rtl::RtlResult& model, const 
 
 const char* to_string(CompareMode mode) { return kModeNames[int(mode)]; }
 
+int64_t design_cycle(const Mismatch& m, const rtl::RtlResult& design) {
+  if (m.triangle >= 0 && m.x >= 0)
+    for (const Fragment& f : design.fragments)
+      if (f.tri == m.triangle && f.x == m.x && f.y == m.y) return f.tested;
+  if (m.triangle >= 0)
+    for (const TriangleRecord& r : design.triangles)
+      if (r.index == m.triangle) return r.setup_decided;
+  return std::max<int64_t>(0, design.stats.cycles);
+}
+
 std::optional<CompareMode> parse_compare_mode(const std::string& text) {
   for (int i = 0; i < 4; ++i)
     if (text == kModeNames[i]) return CompareMode(i);

@@ -64,6 +64,11 @@ struct FunctionalReport {
   std::string summary() const;
 };
 
+// The design's cycle (from the first handshake) nearest a mismatch, for a waveform window: the
+// retirement of the design's fragment at its pixel, else its decision of the triangle, else the
+// design's last cycle.
+int64_t design_cycle(const Mismatch& mismatch, const rtl::RtlResult& design);
+
 // `model` is run_model's result for the frame, `design` what the design reported for it (its
 // fragments in retire order with their triangle index, its decisions as triangle records with the
 // index and status, its final buffers when read back: empty vectors are not compared). In cycle mode

@@ -51,6 +51,10 @@ struct RtlResult {
   // index, status and setup_decided, each fragment's fields and `tested` (its retirement), the final
   // buffers and stats.cycles (frame_done); cycles count from the first command handshake.
   bool interface_only = false;
+  // Of such a design: the harness cycle of the first handshake (cycles after reset). A waveform's time
+  // of cycle c (from the first handshake) is 2 (first_handshake + c) + 8 at its clock's low half and
+  // one more at its rising edge (4 reset cycles come first, two time steps a cycle).
+  int64_t first_handshake = 0;
 };
 
 // The profiles verilated into this build and loaded from modules, as "name: WxH subpixel_bits .."

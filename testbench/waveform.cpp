@@ -2,6 +2,7 @@
 
 #include <gtkwave/fstapi.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -43,6 +44,33 @@ void fst_to_vcd(const std::string& fst_path, const std::string& vcd_path) {
   fstReaderSetFacProcessMaskAll(reader.ctx);
   fstReaderIterBlocks(reader.ctx, nullptr, nullptr, out.get());
   if (std::fflush(out.get()) != 0 || std::ferror(out.get())) throw std::runtime_error("cannot write the waveform " + vcd_path);
+}
+
+void write_design_gtkwave_save(const std::string& fst_path, const std::string& save_path, int64_t time_start,
+                               int64_t marker) {
+  FstReader reader(fst_path);
+  // The outermost scope holds the top module's ports (Verilator's TOP).
+  int depth = 0;
+  std::string top;
+  std::vector<std::string> ports;
+  while (const fstHier* h = fstReaderIterateHier(reader.ctx)) {
+    if (h->htyp == FST_HT_SCOPE && ++depth == 1) top.assign(h->u.scope.name, h->u.scope.name_length);
+    else if (h->htyp == FST_HT_UPSCOPE) --depth;
+    else if (h->htyp == FST_HT_VAR && depth == 1)
+      ports.push_back(top + "." + gtkwave_name(std::string(h->u.var.name, h->u.var.name_length), h->u.var.length));
+  }
+  std::ofstream out(save_path, std::ios::binary);
+  out << "[*] rastersim: a design behind the verification interface, the mismatch at the marker "
+         "(docs/verification.md)\n"
+      << "[dumpfile] \"" << std::filesystem::absolute(fst_path).string() << "\"\n"
+      << "[timestart] " << std::max<int64_t>(0, time_start) << "\n"
+      << "[size] 1400 900\n"
+      << "*-6.000000 " << marker;
+  for (int i = 0; i < 26; ++i) out << " -1";  // the named markers, unset
+  out << "\n@800200\n-interface\n";
+  for (const std::string& p : ports) out << (p.back() == ']' ? "@24\n" : "@28\n") << p << "\n";
+  out << "@1000200\n-interface\n";
+  if (!out.flush()) throw std::runtime_error("cannot write " + save_path);
 }
 
 void write_gtkwave_save(const std::string& fst_path, const std::string& dumpfile, const std::string& save_path) {

@@ -29,10 +29,11 @@ rtl::RtlResult run(const Profile& p, const std::vector<SnappedTriangle>& tris, c
     fst->open(options.wave_path.c_str());
   }
   uint64_t time = 0;
+  bool dumping = !options.wave_window;  // a window starts at its first cycle after the first handshake
   auto half_cycle = [&](int clk) {
     top->clk = clk;
     top->eval();
-    if (fst) fst->dump(time);
+    if (fst && dumping) fst->dump(time);
     ++time;
   };
   drive_frame_config(*top, p);
@@ -47,6 +48,12 @@ rtl::RtlResult run(const Profile& p, const std::vector<SnappedTriangle>& tris, c
   size_t next = 0;
   int64_t idle = 0, last_accept = -1, first_accept = 0;
   for (int64_t cycle = 0;; ++cycle) {
+    if (options.wave_window) {
+      // Cycles from the first handshake; before it every cycle counts as -1 (in a window from a
+      // negative cycle), and the cycle whose ready (as the last edge left it) takes triangle 0 as 0.
+      const int64_t relative = next > 0 ? cycle - first_accept : (top->cmd_ready ? 0 : -1);
+      dumping = relative >= options.wave_from && relative <= options.wave_to;
+    }
     const bool offering = next < tris.size();
     top->cmd_valid = offering;
     if (offering) {
@@ -111,6 +118,7 @@ rtl::RtlResult run(const Profile& p, const std::vector<SnappedTriangle>& tris, c
   out.stats.fragments = out.stats.depth_pass + out.stats.depth_fail;
   // Cycles from the first handshake, as docs/cycle-model.md numbers them (the design may spend
   // cycles after reset before it takes a triangle: rastersim's core clears its buffers).
+  out.first_handshake = first_accept;
   for (TriangleRecord& r : out.triangles) r.setup_decided -= first_accept;
   for (Fragment& f : out.fragments) f.tested -= first_accept;
   out.stats.cycles -= first_accept;
@@ -120,6 +128,7 @@ rtl::RtlResult run(const Profile& p, const std::vector<SnappedTriangle>& tris, c
   out.depth.resize(words);
   out.color.resize(words);
   top->cmd_valid = 0;
+  dumping = !options.wave_window;
   for (size_t a = 0; a < words; ++a) {
     top->rb_addr = uint32_t(a);
     half_cycle(0), half_cycle(1);

@@ -16,7 +16,10 @@ namespace rastersim::dut {
 struct DutRunOptions {
   // Cycles with no handshake, decision or retired fragment before the design is called stalled.
   int64_t max_idle_cycles = 200000;
-  std::string wave_path;  // an FST of the whole frame when not empty
+  std::string wave_path;  // an FST of the frame when not empty
+  // With wave_window, the FST holds only the cycles wave_from..wave_to (from the first handshake).
+  bool wave_window = false;
+  int64_t wave_from = 0, wave_to = 0;
 };
 
 // The library's entry point (extern "C", RASTERSIM_DUT_RUN_SYMBOL): runs one frame into `out`;
