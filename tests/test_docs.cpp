@@ -205,7 +205,7 @@ TEST(Docs, ConventionsExample) {
         made += std::string(made.empty() ? "" : " ") + rule + " " + std::to_string(snap_coordinate(x, 4, p.vertex_snap));
       }
       EXPECT_EQ(made, value);
-    } else if (what == "round") {
+    } else if (what == "output") {
       int guard = 0;
       int64_t value_register = 0;
       words >> guard >> value_register;
