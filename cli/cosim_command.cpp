@@ -27,6 +27,7 @@
 #include "testbench/dut_backend.h"
 #include "testbench/functional_compare.h"
 #include "testbench/rtl_backend.h"
+#include "testbench/unit_compare.h"
 #include "testbench/waveform.h"
 #endif
 
@@ -186,6 +187,14 @@ CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
                   "file list or a folder of .sv/.v files, verilated on demand into the module cache "
                   "(docs/verification.md)")
       ->type_name("LIST|DIR");
+  cmd->add_option("--unit", o.unit,
+                  "with --dut: the design is one unit behind that unit's interface, checked against the model's "
+                  "twin: setup (triangles in, decisions and setup records out), walker (setup records in, fragments "
+                  "out) or zbuffer (fragments in, depth-test results and the final buffers out); docs/verification.md")
+      ->check([](const std::string& v) {
+        return v.empty() ? std::string("an empty name is not setup, walker or zbuffer") : std::string();
+      })
+      ->type_name("UNIT");
   cmd->add_option("--top", o.top, "with --dut: the design's top module")->type_name("NAME");
   cmd->add_option("-G", o.generics,
                   "with --dut: a parameter of the top, NAME=value (repeatable; WIDTH, HEIGHT, SUBPIXEL_BITS and "
@@ -304,6 +313,36 @@ DesignFrame design_frame(const dut::Design& design, const rtl::CosimCase& c, con
   return d;
 }
 
+// One frame of a unit: the model's run, the unit's inputs from it, the unit's run, their comparison.
+DesignFrame unit_design_frame(const dut::Design& design, dut::Unit unit, const rtl::CosimCase& c, uint64_t seed,
+                              const std::string& prefix, verify::CompareMode mode, const verify::Tolerance& tolerance,
+                              const std::string& replay) {
+  DesignFrame d;
+  d.model = rtl::run_model(c.profile, c.triangles, c.texture);
+  const dut::UnitFrame frame = verify::unit_frame(unit, c.profile, c.triangles, d.model, seed);
+  try {
+    const dut::UnitResult result = design.run_unit(frame);
+    d.report = verify::compare_unit(frame, d.model, result, mode, tolerance);
+    d.passed = d.report.passed();
+    d.message = d.passed ? "" : d.report.summary();
+  } catch (const std::runtime_error& e) {
+    d.message = e.what();
+  }
+  if (d.passed) return d;
+  d.message += "; replay: " + replay;
+  if (!prefix.empty()) {
+    dut::DutRunOptions wave;
+    wave.wave_path = prefix + ".fst";
+    try {
+      design.run_unit(frame, wave);
+    } catch (const std::runtime_error&) {
+      // The stall is reported above; the waveform holds the frame up to it.
+    }
+    d.message += "; waveform: " + wave.wave_path;
+  }
+  return d;
+}
+
 }  // namespace
 #endif
 
@@ -326,6 +365,15 @@ int run_cosim(const CosimOptions& o) {
   const std::optional<verify::CompareMode> mode = verify::parse_compare_mode(compare);
   if (!mode) throw InputError("--compare '" + o.compare + "' is not cycle, stream, triangle or frame");
   if (with_dut == o.top.empty()) throw InputError(with_dut ? "--dut needs --top NAME" : "--top and -G go with --dut");
+  std::optional<dut::Unit> unit;
+  if (!o.unit.empty()) {
+    if (!with_dut) throw InputError("--unit checks a unit of your own: it goes with --dut LIST|DIR --top NAME");
+    unit = dut::parse_unit(o.unit);
+    if (!unit) throw InputError("--unit '" + o.unit + "' is not setup, walker or zbuffer");
+    if (const std::string error = verify::unit_mode_error(*unit, *mode); !error.empty()) throw InputError(error);
+    if (*unit != dut::Unit::Walker && !o.tolerance.empty())
+      throw InputError("--tolerance applies to the walker's fragments; --unit " + o.unit + " compares every bit");
+  }
   if (!with_dut && !o.generics.empty()) throw InputError("--top and -G go with --dut");
   verify::Tolerance tolerance;
   if (const std::string error = verify::parse_tolerance(o.tolerance, tolerance); !error.empty()) throw InputError(error);
@@ -349,8 +397,9 @@ int run_cosim(const CosimOptions& o) {
   if (with_dut) {
     if (const std::string problem = dut::interface_error(profile); !problem.empty()) throw InputError(problem);
     modules::DutDesign files = dut::read_design(o.dut, o.top);
-    files.parameters = dut::design_parameters(profile, o.generics);
-    design = std::make_unique<dut::Design>(design_library(files));
+    files.parameters = unit ? dut::unit_parameters(*unit, profile, o.generics) : dut::design_parameters(profile, o.generics);
+    files.unit = unit ? dut::to_string(*unit) : "";
+    design = std::make_unique<dut::Design>(design_library(files), unit);
   } else {
     ensure_rtl_configuration(profile);  // verilated on demand when the build lacks it
     const std::string problem = rtl::configuration_error(profile);
@@ -426,7 +475,8 @@ int run_cosim(const CosimOptions& o) {
                  ? word
                  : "'" + replace_all(word, "'", "'\\''") + "'";
     };
-    replay_command = "rastersim cosim --dut " + quoted(std::filesystem::absolute(o.dut).string()) + " --top " + o.top;
+    replay_command = "rastersim cosim " + (unit ? "--unit " + o.unit + " " : std::string()) + "--dut " +
+                     quoted(std::filesystem::absolute(o.dut).string()) + " --top " + o.top;
     for (const std::string& g : o.generics) replay_command += " -G " + quoted(g);
     replay_command += " --compare " + compare;
     if (!o.tolerance.empty()) replay_command += " --tolerance " + quoted(o.tolerance);
@@ -452,8 +502,10 @@ int run_cosim(const CosimOptions& o) {
     const auto start = std::chrono::steady_clock::now();
     Outcome out;
     if (design) {
-      DesignFrame d = design_frame(*design, c, with_outputs ? prefix : "", *mode, tolerance,
-                                   replay_command + " --frame " + std::to_string(k));
+      const std::string replay = replay_command + " --frame " + std::to_string(k);
+      DesignFrame d = unit ? unit_design_frame(*design, *unit, c, options.seed, with_outputs ? prefix : "", *mode,
+                                               tolerance, replay)
+                           : design_frame(*design, c, with_outputs ? prefix : "", *mode, tolerance, replay);
       out.k = k;
       out.name = c.name;
       out.triangles = c.triangles.size();
@@ -593,7 +645,7 @@ int run_cosim(const CosimOptions& o) {
     info << (gated ? "" : o.frame >= 0 ? " (one frame: not gated)" : shard.count > 1 ? " (a shard: not gated)" : " (--no-coverage-gate)") << "\n";
   }
   if (*mode != verify::CompareMode::Cycle)
-    info << "compare " << o.compare << ": depth error (design - model) " << depth_error.summary()
+    info << "compare " << compare << ": depth error (design - model) " << depth_error.summary()
          << "; colour error per channel " << color_error.summary() << "\n";
   info << passed << " passed, " << failed << " failed\n";
   return failed == 0 && (holes.empty() || !gated) ? 0 : 1;

@@ -36,6 +36,7 @@ struct CosimOptions {
   std::string dut;                // a user's design behind the verification interface: file list or folder
   std::string top;                // its top module
   std::vector<std::string> generics;  // -G NAME=value for it
+  std::string unit;               // setup, walker or zbuffer: --dut is that unit alone (its unit-level interface)
   std::string tolerance;          // depth=N,color=M in LSBs of the model's words (functional modes)
   ProfileOptions profile;
 };

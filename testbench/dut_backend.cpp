@@ -9,6 +9,8 @@
 #include <stdexcept>
 
 #include "model/input_error.h"
+#include "model/widths.h"
+#include "testbench/setup_record.h"
 
 namespace fs = std::filesystem;
 
@@ -95,6 +97,20 @@ std::vector<std::string> design_parameters(const Profile& p, const std::vector<s
   return list;
 }
 
+std::vector<std::string> unit_parameters(Unit unit, const Profile& p, const std::vector<std::string>& options) {
+  const Widths w = derive_widths(p);
+  std::vector<std::string> given = {"FRACTION_BITS=" + std::to_string(w.guard_bits)};
+  if (unit == Unit::Walker) given.push_back("AUX_BITS=" + std::to_string(rtl::RecordLayout(w, true).bits()));
+  given.insert(given.end(), options.begin(), options.end());
+  return design_parameters(p, given);
+}
+
+std::optional<Unit> parse_unit(const std::string& text) {
+  for (Unit u : {Unit::Setup, Unit::Walker, Unit::Zbuffer})
+    if (text == to_string(u)) return u;
+  return std::nullopt;
+}
+
 std::string interface_error(const Profile& p) {
   if (p.texture_unit) return "texture_unit: the verification interface carries no texture coordinates";
   if (p.depth_exponent_bits >= 2) return "depth_exponent_bits: the verification interface carries the fixed-point depth word";
@@ -102,12 +118,19 @@ std::string interface_error(const Profile& p) {
   return "";
 }
 
-Design::Design(const std::string& library_path) {
+Design::Design(const std::string& library_path, std::optional<Unit> unit) {
   void* handle = dlopen(library_path.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) throw std::runtime_error(std::string("cannot load the design's module: ") + dlerror());
   const auto abi = reinterpret_cast<const char* (*)()>(dlsym(handle, RASTERSIM_MODULE_ABI_SYMBOL));
-  run_ = reinterpret_cast<RunFunction>(dlsym(handle, RASTERSIM_DUT_RUN_SYMBOL));
-  if (!abi || !run_) throw std::runtime_error(library_path + " is not a design module of rastersim");
+  if (unit) {
+    run_unit_ = reinterpret_cast<UnitRunFunction>(dlsym(handle, RASTERSIM_UNIT_RUN_SYMBOL));
+    const auto name = reinterpret_cast<UnitNameFunction>(dlsym(handle, RASTERSIM_UNIT_NAME_SYMBOL));
+    if (!abi || !run_unit_ || !name || std::string(name()) != to_string(*unit))
+      throw std::runtime_error(library_path + " is not a module of rastersim for the " + to_string(*unit) + " unit");
+  } else {
+    run_ = reinterpret_cast<RunFunction>(dlsym(handle, RASTERSIM_DUT_RUN_SYMBOL));
+    if (!abi || !run_) throw std::runtime_error(library_path + " is not a design module of rastersim");
+  }
   if (abi() != modules::abi_stamp())
     throw std::runtime_error(library_path + " was built against other records than this program");
 }
@@ -117,6 +140,13 @@ rtl::RtlResult Design::run(const Profile& profile, const std::vector<SnappedTria
   rtl::RtlResult out;
   std::string error;
   if (!run_(profile, triangles, options, out, error)) throw std::runtime_error(error);
+  return out;
+}
+
+UnitResult Design::run_unit(const UnitFrame& frame, const DutRunOptions& options) const {
+  UnitResult out;
+  std::string error;
+  if (!run_unit_(frame, options, out, error)) throw std::runtime_error(error);
   return out;
 }
 

@@ -2,6 +2,7 @@
 // verilated on demand into the module cache (modules.h dut_library) and run frame by frame.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,10 @@ modules::DutDesign read_design(const std::string& list_or_folder, const std::str
 // (WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS), then the user's NAME=value options in order (a user's
 // option for one of them replaces it). Throws InputError for an option that is not NAME=value.
 std::vector<std::string> design_parameters(const Profile& profile, const std::vector<std::string>& options);
+// The same for a unit (docs/verification.md "Checking one unit"): also FRACTION_BITS (F, the plane
+// registers' fraction bits) and, for the walker, AUX_BITS (the width of rec_aux).
+std::vector<std::string> unit_parameters(Unit unit, const Profile& profile, const std::vector<std::string>& options);
+std::optional<Unit> parse_unit(const std::string& text);
 
 // Empty when a design behind the verification interface can be checked at `profile`; otherwise
 // why not (the interface carries the fixed-point depth word, no texture and no depth bias).
@@ -29,14 +34,18 @@ std::string interface_error(const Profile& profile);
 
 class Design {
  public:
-  // Loads a library built by dut_library; throws std::runtime_error when it is not one of this program.
-  explicit Design(const std::string& library_path);
+  // Loads a library built by dut_library; throws std::runtime_error when it is not one of this
+  // program (or, with `unit`, not built for that unit).
+  explicit Design(const std::string& library_path, std::optional<Unit> unit = std::nullopt);
   // One frame; throws std::runtime_error with the harness's sentence when the design stalls.
   rtl::RtlResult run(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
                      const DutRunOptions& options = {}) const;
+  // One unit's frame (a library built for a unit); throws as run does.
+  UnitResult run_unit(const UnitFrame& frame, const DutRunOptions& options = {}) const;
 
  private:
   RunFunction run_ = nullptr;
+  UnitRunFunction run_unit_ = nullptr;
 };
 
 }  // namespace rastersim::dut

@@ -254,6 +254,7 @@ std::string module_library(Kind kind, const Profile& profile, const Progress& pr
 std::string dut_library(const DutDesign& design, const Progress& progress) {
   Digest key;
   key.add("dut");
+  key.add(design.unit);
   key.add(design.top);
   for (const std::string& p : design.parameters) key.add(p);
   for (const std::string& d : design.include_dirs) key.add(d);
@@ -273,11 +274,14 @@ std::string dut_library(const DutDesign& design, const Progress& progress) {
   };
   std::string params;
   for (const std::string& p : design.parameters) params += " " + p;
-  return cached_build("dut-" + design.top + "-" + key.hex(), "the design " + design.top + params,
-                      "dut:" + design.top + params, source_dir() / "testbench/dut",
+  const std::string unit = design.unit.empty() ? "" : design.unit + "-";
+  return cached_build("dut-" + unit + design.top + "-" + key.hex(),
+                      (design.unit.empty() ? "the design " : "the " + design.unit + " unit ") + design.top + params,
+                      "dut:" + unit + design.top + params, source_dir() / "testbench/dut",
                       {"-DRASTERSIM_DUT_TOP=" + design.top, "-DRASTERSIM_DUT_FILES=" + joined(design.files),
                        "-DRASTERSIM_DUT_INCLUDES=" + joined(design.include_dirs),
-                       "-DRASTERSIM_DUT_PARAMETERS=" + joined(design.parameters)},
+                       "-DRASTERSIM_DUT_PARAMETERS=" + joined(design.parameters),
+                       "-DRASTERSIM_DUT_UNIT=" + design.unit},
                       "librastersim_dut.so", progress);
 }
 }  // namespace rastersim::modules

@@ -32,11 +32,12 @@ std::string module_library(Kind kind, const Profile& profile, const Progress& pr
 
 // A user's design behind the verification interface (docs/verification.md), verilated on demand
 // with testbench/dut/ around it: its files in order, include folders, top module and -G options
-// (NAME=value).
+// (NAME=value); `unit` names the unit-level interface it has instead (setup, walker, zbuffer).
 struct DutDesign {
   std::vector<std::string> files, include_dirs;
   std::string top;
   std::vector<std::string> parameters;
+  std::string unit;
 };
 // Its shared library (librastersim_dut.so) from the cache, built first when missing; the cache key
 // holds the files' contents, so an edited design is built again.

@@ -17,6 +17,17 @@
 
 namespace rastersim::dut {
 
+// The command port (cmd_x0 .. cmd_rgb2): one triangle's snapped vertex words, shared by the
+// verification interface and the setup unit's.
+template <class V>
+void drive_command(V& top, const SnappedTriangle& t) {
+  top.cmd_x0 = uint32_t(t.v[0].x), top.cmd_y0 = uint32_t(t.v[0].y);
+  top.cmd_x1 = uint32_t(t.v[1].x), top.cmd_y1 = uint32_t(t.v[1].y);
+  top.cmd_x2 = uint32_t(t.v[2].x), top.cmd_y2 = uint32_t(t.v[2].y);
+  top.cmd_z0 = t.v[0].z, top.cmd_z1 = t.v[1].z, top.cmd_z2 = t.v[2].z;
+  top.cmd_rgb0 = packed_rgb(t.v[0].color), top.cmd_rgb1 = packed_rgb(t.v[1].color), top.cmd_rgb2 = packed_rgb(t.v[2].color);
+}
+
 template <class V>
 rtl::RtlResult run(const Profile& p, const std::vector<SnappedTriangle>& tris, const DutRunOptions& options) {
   auto context = std::make_unique<VerilatedContext>();
@@ -57,13 +68,7 @@ rtl::RtlResult run(const Profile& p, const std::vector<SnappedTriangle>& tris, c
     const bool offering = next < tris.size();
     top->cmd_valid = offering;
     if (offering) {
-      const SnappedTriangle& t = tris[next];
-      top->cmd_x0 = uint32_t(t.v[0].x), top->cmd_y0 = uint32_t(t.v[0].y);
-      top->cmd_x1 = uint32_t(t.v[1].x), top->cmd_y1 = uint32_t(t.v[1].y);
-      top->cmd_x2 = uint32_t(t.v[2].x), top->cmd_y2 = uint32_t(t.v[2].y);
-      top->cmd_z0 = t.v[0].z, top->cmd_z1 = t.v[1].z, top->cmd_z2 = t.v[2].z;
-      const auto rgb = [](const Rgb& c) { return uint32_t(c.r) << 16 | uint32_t(c.g) << 8 | uint32_t(c.b); };
-      top->cmd_rgb0 = rgb(t.v[0].color), top->cmd_rgb1 = rgb(t.v[1].color), top->cmd_rgb2 = rgb(t.v[2].color);
+      drive_command(*top, tris[next]);
     }
     half_cycle(0);
     // This cycle's handshakes and retirements, before the rising edge.

@@ -9,6 +9,7 @@
 #include "model/pipeline.h"
 #include "model/profile.h"
 #include "model/triangle.h"
+#include "testbench/dut/unit_records.h"
 #include "testbench/rtl_backend.h"
 
 namespace rastersim::dut {
@@ -27,6 +28,14 @@ struct DutRunOptions {
 using RunFunction = bool (*)(const Profile& profile, const std::vector<SnappedTriangle>& triangles,
                              const DutRunOptions& options, rtl::RtlResult& out, std::string& error);
 
+// A library built for one unit (--unit) exports this instead: the unit's frame into `out`.
+using UnitRunFunction = bool (*)(const UnitFrame& frame, const DutRunOptions& options, UnitResult& out,
+                                 std::string& error);
+// And the unit it was built for ("setup", "walker" or "zbuffer").
+using UnitNameFunction = const char* (*)();
+
 }  // namespace rastersim::dut
 
 #define RASTERSIM_DUT_RUN_SYMBOL "rastersim_dut_run"
+#define RASTERSIM_UNIT_RUN_SYMBOL "rastersim_unit_run"
+#define RASTERSIM_UNIT_NAME_SYMBOL "rastersim_unit_name"
