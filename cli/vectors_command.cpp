@@ -54,6 +54,21 @@ CLI::App* add_vectors_command(CLI::App& app, VectorsOptions& o) {
   return cmd;
 }
 
+namespace {
+// The package's scripts, README and Makefile-like text name the folder as written: only characters
+// that mean nothing to sh, make or Markdown are taken (`$(touch X)rtl` would run when the package runs).
+void check_package_relative_path(const std::string& option, const std::string& path) {
+  for (const char c : path) {
+    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '/' ||
+                       c == '.' || c == '_' || c == '-' || c == '+';
+    if (!plain)
+      throw InputError(option + " '" + path + "': only letters, digits and / . _ - + may name the folder (the "
+                       "package's run scripts name it as written)");
+  }
+  if (!path.empty() && path[0] == '-') throw InputError(option + " '" + path + "' must not start with '-'");
+}
+}  // namespace
+
 int run_vectors(const VectorsOptions& o) {
   const Profile profile = resolve_profile(o.profile);
   const bool random = o.random_option && o.random_option->count() > 0;
@@ -64,6 +79,8 @@ int run_vectors(const VectorsOptions& o) {
                      "or --suite");
   if (o.seed_option && o.seed_option->count() > 0 && !random) throw InputError("--seed goes with --random");
   if (random && (o.random < 1 || o.random > 1000000)) throw InputError("--random must be in 1..1000000");
+  check_package_relative_path("--rtl-path", o.rtl_path);
+  check_package_relative_path("--testbench-path", o.testbench_path);
   if (!o.rtl_path.empty() && std::filesystem::path(o.rtl_path).is_absolute())
     throw InputError("--rtl-path must be relative to the package folder (a package must not depend on where it was made)");
   if (!o.top.empty() && o.top != "rastersim_top" && o.top != "rastersim_core")

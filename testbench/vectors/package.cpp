@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -494,11 +495,23 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
 
 namespace {
 
+// A package's manifest and the files it lists, and nothing else: --force replaces only that (a
+// user's notes.txt in the folder would go with it).
 bool holds_package(const fs::path& dir) {
   std::ifstream in(dir / "manifest.json");
   if (!in) return false;
   const Json j = Json::parse(in, nullptr, false);
-  return !j.is_discarded() && j.is_object() && j.value("format", "") == "rastersim-vectors";
+  if (j.is_discarded() || !j.is_object() || j.value("format", "") != "rastersim-vectors") return false;
+  if (!j.contains("files") || !j["files"].is_array()) return false;
+  std::set<std::string> listed = {"manifest.json"};
+  for (const Json& f : j["files"])
+    if (f.is_object() && f.contains("path") && f["path"].is_string()) listed.insert(f["path"].get<std::string>());
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->is_directory(ec) && !it->is_symlink(ec)) continue;
+    if (!listed.count(it->path().lexically_relative(dir).generic_string())) return false;
+  }
+  return !ec;
 }
 
 fs::path make_temp_dir(const fs::path& parent, const std::string& stem) {
@@ -531,17 +544,19 @@ void check_package_dir(const std::string& out_dir, bool force) {
   if (!force) throw InputError("--out: folder '" + out.string() + "' is not empty (--force replaces an existing package)");
   if (!holds_package(out))
     throw InputError("--out: folder '" + out.string() +
-                     "' is not empty and holds no rastersim-vectors manifest.json; --force replaces only a package");
+                     "' is not empty and holds something other than a rastersim-vectors package (a manifest.json "
+                     "and the files it lists); --force replaces only a package");
 }
 
-// Holds back SIGINT, SIGTERM and SIGHUP while alive (or until release()): they are delivered when
-// released.
+// Holds back the terminating signals (cli/outputs.cpp removes temporaries on each) while alive (or
+// until release()): they are delivered when released.
 class SignalsHeld {
  public:
   SignalsHeld() {
     sigset_t held;
     sigemptyset(&held);
-    for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&held, s);
+    for (int s : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGXCPU, SIGXFSZ})
+      sigaddset(&held, s);
     pthread_sigmask(SIG_BLOCK, &held, &previous_);
   }
   ~SignalsHeld() { release(); }

@@ -19,6 +19,21 @@ TEST(CliVectors, HelpNamesEverySource) {
   EXPECT_TRUE(dir.listing().empty());
 }
 
+// The folders are named as written in the package's run scripts: a shell command in one would run
+// when anyone runs the package. Refused before anything is written (also without the RTL library).
+TEST(CliVectors, ARelativePathWithShellCharactersIsRefused) {
+  ScratchDir dir;
+  for (const std::string option : {"--rtl-path", "--testbench-path"})
+    for (const std::string path : {"$(touch X)rtl", "`touch X`", "rtl; touch X", "a b", "rtl\ntouch X"}) {
+      const RunResult r = run_rastersim(dir, {"vectors", "--random", "1", "--width", "32", "--height", "24", "--out",
+                                              "pkg", option, path});
+      EXPECT_EQ(r.exit_code, 2) << option << " " << path << ": " << r.err;
+      EXPECT_TRUE(contains(r.err, option + " '") && contains(r.err, "only letters, digits and / . _ - + may name"))
+          << r.err;
+      EXPECT_TRUE(dir.listing().empty()) << option << " " << path;
+    }
+}
+
 #ifdef RASTERSIM_HAVE_RTL
 
 TEST(CliVectors, WritesAPackageFromEachSource) {
@@ -111,6 +126,28 @@ TEST(CliVectors, TheSameCommandGivesTheSameBytesAndForceReplaces) {
   EXPECT_EQ(dir.listing(), (std::set<std::string>{"a", "b"}));
 }
 
+// --force replaces a package and nothing else: a file the package does not list (a user's notes),
+// also in a subfolder, keeps the folder from being replaced (it was deleted with the package).
+TEST(CliVectors, ForceKeepsAFolderWithFilesThatAreNotThePackages) {
+  ScratchDir dir;
+  const std::vector<std::string> args = {"vectors", "--random", "2", "--width", "16", "--height", "12", "--out", "pk",
+                                         "--force"};
+  ASSERT_EQ(run_rastersim(dir, args).exit_code, 0);
+  for (const std::string notes : {"pk/notes.txt", "pk/sub/notes.txt"}) {
+    fs::create_directories(dir.path(notes).parent_path());
+    dir.write(notes, "mine");
+    const RunResult r = run_rastersim(dir, args);
+    EXPECT_EQ(r.exit_code, 2) << notes;
+    EXPECT_TRUE(contains(r.err, "holds something other than a rastersim-vectors package")) << r.err;
+    EXPECT_EQ(read_text(dir.path(notes)), "mine");
+    EXPECT_TRUE(fs::exists(dir.path("pk/manifest.json")));
+    fs::remove_all(dir.path("pk/sub"));
+    fs::remove(dir.path("pk/notes.txt"));
+  }
+  EXPECT_EQ(run_rastersim(dir, args).exit_code, 0) << "the package alone is replaced";
+  EXPECT_EQ(dir.listing(), std::set<std::string>{"pk"});
+}
+
 struct BadVectors {
   const char* name;
   std::vector<std::string> args;
@@ -155,7 +192,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadVectors{"OutNotEmpty", {"--suite", "depth", "--out", "full"}, "--out: folder 'full' is not empty"},
         BadVectors{"ForceOnAFolderThatIsNoPackage", {"--suite", "depth", "--out", "full", "--force"},
-                   "holds no rastersim-vectors manifest.json"},
+                   "holds something other than a rastersim-vectors package"},
         BadVectors{"OutParentMissing", {"--suite", "depth", "--out", "no/such/pkg"}, "folder 'no/such' does not exist"},
         BadVectors{"OutIsAFile", {"--suite", "depth", "--out", "bad.tri"}, "'bad.tri' exists and is not a folder"},
         BadVectors{"OutMissing", {"--suite", "depth", "--out"}, "--out"},
