@@ -11,6 +11,7 @@
 #include "backend.h"
 #include "builtin_scenes.h"
 #include "inputs.h"
+#include "tri_reader.h"
 #include "model/input_error.h"
 #include "model/pipeline.h"
 
@@ -45,7 +46,7 @@ void add_bench_input_options(CLI::App& cmd, BenchInput& o) {
   cmd.add_option("--scene", o.scene, "a built-in scene instead of random triangles (see `rastersim scenes`)")
       ->type_name("NAME");
   cmd.add_option("--triangles", o.triangles, "number of random triangles")
-      ->check(CLI::Range(int64_t(1), int64_t(10000000)))
+      ->check(CLI::Range(int64_t(1), int64_t(kMaxTriTriangles)))  // a frame's limit, as for a .tri file
       ->capture_default_str();
   cmd.add_option("--size", o.size, "random triangle size range in pixels, MIN..MAX")->capture_default_str();
   cmd.add_option("--seed", o.seed, "random seed")->capture_default_str()->check(unsigned_64_text);

@@ -24,7 +24,14 @@ int size_log2(int n) {
 
 Texture read_texture_file(const std::string& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not a texture image");
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (std::filesystem::is_directory(status)) throw InputError(path, 0, "is a directory, not a texture image");
+  // Checked before anything opens it: a FIFO would block the open, a device (/dev/zero) never ends.
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw InputError(path, 0, "is not a regular file (a device, FIFO or socket): a texture must be an image file");
+  if (std::filesystem::exists(status) && std::filesystem::file_size(path, ec) > kMaxTextureBytes)
+    throw InputError(path, 0, "the file is larger than " + std::to_string(kMaxTextureBytes >> 20) +
+                                  " MiB, the limit of a texture (at most 1024 x 1024 texels)");
   if (!std::ifstream(path, std::ios::binary)) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
   DecodedImage image;
   try {

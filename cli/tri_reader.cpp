@@ -181,7 +181,8 @@ std::string parse_triangle(const std::vector<std::string>& tokens, ScreenTriangl
 
 }  // namespace
 
-std::vector<ScreenTriangle> read_tri(std::istream& in, const std::string& file_name, const Profile& profile) {
+std::vector<ScreenTriangle> read_tri(std::istream& in, const std::string& file_name, const Profile& profile,
+                                     size_t max_triangles) {
   std::vector<ScreenTriangle> triangles;
   std::string line;
   int line_number = 0;
@@ -201,6 +202,9 @@ std::vector<ScreenTriangle> read_tri(std::istream& in, const std::string& file_n
     std::string error = parse_triangle(tokens, tri);
     if (error.empty()) error = check_screen_triangle(tri, profile);
     if (!error.empty()) throw InputError(file_name, line_number, error);
+    if (triangles.size() == max_triangles)
+      throw InputError(file_name, line_number, "more than " + std::to_string(max_triangles) +
+                                                   " triangles, the limit of a .tri file");
     triangles.push_back(tri);
   }
   if (in.bad()) throw InputError(file_name, line_number + 1, "read error");

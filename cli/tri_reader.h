@@ -15,10 +15,15 @@
 
 namespace rastersim {
 
+// The most triangles a .tri file may hold: a scene's limit (frontend::kMaxSceneTriangles), about
+// 1.2 GB as ScreenTriangles.
+constexpr size_t kMaxTriTriangles = 4'000'000;
+
 // Reads every triangle of `in` in line order, each one checked against the profile's guard band
 // (check_screen_triangle). `file_name` only names the source in errors. Throws InputError
-// "file:line: problem" at the first bad line.
-std::vector<ScreenTriangle> read_tri(std::istream& in, const std::string& file_name, const Profile& profile);
+// "file:line: problem" at the first bad line, and at the line of triangle max_triangles + 1.
+std::vector<ScreenTriangle> read_tri(std::istream& in, const std::string& file_name, const Profile& profile,
+                                     size_t max_triangles = kMaxTriTriangles);
 
 // Opens and reads a .tri file; a missing or unreadable file is an InputError naming it.
 std::vector<ScreenTriangle> read_tri_file(const std::string& path, const Profile& profile);

@@ -16,6 +16,7 @@
 #include <set>
 #include <sstream>
 
+#include "frontend/scene.h"
 #include "model/input_error.h"
 #include "model/triangle.h"
 #include "model/text_file.h"
@@ -147,7 +148,15 @@ class PreScan {
         pending.max_vn = std::max(pending.max_vn, r.vn);
       }
       pending_.push_back(pending);
-      if (keyword == "f") ++faces_;
+      if (keyword == "f") {
+        ++faces_;
+        // Counted before tinyobjloader fans the faces: 24-corner faces under the size cap made more
+        // than the scene's triangle limit and ended in bad_alloc.
+        triangles_ += long(values) - 2;
+        if (triangles_ > long(kMaxSceneTriangles))
+          fail(line, "the faces make more than " + std::to_string(kMaxSceneTriangles) +
+                         " triangles (a polygon of n corners makes n - 2), the limit of a scene");
+      }
     } else if (!kIgnoredStatements.count(keyword)) {
       // Quoted only when it looks like a statement keyword: a file that is not OBJ at all (a scene's
       // mesh path may name any file) must not have its content echoed into a message.
@@ -220,7 +229,7 @@ class PreScan {
 
   std::string file_;
   Counts counts_;
-  long faces_ = 0;
+  long faces_ = 0, triangles_ = 0;
   std::vector<Vec3> positions_;
   std::vector<int> position_lines_;
   std::vector<std::array<double, 2>> texcoords_;

@@ -54,29 +54,26 @@ class Walker {
     }
   }
 
-  // A string token; returns its text with the simple escapes decoded (\uXXXX kept as written).
+  // A string token, decoded as the parser decodes it: a key spelled with escapes ("w\u0069dth") is
+  // the same key as the plain one.
   std::string string_token() {
-    std::string out;
+    const size_t start = at_;
+    bool escaped = false;
     ++at_;  // opening quote
     while (at_ < s_.size() && s_[at_] != '"') {
-      if (s_[at_] == '\\' && at_ + 1 < s_.size()) {
-        const char e = s_[++at_];
-        switch (e) {
-          case 'n': out += '\n'; break;
-          case 't': out += '\t'; break;
-          case 'r': out += '\r'; break;
-          case 'b': out += '\b'; break;
-          case 'f': out += '\f'; break;
-          case 'u': out += "\\u"; break;
-          default: out += e; break;
-        }
-      } else {
-        out += s_[at_];
+      if (s_[at_] == '\\') {
+        escaped = true;
+        ++at_;
       }
       ++at_;
     }
     ++at_;  // closing quote
-    return out;
+    if (!escaped) return s_.substr(start + 1, at_ - start - 2);
+    try {
+      return nlohmann::json::parse(s_.substr(start, at_ - start)).get<std::string>();
+    } catch (const nlohmann::json::exception&) {
+      return s_.substr(start + 1, at_ - start - 2);  // unreachable for text the parser accepted
+    }
   }
 
   // Containers nested deeper than this are stepped over without recording their members: the
@@ -154,7 +151,18 @@ class Walker {
 
 nlohmann::json parse_json_document(const std::string& text, const std::string& file_name) {
   try {
-    return nlohmann::json::parse(text);
+    nlohmann::json doc = nlohmann::json::parse(text);
+    // The parser keeps the last of two equal keys; a file that names one twice is refused at any level.
+    const JsonLines lines(text);
+    if (const auto twice = lines.first_repeated(); !twice.first.empty()) {
+      const std::string& pointer = twice.first;
+      std::string key = pointer.substr(pointer.rfind('/') + 1);
+      for (size_t at; (at = key.find("~1")) != std::string::npos;) key.replace(at, 2, "/");
+      for (size_t at; (at = key.find("~0")) != std::string::npos;) key.replace(at, 2, "~");
+      throw InputError(file_name, twice.second,
+                       "key '" + key + "' is given twice (first on line " + std::to_string(lines.line(pointer)) + ")");
+    }
+    return doc;
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(file_name, line_before_byte(text, e.byte), std::string("malformed JSON: ") + e.what());
   } catch (const nlohmann::json::exception& e) {
@@ -166,9 +174,11 @@ nlohmann::json parse_json_document(const std::string& text, const std::string& f
 
 JsonLines::JsonLines(const std::string& text) { Walker(text, lines_, repeated_).run(); }
 
-int JsonLines::repeated_line(const std::string& pointer) const {
-  const auto it = repeated_.find(pointer);
-  return it == repeated_.end() ? 0 : it->second;
+std::pair<std::string, int> JsonLines::first_repeated() const {
+  std::pair<std::string, int> first{"", 0};
+  for (const auto& [pointer, line] : repeated_)
+    if (first.first.empty() || line < first.second) first = {pointer, line};
+  return first;
 }
 
 int JsonLines::line(const std::string& pointer) const {

@@ -4,13 +4,15 @@
 
 #include <map>
 #include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
 namespace rastersim {
 
-// Parses a JSON document. Any error, a syntax error or a number outside the range of a double,
-// throws InputError(file_name, line, "malformed JSON: ...") with the line where parsing stopped.
+// Parses a JSON document. Any error, a syntax error, a number outside the range of a double or an
+// object naming a key twice (at any level, however the key is spelled), throws
+// InputError(file_name, line, ...) with the line where parsing stopped or of the second key.
 nlohmann::json parse_json_document(const std::string& text, const std::string& file_name);
 
 class JsonLines {
@@ -22,9 +24,9 @@ class JsonLines {
   // 1 for the root.
   int line(const std::string& pointer) const;
 
-  // The line of the member's second occurrence when its object names it twice (the parser keeps the
-  // last value), else 0.
-  int repeated_line(const std::string& pointer) const;
+  // The member named twice that comes first in the text and the line of its second occurrence;
+  // {"", 0} when no object names a key twice.
+  std::pair<std::string, int> first_repeated() const;
 
   // "/a/b" + "c" with the JSON pointer escapes (~0, ~1).
   static std::string child(const std::string& pointer, const std::string& key);

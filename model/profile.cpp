@@ -392,9 +392,6 @@ void load_profile_text(Profile& profile, const std::string& text, const std::str
   for (auto it = doc.begin(); it != doc.end(); ++it) {
     const std::string pointer = JsonLines::child("", it.key());
     const int line = lines.line(pointer);
-    if (const int again = lines.repeated_line(pointer))
-      throw InputError(file_name, again, "profile key '" + it.key() + "' is given twice (first on line " +
-                                             std::to_string(line) + ")");
     std::string value;
     if (it->is_string()) value = it->get<std::string>();
     else if (it->is_boolean()) value = it->get<bool>() ? "true" : "false";

@@ -34,6 +34,9 @@ for ext in ("tri", "obj", "json"):
     open(f"{corpus}/random-bytes.{ext}", "wb").write(bytes(rng.getrandbits(8) for _ in range(200_000)))
 sphere = {"surface": "sphere", "params": {"segments": 1024, "rings": 1024}}
 json.dump({"objects": [sphere] * 20}, open(f"{corpus}/twenty-spheres.json", "w"))
+# 255-corner faces: under the size cap, past the triangle limit once fanned.
+face = "f" + "".join(f" {1 + k % 4}" for k in range(255)) + "\n"
+open(f"{corpus}/many-corners.obj", "w").write("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n" + face * 16_000)
 with open(f"{corpus}/many-triangles.tri", "w") as f:
     for i in range(200_000):
         x, y = rng.uniform(0, 60), rng.uniform(0, 44)
@@ -75,5 +78,9 @@ for f in "$corpus"/*; do
     *.json) check "$name" render --scene fan --width 64 --height 48 --profile "$f" ;;
   esac
 done
+# A texture that never ends.
+mkdir -p "$work/textures"
+ln -s /dev/zero "$work/textures/endless.png"
+check endless.png render --scene fan --width 64 --height 48 --texture-unit true --texture "$work/textures/endless.png"
 echo "hostile-corpus: $runs runs, $bad violations"
 [ "$bad" -eq 0 ]

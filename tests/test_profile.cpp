@@ -238,6 +238,9 @@ TEST(ProfileFile, ErrorsNameFileLineAndProblem) {
       // A key given twice (the last one silently won).
       {"twice.json", "{\n  \"width\": 64,\n  \"height\": 48,\n  \"width\": 32\n}\n", 4,
        "'width' is given twice (first on line 2)"},
+      // The same key spelled with a JSON escape is the same key (it passed the check).
+      {"escaped_twice.json", "{\n  \"width\": 64,\n  \"w\\u0069dth\": 32\n}\n", 3,
+       "'width' is given twice (first on line 2)"},
   };
   for (const Bad& c : cases) {
     const std::string error = load_error(c.name, c.text);

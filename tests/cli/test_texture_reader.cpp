@@ -2,6 +2,7 @@
 // counts a user has, read back as the sampler's memory (bottom row first), and every refusal an
 // InputError naming the file.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <OpenImageIO/imageio.h>
 
@@ -78,6 +79,11 @@ TEST(TextureReader, RefusalsNameTheFileAndTheProblem) {
   write_image(dir.path("wide.png"), 2048, 1, 3, OIIO::TypeDesc::UINT8, std::vector<unsigned char>(2048 * 3));
   dir.write("text.png", "this is not a PNG\n");
   fs::create_directory(dir.path("folder.png"));
+  // Endless or blocking inputs end at once (a link to /dev/zero spun until killed).
+  fs::create_symlink("/dev/zero", dir.path("zero.png"));
+  ASSERT_EQ(mkfifo(dir.path("fifo.png").c_str(), 0600), 0);
+  dir.write("huge.png", "");
+  fs::resize_file(dir.path("huge.png"), kMaxTextureBytes + 1);  // sparse: no disk used
   const std::string powers = "its width and height must be powers of two up to 1024";
   struct Case {
     std::string file, problem;
@@ -85,7 +91,9 @@ TEST(TextureReader, RefusalsNameTheFileAndTheProblem) {
   for (const Case& c : {Case{"three.png", "the texture is 3 x 4 pixels; " + powers},
                         Case{"wide.png", "the texture is 2048 x 1 pixels; " + powers},
                         Case{"missing.png", "cannot open: No such file or directory"},
-                        Case{"folder.png", "is a directory, not a texture image"}, Case{"text.png", ""}}) {
+                        Case{"folder.png", "is a directory, not a texture image"}, Case{"text.png", ""},
+                        Case{"zero.png", "is not a regular file"}, Case{"fifo.png", "is not a regular file"},
+                        Case{"huge.png", "the file is larger than 64 MiB"}}) {
     const std::string path = dir.path(c.file).string();
     const std::string message = error_of(path);
     EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;

@@ -94,6 +94,20 @@ TEST(TriReader, ALoneCarriageReturnEndsALine) {
             "'r0 g0 b0 r1 g1 b1 r2 g2 b2', but the line has 8 values");
 }
 
+// A file of more triangles than the limit ends at the first one past it, not in bad_alloc (40
+// million lines did); the limit is a scene's.
+TEST(TriReader, MoreTrianglesThanTheLimitAreRefusedAtTheLineOfTheFirstPastIt) {
+  EXPECT_EQ(kMaxTriTriangles, size_t(4000000));
+  std::istringstream in("# three\n0 0 0.1 10 0 0.1 0 10 0.1\n0 0 0.1 10 0 0.1 0 10 0.1\n\n0 0 0.1 10 0 0.1 0 10 0.1\n"
+                        "0 0 0.1 10 0 0.1 0 10 0.1\n");
+  try {
+    read_tri(in, "many.tri", small_profile(), 3);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "many.tri:6: more than 3 triangles, the limit of a .tri file");
+  }
+}
+
 // A UTF-8 byte-order mark before the first line is skipped (x0 was '\xEF\xBB\xBF10', "not a number").
 TEST(TriReader, SkipsAByteOrderMark) {
   const auto tris = read_text("\xEF\xBB\xBF" "10 0 0.1 20 0 0.1 10 10 0.1\n");

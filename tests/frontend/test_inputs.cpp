@@ -58,6 +58,18 @@ TEST(FrontendObj, PolygonsAreFannedWithTheirWinding) {
   EXPECT_EQ(positions(4), (std::array<uint32_t, 3>{0, 2, 3}));
 }
 
+// Faces are counted as the triangles they fan into before any is made: 255-corner faces (253
+// triangles each) in 8 MB cross the scene's limit at face 15,811 (such a file under the size cap
+// ended in bad_alloc).
+TEST(FrontendObj, TheTrianglesOfManyCorneredFacesAreCountedAgainstTheLimit) {
+  std::string face = "f";
+  for (int k = 0; k < 255; ++k) face += " " + std::to_string(1 + k % 4);
+  std::string text = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+  for (int f = 0; f < 15811; ++f) text += face + "\n";
+  expect_input_error([&] { parse_obj_mesh(text, "corners.obj"); }, "corners.obj:15815: ",
+                     "the faces make more than 4000000 triangles");
+}
+
 TEST(FrontendObj, NormalsFromTheFileAreNormalized) {
   const Mesh m = parse_obj_mesh("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 2\nvn 3 4 0\nf 1//1 2//2 3//1\n", "n.obj");
   ASSERT_EQ(m.triangles.size(), 1u);
@@ -402,6 +414,17 @@ TEST(FrontendScene, ErrorsNameTheLineOfTheKey) {
       {"{\"objects\": [{\"surface\": \"plane\"}],\n \"camera\": {\"eye\": [1, 1, 1],\n  \"target\": [1, 1, 1]}\n}\n", 3,
        "eye and target are the same point"},
   };
+  // A key named twice at any level (the last one silently won), also when spelled with an escape.
+  const Case twice[] = {
+      {"{\"objects\": [{\"surface\": \"plane\"}],\n \"objects\": [{\"surface\": \"sphere\"}]\n}\n", 2,
+       "key 'objects' is given twice (first on line 1)"},
+      {"{\"objects\": [\n {\"surface\": \"plane\",\n  \"surface\": \"sphere\"}\n]}\n", 3,
+       "key 'surface' is given twice (first on line 2)"},
+      {"{\"objects\": [{\"surface\": \"sphere\", \"params\": {\n  \"radius\": 1,\n  \"r\\u0061dius\": 2}}]}\n", 3,
+       "key 'radius' is given twice (first on line 2)"},
+      {"{\"objects\": [{\"surface\": \"plane\"}],\n \"camera\": {\"fov\": 40,\n  \"f\\u006fv\": 60}\n}\n", 3,
+       "key 'fov' is given twice (first on line 2)"},
+  };
   // Found by fuzz_scene: a number beyond a double's range escaped as an uncaught exception, and
   // deep nesting overflowed the stack of the line finder.
   const Case found_by_fuzzing[] = {
@@ -412,6 +435,7 @@ TEST(FrontendScene, ErrorsNameTheLineOfTheKey) {
   };
   std::vector<Case> all(std::begin(cases), std::end(cases));
   all.insert(all.end(), std::begin(found_by_fuzzing), std::end(found_by_fuzzing));
+  all.insert(all.end(), std::begin(twice), std::end(twice));
   for (const Case& c : all) {
     SCOPED_TRACE(c.text.substr(0, 200));
     const std::string path = write_file("bad-scene.json", c.text);
