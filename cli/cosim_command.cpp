@@ -406,6 +406,7 @@ int run_cosim(const CosimOptions& o) {
     if (!problem.empty()) throw InputError(problem);
   }
   OutputFiles outputs;
+  outputs.protect(o.profile.profile_file);
   const std::string junit_temp = o.junit_out.empty() ? "" : outputs.add(o.junit_out, "--junit");
   const WaveFiles wave = add_waveform(outputs, o.wave);
   const std::string coverage_temp = o.coverage_out.empty() ? "" : outputs.add(o.coverage_out, "--coverage");
@@ -436,6 +437,10 @@ int run_cosim(const CosimOptions& o) {
   const int64_t first = o.frame >= 0 ? o.frame : shard.index, step = o.frame >= 0 ? total : shard.count;
   const int64_t in_shard = o.frame >= 0 ? 1 : total / shard.count + (shard.index < total % shard.count ? 1 : 0);
   if (!o.export_dir.empty()) {
+    for (int64_t k = first; k < total; k += step)
+      for (const char* extension : {".tri", ".json", ".txt"})
+        outputs.refuse_input((std::filesystem::path(o.export_dir) / ("frame-" + std::to_string(k) + extension)).string(),
+                             "--export");
     for (int64_t k = first; k < total; k += step) {
       const rtl::CosimCase c = plan.frame(k);
       const std::string prefix = (std::filesystem::path(o.export_dir) / ("frame-" + std::to_string(k))).string();

@@ -107,7 +107,8 @@ WaveFiles add_waveform(OutputFiles& outputs, const WaveOptions& o) {
   }
   if (o.path == "-") throw InputError("--wave needs a file: a waveform cannot go to standard output");
   WaveFiles files;
-  files.wave_temp = outputs.add(o.path, "--wave");  // first: a folder or a missing one is named as such
+  // First: a folder or a missing one is named as such. An FST is written by seeking: seekable.
+  files.wave_temp = outputs.add(o.path, "--wave", fs::path(o.path).extension() == ".fst");
   const std::string extension = fs::path(o.path).extension().string();
   if (extension != ".fst" && extension != ".vcd")
     throw InputError("--wave " + o.path + ": the name must end in .fst or .vcd (the format)");
@@ -134,7 +135,7 @@ void check_waveform_written(const WaveFiles& files, const WaveOptions& o, int64_
     throw std::runtime_error("cannot write the GTKWave save file beside --wave " + o.path);
 }
 
-std::string OutputFiles::add(const std::string& final_path, const std::string& what) {
+std::string OutputFiles::add(const std::string& final_path, const std::string& what, bool seekable) {
   if (final_path.empty()) throw InputError(what + " needs a file name");
   std::error_code ec;
   // `-` and a path that is standard output: written as a stream.
@@ -155,10 +156,7 @@ std::string OutputFiles::add(const std::string& final_path, const std::string& w
   if (fs::is_directory(status)) throw InputError(final_path, 0, "cannot write " + what + ": it is a folder");
   if (!target.has_filename()) throw InputError(final_path, 0, "cannot write " + what + ": no file name");
   const bool exists = fs::exists(status);
-  for (const std::string& input : protected_) {
-    if (exists && fs::equivalent(target, input, ec))
-      throw InputError(final_path, 0, "cannot write " + what + ": it is an input of this run (" + input + ")");
-  }
+  if (exists) refuse_input(final_path, what);
   for (const Entry& e : entries_) {
     const bool same = exists && fs::exists(e.target, ec) ? fs::equivalent(e.target, target, ec)
                                                          : fs::weakly_canonical(e.target, ec) == fs::weakly_canonical(target, ec);
@@ -168,6 +166,16 @@ std::string OutputFiles::add(const std::string& final_path, const std::string& w
   // this avoids); so is a file with other hard links, which must stay one file.
   const bool direct =
       exists && (!fs::is_regular_file(status) || fs::hard_link_count(target, ec) > 1);
+  if (direct && seekable) {
+    // A writer that seeks or renames (the FST writer) cannot write a FIFO or device: it writes a
+    // temporary in the system's temporary folder, copied into the target at commit.
+    const std::string temp = (fs::temp_directory_path(ec) / (".rastersim-" + std::to_string(getpid()) + "-" +
+                                                             std::to_string(entries_.size()) + target.extension().string()))
+                                 .string();
+    entries_.push_back({final_path, target.string(), temp, false, true});
+    remember_temporary(temp);
+    return temp;
+  }
   if (direct) {
     entries_.push_back({final_path, target.string(), target.string(), true});
     return entries_.back().temp_path;
@@ -177,6 +185,14 @@ std::string OutputFiles::add(const std::string& final_path, const std::string& w
   entries_.push_back({final_path, target.string(), (folder / temp_name).string(), false});
   remember_temporary(entries_.back().temp_path);
   return entries_.back().temp_path;
+}
+
+void OutputFiles::refuse_input(const std::string& final_path, const std::string& what) const {
+  std::error_code ec;
+  for (const std::string& input : protected_) {
+    if (fs::equivalent(final_path, input, ec))  // false, with ec set, when either does not exist
+      throw InputError(final_path, 0, "cannot write " + what + ": it is an input of this run (" + input + ")");
+  }
 }
 
 std::string OutputFiles::add_scratch(const std::string& path) {
@@ -189,17 +205,26 @@ void OutputFiles::commit() {
   for (const Entry& e : entries_) {
     if (e.direct) continue;
     std::error_code ec;
-    fs::rename(e.temp_path, e.target, ec);
-    if (ec) throw std::runtime_error(e.final_path + ": cannot move the finished file into place: " + ec.message());
+    if (e.copy) {
+      std::ifstream in(e.temp_path, std::ios::binary);
+      std::ofstream out(e.target, output_mode(e.target));
+      if (in.peek() != std::ifstream::traits_type::eof()) out << in.rdbuf();
+      out.close();
+      if (!in || !out) throw std::runtime_error(e.final_path + ": write error (" + std::strerror(errno) + ")");
+      fs::remove(e.temp_path, ec);
+    } else {
+      fs::rename(e.temp_path, e.target, ec);
+      if (ec) throw std::runtime_error(e.final_path + ": cannot move the finished file into place: " + ec.message());
+    }
     forget_temporary(e.temp_path);
   }
   committed_ = true;
 }
 
-// Temporaries to remove when SIGINT or SIGTERM ends the process: fixed storage, so that the
+// Temporaries to remove when a signal ends the process: fixed storage, so that the
 // handler only reads memory and calls unlink (async-signal-safe).
 namespace {
-constexpr int kMaxTemporaries = 16;
+constexpr int kMaxTemporaries = 64;  // a sweep has one per plot
 char temporaries[kMaxTemporaries][4096];
 volatile sig_atomic_t temporary_used[kMaxTemporaries];
 
@@ -275,7 +300,14 @@ void remember_temporary_folder(const std::string& path, bool exists) {
 }
 
 void remove_temporaries_on_signals() {
-  for (int s : {SIGINT, SIGTERM, SIGHUP}) ::signal(s, remove_temporaries_and_reraise);
+  // Every signal whose default action ends the process (SIGPIPE aside: a closed pipe on standard
+  // output is a write error the commands report). A signal the caller ignores stays ignored: with
+  // SIGXFSZ ignored a write past RLIMIT_FSIZE fails with EFBIG and is reported, nohup keeps SIGHUP off.
+  for (int s : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGXCPU, SIGXFSZ}) {
+    struct sigaction current {};
+    if (sigaction(s, nullptr, &current) == 0 && current.sa_handler == SIG_IGN) continue;
+    ::signal(s, remove_temporaries_and_reraise);
+  }
 }
 
 void check_image_format(const std::string& path, const std::string& what) {

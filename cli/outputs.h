@@ -40,14 +40,18 @@ class OutputFiles {
   // Checks that the final path can be written (its folder exists, it is not a folder, no other
   // output names it, it is not an input) and returns the path to write: a temporary, or the target
   // itself when it is written directly. Throws InputError naming the option (`what`, e.g. "-o")
-  // and the path. Creates nothing.
-  std::string add(const std::string& final_path, const std::string& what);
+  // and the path. Creates nothing. `seekable`: the writer needs a regular file, so a device or FIFO
+  // gets a temporary too, whose bytes are copied into it at commit (never replaced).
+  std::string add(const std::string& final_path, const std::string& what, bool seekable = false);
+  // Throws InputError when the path resolves to an input of this run: for files a command writes
+  // itself (cosim --export's replays).
+  void refuse_input(const std::string& final_path, const std::string& what) const;
   // True when an output is `-`: the human summary then goes to standard error.
   bool writes_stdout() const { return writes_stdout_; }
   // Renames every temporary into place.
   void commit();
   // A scratch file of the run (not an output): removed when the run ends, committed or not, and on
-  // SIGINT, SIGTERM and SIGHUP. Returns the path.
+  // a terminating signal. Returns the path.
   std::string add_scratch(const std::string& path);
 
  private:
@@ -56,6 +60,7 @@ class OutputFiles {
     std::string target;      // where it ends up: the symlink's target, or the path itself
     std::string temp_path;   // what is written: a temporary beside the target, or the target (direct)
     bool direct;
+    bool copy = false;  // the temporary is copied into the target (a seekable output's device or FIFO)
   };
   std::vector<Entry> entries_;
   std::vector<std::string> protected_;
@@ -67,7 +72,8 @@ class OutputFiles {
 // How an output path is opened: appended to when it is standard output, else truncated.
 std::ios::openmode output_mode(const std::string& path);
 
-// Temporaries that SIGINT, SIGTERM or SIGHUP remove before the process ends (OutputFiles registers
+// Temporaries that a terminating signal (SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGALRM, SIGXFSZ,
+// ...) removes before the process ends (OutputFiles registers
 // its own); install the handlers once, in main.
 void remember_temporary(const std::string& path);
 void forget_temporary(const std::string& path);

@@ -14,6 +14,7 @@
 
 #include "backend.h"
 #include "builtin_scenes.h"
+#include "frontend/scene.h"
 #include "inputs.h"
 #include "model/input_error.h"
 #include "outputs.h"
@@ -191,6 +192,7 @@ int run_render(const RenderOptions& o) {
 
   OutputFiles outputs;
   outputs.protect(o.input);
+  for (const std::string& mesh : frontend::scene_mesh_files(o.input)) outputs.protect(mesh);
   outputs.protect(o.profile.profile_file);
   outputs.protect(o.texture);
   if (!o.texture.empty() && !profile.texture_unit)

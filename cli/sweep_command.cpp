@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -15,6 +16,7 @@
 #include <sstream>
 
 #include "backend.h"
+#include "frontend/scene.h"
 #include "hw_cost.h"
 #include "inputs.h"
 #include "model/input_error.h"
@@ -113,10 +115,41 @@ std::string curve_style(size_t s) {
   return style;
 }
 
+std::string plot_file(const Column& c) { return std::string(c.name) + ".png"; }
+constexpr const char* kCostPlot = "cycles_vs_ice40_luts.png";
+
+// Inside gnuplot's single quotes a quote is written twice.
+std::string gnuplot_quoted(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
+  return out;
+}
+
+// A word for sh: single-quoted, a quote as '\''.
+std::string sh_quoted(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+// A PNG that gnuplot finished: it ends with the IEND chunk (a full disk left truncated plots and a
+// zero exit status).
+bool png_is_complete(const std::string& path) {
+  static const unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xAE, 0x42, 0x60, 0x82};
+  std::ifstream in(path, std::ios::binary);
+  if (!in.seekg(-12, std::ios::end)) return false;
+  unsigned char tail[12];
+  return bool(in.read(reinterpret_cast<char*>(tail), 12)) && std::equal(tail, tail + 12, iend);
+}
+
 // The gnuplot script: one PNG per figure, the first axis along x, one line per combination of the
 // other axes' values. Data inline (datablocks), so the script alone redraws the plots.
+// `output` maps a plot's file name to what `set output` names (the run writes temporaries).
 std::string gnuplot_script(const std::vector<SweepAxis>& axes, const std::vector<Point>& points, const Written& written,
-                           const std::string& title) {
+                           const std::string& title,
+                           const std::function<std::string(const std::string&)>& output = [](const std::string& f) {
+                             return f;
+                           }) {
   const SweepAxis& x_axis = axes.front();
   std::vector<double> xs;
   bool numeric = true;
@@ -176,7 +209,8 @@ std::string gnuplot_script(const std::vector<SweepAxis>& axes, const std::vector
     gp << "EOD\n";
   }
   auto plot = [&](const std::string& file, const std::string& ylabel, size_t column, bool x_is_cycles) {
-    gp << "set output '" << file << "'\nset title '" << title << "' noenhanced\nset ylabel '" << ylabel << "' noenhanced\n";
+    gp << "set output '" << gnuplot_quoted(output(file)) << "'\nset title '" << title
+       << "' noenhanced\nset ylabel '" << ylabel << "' noenhanced\n";
     gp << "plot ";
     for (size_t s = 0; s < series_names.size(); ++s) {
       const std::string name = series_names[s].empty() ? ylabel : series_names[s];
@@ -186,13 +220,13 @@ std::string gnuplot_script(const std::vector<SweepAxis>& axes, const std::vector
     gp << "\n";
   };
   for (size_t c = 0; c < columns.size(); ++c)
-    if (written(columns[c])) plot(std::string(columns[c].name) + ".png", columns[c].name, c, false);
+    if (written(columns[c])) plot(plot_file(columns[c]), columns[c].name, c, false);
   if (written.hw_cost) {  // cycles against area: one point per sweep point
     gp << "unset logscale x\nunset xtics\nset xtics\nset xrange [*:*]\nset xlabel 'cycles'\n";
     const size_t luts = size_t(std::find_if(columns.begin(), columns.end(), [](const Column& c) {
                                  return std::string(c.name) == "ice40_luts";
                                }) - columns.begin());
-    plot("cycles_vs_ice40_luts.png", "ice40_luts", luts, true);
+    plot(kCostPlot, "ice40_luts", luts, true);
   }
   return gp.str();
 }
@@ -335,7 +369,13 @@ int run_sweep(const SweepOptions& o) {
     throw InputError("--jobs with the SystemC backend: SystemC runs one simulation per process");
   // Every point's profile and camera are checked before anything runs.
   size_t total = 1;
-  for (const SweepAxis& a : axes) total *= a.values.size();
+  for (const SweepAxis& a : axes) {
+    // Checked before the points are held (4096 x 4096 points once made one 4.4 GB allocation).
+    total *= a.values.size();
+    if (total > kMaxSweepPoints)
+      throw InputError("--vary: the sweep has more than " + std::to_string(kMaxSweepPoints) +
+                       " points, the limit (each is a render); sweep fewer values or split the sweep");
+  }
   std::vector<Point> points(total);
   std::vector<Profile> profiles(total, base);
   std::vector<RenderOptions> scenes(total, o.scene);
@@ -375,8 +415,34 @@ int run_sweep(const SweepOptions& o) {
   if (o.plots && std::system("gnuplot --version > /dev/null 2>&1") != 0)
     throw InputError("gnuplot is not installed (scripts/install-deps.sh installs gnuplot-nox), or use --no-plots");
   std::error_code ec;
+  const bool out_existed = fs::exists(o.out_dir, ec);
   fs::create_directories(o.out_dir, ec);
   if (ec || !fs::is_directory(o.out_dir)) throw InputError("--out " + o.out_dir + ": cannot create the folder");
+  // Every output is checked before any point runs: none may be an input (a profile or texture
+  // inside --out), and all are written to temporaries and renamed into place together.
+  OutputFiles outputs;
+  outputs.protect(o.scene.input);
+  for (const std::string& mesh : frontend::scene_mesh_files(o.scene.input)) outputs.protect(mesh);
+  outputs.protect(o.scene.profile.profile_file);
+  outputs.protect(o.scene.texture);
+  const std::string csv_path = (fs::path(o.out_dir) / "sweep.csv").string();
+  const std::string gp_path = (fs::path(o.out_dir) / "sweep.gp").string();
+  std::map<std::string, std::string> plot_temps;  // file name in --out -> temporary gnuplot writes
+  std::string csv_temp, gp_temp;
+  try {
+    csv_temp = outputs.add(csv_path, "--out");
+    gp_temp = outputs.add(gp_path, "--out");
+    if (o.plots) {
+      std::vector<std::string> plots;
+      for (const Column& c : figure_columns())
+        if (written(c)) plots.push_back(plot_file(c));
+      if (written.hw_cost) plots.push_back(kCostPlot);
+      for (const std::string& name : plots) plot_temps[name] = outputs.add((fs::path(o.out_dir) / name).string(), "--out");
+    }
+  } catch (...) {
+    if (!out_existed) fs::remove(o.out_dir, ec);  // made by this run: gone with it
+    throw;
+  }
   const std::string rtl_dir = o.rtl_dir.empty() ? std::string(RASTERSIM_SOURCE_DIR) + "/rtl" : o.rtl_dir;
 
   // Points in parallel with --jobs; each one's line is printed in point order.
@@ -415,12 +481,7 @@ int run_sweep(const SweepOptions& o) {
   };
   parallel_for(o.jobs, total, run_point);
 
-  // The CSV and the plot script, written to temporaries and renamed together.
-  OutputFiles outputs;
-  const std::string csv_path = (fs::path(o.out_dir) / "sweep.csv").string();
-  const std::string gp_path = (fs::path(o.out_dir) / "sweep.gp").string();
-  const std::string csv_temp = outputs.add(csv_path, "--out");
-  const std::string gp_temp = outputs.add(gp_path, "--out");
+  // The CSV, the plot script and the plots, written to temporaries and renamed together.
   std::ostringstream csv;
   for (const SweepAxis& a : axes) csv << a.key << ",";
   bool first = true;
@@ -439,21 +500,25 @@ int run_sweep(const SweepOptions& o) {
   title += ", " + std::to_string(base.width) + "x" + std::to_string(base.height) + ", " + o.backend;
   write_text_file(csv_temp, csv_path, csv.str());
   write_text_file(gp_temp, gp_path, gnuplot_script(axes, points, written, title));
-  outputs.commit();
-  std::cout << "wrote " << csv_path << "\nwrote " << gp_path << "\n";
   if (o.plots) {
-    // gnuplot's notes (a constant figure's "empty y range") go to a log, shown only on failure.
-    const std::string command = "cd '" + o.out_dir + "' && gnuplot sweep.gp 2> sweep.gnuplot.log";
-    const int status = std::system(command.c_str());
-    const fs::path log = fs::path(o.out_dir) / "sweep.gnuplot.log";
+    // The same script with the temporaries as outputs, run from a scratch file; gnuplot's notes (a
+    // constant figure's "empty y range") go to a log, shown only on failure.
+    const std::string run_script = outputs.add_scratch(gp_temp + ".run"), log = outputs.add_scratch(gp_temp + ".log");
+    write_text_file(run_script, gp_path,
+                    gnuplot_script(axes, points, written, title, [&](const std::string& f) { return plot_temps.at(f); }));
+    const int status = std::system(("gnuplot " + sh_quoted(run_script) + " 2> " + sh_quoted(log)).c_str());
     if (status != 0) {
       std::ifstream in(log);
       std::cerr << in.rdbuf();
-      throw std::runtime_error("gnuplot failed on " + gp_path + " (" + log.string() + ")");
+      throw std::runtime_error("gnuplot failed on " + gp_path);
     }
-    fs::remove(log);
-    std::cout << "plotted " << o.out_dir << "/*.png\n";
+    for (const auto& [name, temp] : plot_temps)
+      if (fs::is_regular_file(temp, ec) && !png_is_complete(temp))  // a FIFO or device is not read back
+        throw std::runtime_error((fs::path(o.out_dir) / name).string() + ": write error (gnuplot left an incomplete PNG)");
   }
+  outputs.commit();
+  std::cout << "wrote " << csv_path << "\nwrote " << gp_path << "\n";
+  if (o.plots) std::cout << "plotted " << o.out_dir << "/*.png\n";
   return 0;
 }
 

@@ -15,6 +15,9 @@
 
 namespace rastersim {
 
+// The most points (renders) one sweep runs: the product of the --vary value counts.
+constexpr size_t kMaxSweepPoints = 10000;
+
 struct SweepOptions {
   RenderOptions scene;             // input or --scene, camera flags, the base profile
   std::vector<std::string> vary;   // "KEY=V1,V2,..." in the order given

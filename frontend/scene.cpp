@@ -345,4 +345,25 @@ Scene load_scene(const std::string& path) {
   return parse_scene(text, path, std::filesystem::path(path).parent_path().string());
 }
 
+std::vector<std::string> scene_mesh_files(const std::string& path) {
+  std::vector<std::string> meshes;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > kMaxSceneBytes) return meshes;
+  std::string text;
+  try {
+    text = read_text(path, "a scene file");
+  } catch (const InputError&) {
+    return meshes;  // the load reports it
+  }
+  const nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+  if (!doc.is_object() || !doc.contains("objects") || !doc["objects"].is_array()) return meshes;
+  const std::filesystem::path base = std::filesystem::path(path).parent_path();
+  for (const nlohmann::json& object : doc["objects"]) {
+    if (!object.is_object() || !object.contains("mesh") || !object["mesh"].is_string()) continue;
+    const std::filesystem::path relative = object["mesh"].get<std::string>();
+    meshes.push_back((relative.is_absolute() ? relative : base / relative).string());
+  }
+  return meshes;
+}
+
 }  // namespace rastersim::frontend

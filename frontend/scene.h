@@ -52,6 +52,9 @@ constexpr size_t kMaxSceneTriangles = 4'000'000;
 constexpr size_t kMaxSceneBytes = size_t(16) << 20;
 Scene load_scene(const std::string& path);
 Scene parse_scene(const std::string& text, const std::string& file_name, const std::string& base_folder);
+// The mesh files a scene file names (as load_scene resolves them), for the outputs to refuse as
+// inputs; empty for a file that is not a readable scene (load_scene then says why).
+std::vector<std::string> scene_mesh_files(const std::string& path);
 
 // A built-in scene by name (builtin_scene_list); an unknown name throws InputError.
 Scene make_builtin_scene(const std::string& name);

@@ -9,9 +9,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
+#include <thread>
 #include <cmath>
 #include <array>
 #include <fstream>
+#include <cstring>
 #include <map>
 #include <set>
 #include <sstream>
@@ -258,11 +261,37 @@ TEST(CliOutputs, AnOutputThatIsAnInputIsRefused) {
   EXPECT_EQ(dir.listing(), (std::set<std::string>{"small.tri", "p.json", "alias.tri"}));
 }
 
+// A scene's mesh is an input of the run like the scene itself (`render scene.json --stats m.obj`
+// wrote the stats over the mesh).
+TEST(CliOutputs, AnOutputThatIsASceneMeshIsRefused) {
+  ScratchDir dir;
+  const std::string mesh = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  fs::create_directory(dir.path("meshes"));
+  dir.write("meshes/m.obj", mesh);
+  dir.write("scene.json", "{\"objects\": [{\"mesh\": \"meshes/m.obj\"}]}\n");
+  for (const std::string output : {"meshes/m.obj", "./meshes/../meshes/m.obj"}) {
+    const RunResult r = run_rastersim(dir, with({"render", "scene.json", "--stats", output}, kSmallProfile));
+    EXPECT_EQ(r.exit_code, 2) << output;
+    EXPECT_TRUE(contains(r.err, "is an input of this run")) << r.err;
+  }
+  EXPECT_EQ(read_text(dir.path("meshes/m.obj")), mesh);
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"meshes", "scene.json"}));
+}
+
+// bench's --triangles stops at a frame's triangle limit (10,000,000 was in range and ended in bad_alloc).
+TEST(CliBench, TrianglesBeyondTheFrameLimitAreRefused) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"bench", "--triangles", "4000001"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(contains(r.err, "--triangles")) << r.err;
+  EXPECT_TRUE(contains(r.err, "4000000")) << r.err;
+}
+
 // Runs rastersim with `args` in `dir`, sends SIGTERM as soon as a name starting with
 // `temporary_prefix` appears there (polling every millisecond, up to a minute), and returns the
 // process's wait status; `seen` says whether the temporary appeared.
 int terminate_when_temporary_appears(const ScratchDir& dir, std::vector<std::string> args,
-                                     const std::string& temporary_prefix, bool& seen) {
+                                     const std::string& temporary_prefix, bool& seen, int signal_number = SIGTERM) {
   std::string exe = RASTERSIM_EXE;
   args.insert(args.begin(), exe);
   std::vector<char*> argv;
@@ -271,6 +300,8 @@ int terminate_when_temporary_appears(const ScratchDir& dir, std::vector<std::str
   const pid_t pid = fork();
   if (pid == 0) {
     if (chdir(dir.work().c_str()) != 0) _exit(126);
+    const rlimit no_core{0, 0};  // SIGQUIT would dump one into the folder under test
+    setrlimit(RLIMIT_CORE, &no_core);
     const int null = open("/dev/null", O_RDWR);
     dup2(null, 0), dup2(null, 1), dup2(null, 2);
     execv(exe.c_str(), argv.data());
@@ -285,7 +316,7 @@ int terminate_when_temporary_appears(const ScratchDir& dir, std::vector<std::str
     if (waitpid(pid, &status, WNOHANG) == pid) return status;  // ended before writing anything
     usleep(1000);
   }
-  kill(pid, SIGTERM);
+  kill(pid, signal_number);
   waitpid(pid, &status, 0);
   return status;
 }
@@ -302,6 +333,21 @@ TEST(CliOutputs, ATerminatedRenderLeavesNoTemporary) {
   ASSERT_TRUE(seen) << "the temporary never appeared";
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
   EXPECT_TRUE(dir.listing().empty()) << *dir.listing().begin();
+}
+
+// Every signal that ends the process by default removes the temporaries too (SIGQUIT, SIGUSR1,
+// SIGALRM and SIGXFSZ once left a 750 MB hidden CSV behind).
+TEST(CliOutputs, EveryTerminatingSignalRemovesTheTemporaries) {
+  for (const int signal_number : {SIGQUIT, SIGUSR1, SIGALRM, SIGXFSZ}) {
+    ScratchDir dir;
+    bool seen = false;
+    const int status = terminate_when_temporary_appears(
+        dir, {"render", "--scene", "default", "--width", "4096", "--height", "4096", "--fragments", "frags.csv"},
+        ".frags.tmp", seen, signal_number);
+    ASSERT_TRUE(seen) << "the temporary never appeared";
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal_number) << strsignal(signal_number);
+    EXPECT_TRUE(dir.listing().empty()) << strsignal(signal_number) << ": " << *dir.listing().begin();
+  }
 }
 
 #ifdef RASTERSIM_HAVE_RTL  // `vectors` needs the RTL library
@@ -1052,6 +1098,66 @@ TEST(CliRtl, WaveformWrongUsesAreErrorsAndAWaveformIsWrittenWhole) {
   ASSERT_EQ(cosim.exit_code, 0) << cosim.err;
   EXPECT_GT(read_text(dir.path("frames.fst")).size(), 1000u);
   EXPECT_EQ(run_rastersim(dir, {"cosim", "--count", "1", "--width", "64", "--height", "48", "--fst", "-"}).exit_code, 2);
+}
+
+// cosim's outputs must not be its profile file: --junit, --coverage and --export's replays wrote
+// over it.
+TEST(CliRtl, CosimOutputsThatAreTheProfileAreRefused) {
+  ScratchDir dir;
+  const std::string profile = "{\"width\": 64, \"height\": 48}\n";
+  fs::create_directory(dir.path("replays"));
+  for (const std::vector<std::string>& outputs :
+       {std::vector<std::string>{"--junit", "p.json"}, std::vector<std::string>{"--coverage", "p.json"},
+        std::vector<std::string>{"--export", "replays", "--frame", "0"}}) {
+    const std::string profile_name = outputs[0] == "--export" ? "replays/frame-0.json" : "p.json";
+    dir.write(profile_name, profile);
+    std::vector<std::string> args = {"cosim", "--count", "1", "--no-directed", "--no-coverage-gate", "--profile",
+                                     profile_name};
+    args.insert(args.end(), outputs.begin(), outputs.end());
+    const RunResult r = run_rastersim(dir, args);
+    EXPECT_EQ(r.exit_code, 2) << outputs[0] << ": " << r.err;
+    EXPECT_TRUE(contains(r.err, "is an input of this run")) << r.err;
+    EXPECT_EQ(read_text(dir.path(profile_name)), profile) << outputs[0];
+    EXPECT_FALSE(fs::exists(dir.path("replays/frame-0.tri"))) << outputs[0];
+  }
+}
+
+// An FST waveform into a FIFO (or a link to one) is streamed into it: the FST writer, which
+// seeks, writes a temporary that is copied in. The FIFO was replaced by a regular file.
+TEST(CliRtl, AnFstWaveformIntoAFifoIsStreamedNotReplaced) {
+  ScratchDir dir;
+  const fs::path fifo = dir.path("w.fifo");
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  fs::create_symlink("w.fifo", dir.path("link.fst"));
+  ASSERT_EQ(mkfifo(dir.path("w.fst").c_str(), 0600), 0);
+  for (const std::string name : {"w.fst", "link.fst"}) {
+    const fs::path read_end = name == "w.fst" ? dir.path("w.fst") : fifo;
+    // Read while the run writes: the waveform is larger than a pipe's buffer.
+    const int fd = open(read_end.c_str(), O_RDWR | O_NONBLOCK);
+    ASSERT_GE(fd, 0);
+    std::atomic<bool> finished{false};
+    std::string received;
+    std::thread reader([&] {
+      char buffer[65536];
+      for (;;) {
+        const ssize_t n = read(fd, buffer, sizeof buffer);
+        if (n > 0) received.append(buffer, size_t(n));
+        else if (finished) break;
+        else usleep(1000);
+      }
+    });
+    const RunResult r = run_rastersim(dir, {"cosim", "--count", "1", "--no-directed", "--no-coverage-gate", "--width",
+                                            "64", "--height", "48", "--wave", name});
+    finished = true;
+    reader.join();
+    close(fd);
+    EXPECT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    EXPECT_TRUE(fs::is_fifo(fs::symlink_status(read_end))) << name << " was replaced";
+    EXPECT_GT(received.size(), 1000u) << name;
+    EXPECT_EQ(received.substr(0, 1), std::string(1, '\0')) << "an FST header";
+  }
+  EXPECT_TRUE(fs::is_symlink(dir.path("link.fst")));
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"w.fifo", "w.fst", "link.fst", "w.gtkw", "link.gtkw"}));
 }
 
 // A VCD waveform's signals by full name ("scope.scope.name[9:0]" as GTKWave spells them) and the

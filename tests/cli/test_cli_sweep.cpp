@@ -174,6 +174,42 @@ TEST(CliSweep, BadAxesAreInputErrors) {
     EXPECT_TRUE(contains(r.err, message)) << vary << ": " << r.err;
     EXPECT_FALSE(fs::exists(dir.path("x"))) << vary;
   }
+  // More points than the limit are refused before they are held (4096 x 4096 made one 4.4 GB allocation).
+  std::string widths = "width=", heights = "height=";
+  for (int v = 1; v <= 101; ++v) widths += (v > 1 ? "," : "") + std::to_string(v), heights += (v > 1 ? "," : "") + std::to_string(v);
+  const RunResult r = run_rastersim(dir, {"sweep", "--vary", widths, "--vary", heights, "--out", "x"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(contains(r.err, "the sweep has more than 10000 points, the limit")) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path("x")));
+}
+
+// A profile (or any input) inside --out under an output's name is refused before anything runs,
+// and left as it was (sweep once wrote its CSV over it).
+TEST(CliSweep, AnOutputThatIsAnInputIsRefused) {
+  ScratchDir dir;
+  fs::create_directory(dir.path("x"));
+  const std::string profile = "{\"width\": 32, \"height\": 24}\n";
+  for (const std::string name : {"sweep.csv", "sweep.gp", "cycles.png"}) {
+    dir.write("x/" + name, profile);
+    const RunResult r = run_rastersim(dir, {"sweep", "--vary", "z_bits=16,24", "--profile", "x/" + name, "--out", "x"});
+    EXPECT_EQ(r.exit_code, 2) << name;
+    EXPECT_TRUE(contains(r.err, "is an input of this run")) << r.err;
+    EXPECT_EQ(read_text(dir.path("x/" + name)), profile);
+    fs::remove(dir.path("x/" + name));
+    EXPECT_TRUE(fs::is_empty(dir.path("x"))) << name;
+  }
+}
+
+// A write that fails (here the file size limit, as on a full disk) is an error, and no plot, CSV
+// or script is left: gnuplot exited 0 with a 0-byte and a truncated PNG, and the sweep with it.
+TEST(CliSweep, AFailedPlotWriteIsAnErrorAndLeavesNothing) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(
+      dir, {"sweep", "--vary", "z_bits=16,24", "--scene", "overlap", "--width", "64", "--height", "48", "--out", "x"},
+      4000);
+  EXPECT_NE(r.exit_code, 0) << r.out;
+  EXPECT_TRUE(contains(r.err, "write error")) << r.err;
+  EXPECT_TRUE(fs::is_empty(dir.path("x")));
 }
 
 // The 1/w buffer (docs/arithmetic.md section 6): two parallel squares facing the camera 60 units away,
