@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -271,22 +272,42 @@ nlohmann::ordered_json with_distributions(nlohmann::ordered_json j, verify::Comp
 struct DesignFrame {
   rtl::RtlResult model;
   verify::FunctionalReport report;
+  int64_t design_cycles = 0;  // the design's frame, from its first handshake (0 when it stalled)
   bool passed = false;
   std::string message;
 };
+// With `waveform.wave_path`, the frame's waveform (--wave: FST or VCD, its window in cycles from the
+// first handshake) and its GTKWave save file.
 DesignFrame design_frame(const dut::Design& design, const rtl::CosimCase& c, const std::string& prefix,
-                         verify::CompareMode mode, const verify::Tolerance& tolerance, const std::string& replay) {
+                         verify::CompareMode mode, const verify::Tolerance& tolerance, const std::string& replay,
+                         const rtl::RtlOptions& waveform) {
   DesignFrame d;
   d.model = rtl::run_model(c.profile, c.triangles, c.texture);
+  dut::DutRunOptions run_options;
+  const std::string fst_path = waveform.wave_vcd ? waveform.wave_fst_scratch : waveform.wave_path;
+  if (!waveform.wave_path.empty()) {
+    run_options.wave_path = fst_path;
+    run_options.wave_window = waveform.wave_from >= 0 || waveform.wave_to >= 0;
+    run_options.wave_from = std::max<int64_t>(0, waveform.wave_from);
+    run_options.wave_to = waveform.wave_to >= 0 ? waveform.wave_to : std::numeric_limits<int64_t>::max();
+  }
   int64_t at = -1;  // the mismatch's cycle in the design, -1 for a stall
+  int64_t wave_start = 0;
   try {
-    const rtl::RtlResult result = design.run(c.profile, c.triangles);
+    const rtl::RtlResult result = design.run(c.profile, c.triangles, run_options);
+    d.design_cycles = result.stats.cycles;
+    // FST times: reset's 4 cycles, then cycle k's rising edge at 2 (first handshake + k) + 9.
+    wave_start = run_options.wave_window ? 2 * (result.first_handshake + run_options.wave_from) + 8 : 0;
     d.report = verify::compare(c.profile, d.model, result, mode, tolerance);
     d.passed = d.report.passed();
     d.message = d.passed ? "" : d.report.summary();
     if (!d.passed) at = verify::design_cycle(d.report.mismatches.front(), result);
   } catch (const std::runtime_error& e) {
     d.message = e.what();
+  }
+  if (!waveform.wave_path.empty()) {  // a stalled frame's waveform ends at the stall
+    rtl::write_design_gtkwave_save(fst_path, waveform.wave_name, waveform.gtkwave_save_path, wave_start, -1);
+    if (waveform.wave_vcd) rtl::fst_to_vcd(fst_path, waveform.wave_path);
   }
   if (d.passed) return d;
   constexpr int64_t kAround = 32;
@@ -307,7 +328,7 @@ DesignFrame design_frame(const dut::Design& design, const rtl::CosimCase& c, con
     d.message += "; waveform: " + wave.wave_path;
     if (at >= 0) {
       const int64_t edge = 2 * (again.first_handshake + at) + 9;  // the rising edge of the mismatch's cycle
-      rtl::write_design_gtkwave_save(wave.wave_path, prefix + ".gtkw", edge - 2 * kAround - 1, edge);
+      rtl::write_design_gtkwave_save(wave.wave_path, wave.wave_path, prefix + ".gtkw", edge - 2 * kAround - 1, edge);
     }
   }
   return d;
@@ -391,8 +412,8 @@ int run_cosim(const CosimOptions& o) {
     throw InputError("--export writes .tri replays, which carry no texture: with the texture unit, rerun a frame "
                      "with --frame");
   if (o.jobs < 1 || o.jobs > 256) throw InputError("--jobs " + std::to_string(o.jobs) + " is outside 1..256");
-  if (with_dut && !o.wave.path.empty())
-    throw InputError("--wave writes rastersim's RTL; with --dut a failing frame's waveform goes to --replay-dir");
+  if (unit && !o.wave.path.empty())
+    throw InputError("--wave with --unit: a failing frame's waveform goes to --replay-dir");
   std::unique_ptr<dut::Design> design;
   if (with_dut) {
     if (const std::string problem = dut::interface_error(profile); !problem.empty()) throw InputError(problem);
@@ -400,6 +421,10 @@ int run_cosim(const CosimOptions& o) {
     files.parameters = unit ? dut::unit_parameters(*unit, profile, o.generics) : dut::design_parameters(profile, o.generics);
     files.unit = unit ? dut::to_string(*unit) : "";
     design = std::make_unique<dut::Design>(design_library(files), unit);
+    if (!unit && !design->has_memory_port() && profile.memory_stall_percent > 0)
+      throw InputError("memory_stall_percent " + std::to_string(profile.memory_stall_percent) + ": " + o.top +
+                       " keeps its buffers (it has the read-back port, not the memory port), so no memory refuses "
+                       "its reads; give 0, or a design with the memory port (docs/verification.md)");
   } else {
     ensure_rtl_configuration(profile);  // verilated on demand when the build lacks it
     const std::string problem = rtl::configuration_error(profile);
@@ -510,7 +535,7 @@ int run_cosim(const CosimOptions& o) {
       const std::string replay = replay_command + " --frame " + std::to_string(k);
       DesignFrame d = unit ? unit_design_frame(*design, *unit, c, options.seed, with_outputs ? prefix : "", *mode,
                                                tolerance, replay)
-                           : design_frame(*design, c, with_outputs ? prefix : "", *mode, tolerance, replay);
+                           : design_frame(*design, c, with_outputs ? prefix : "", *mode, tolerance, replay, options);
       out.k = k;
       out.name = c.name;
       out.triangles = c.triangles.size();
@@ -520,7 +545,7 @@ int run_cosim(const CosimOptions& o) {
       out.depth_error = d.report.depth_error;
       out.color_error = d.report.color_error;
       out.hits = rtl::frame_coverage(c.profile, c.triangles, d.model, max_latency);
-      out.cycles = d.model.stats.cycles;
+      out.cycles = unit ? d.model.stats.cycles : d.design_cycles;  // --wave's window is in the design's cycles
       return out;
     }
     const rtl::CosimReport report = rtl::cosim(c.profile, c.triangles, options, prefix);

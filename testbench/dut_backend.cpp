@@ -129,7 +129,9 @@ Design::Design(const std::string& library_path, std::optional<Unit> unit) {
       throw std::runtime_error(library_path + " is not a module of rastersim for the " + to_string(*unit) + " unit");
   } else {
     run_ = reinterpret_cast<RunFunction>(dlsym(handle, RASTERSIM_DUT_RUN_SYMBOL));
-    if (!abi || !run_) throw std::runtime_error(library_path + " is not a design module of rastersim");
+    const auto memory_port = reinterpret_cast<bool (*)()>(dlsym(handle, RASTERSIM_DUT_MEMORY_PORT_SYMBOL));
+    if (!abi || !run_ || !memory_port) throw std::runtime_error(library_path + " is not a design module of rastersim");
+    memory_port_ = memory_port();
   }
   if (abi() != modules::abi_stamp())
     throw std::runtime_error(library_path + " was built against other records than this program");

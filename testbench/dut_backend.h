@@ -42,8 +42,12 @@ class Design {
                      const DutRunOptions& options = {}) const;
   // One unit's frame (a library built for a unit); throws as run does.
   UnitResult run_unit(const UnitFrame& frame, const DutRunOptions& options = {}) const;
+  // The design's top has the memory port (docs/verification.md "The memory port"): the harness's
+  // memory holds its buffers; otherwise it keeps them and has the read-back port.
+  bool has_memory_port() const { return memory_port_; }
 
  private:
+  bool memory_port_ = false;
   RunFunction run_ = nullptr;
   UnitRunFunction run_unit_ = nullptr;
 };

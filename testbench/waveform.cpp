@@ -46,8 +46,8 @@ void fst_to_vcd(const std::string& fst_path, const std::string& vcd_path) {
   if (std::fflush(out.get()) != 0 || std::ferror(out.get())) throw std::runtime_error("cannot write the waveform " + vcd_path);
 }
 
-void write_design_gtkwave_save(const std::string& fst_path, const std::string& save_path, int64_t time_start,
-                               int64_t marker) {
+void write_design_gtkwave_save(const std::string& fst_path, const std::string& dumpfile, const std::string& save_path,
+                               int64_t time_start, int64_t marker) {
   FstReader reader(fst_path);
   // The outermost scope holds the top module's ports (Verilator's TOP).
   int depth = 0;
@@ -62,7 +62,7 @@ void write_design_gtkwave_save(const std::string& fst_path, const std::string& s
   std::ofstream out(save_path, std::ios::binary);
   out << "[*] rastersim: a design behind the verification interface, the mismatch at the marker "
          "(docs/verification.md)\n"
-      << "[dumpfile] \"" << std::filesystem::absolute(fst_path).string() << "\"\n"
+      << "[dumpfile] \"" << std::filesystem::absolute(dumpfile).string() << "\"\n"
       << "[timestart] " << std::max<int64_t>(0, time_start) << "\n"
       << "[size] 1400 900\n"
       << "*-6.000000 " << marker;

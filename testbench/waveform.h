@@ -15,10 +15,10 @@ void fst_to_vcd(const std::string& fst_path, const std::string& vcd_path);
 // cycle and triangle indices) and a group per unit of the pipeline with its ports.
 void write_gtkwave_save(const std::string& fst_path, const std::string& dumpfile, const std::string& save_path);
 
-// A GTKWave save file for the FST of a design behind the verification interface (cosim --dut):
-// the top module's ports in one group, the view starting at `time_start` and the primary marker at
-// `marker` (FST times; -1: none).
-void write_design_gtkwave_save(const std::string& fst_path, const std::string& save_path, int64_t time_start,
-                               int64_t marker);
+// A GTKWave save file for the FST of a design behind the verification interface (cosim --dut),
+// naming `dumpfile` as the file to open: the top module's ports in one group, the view starting at
+// `time_start` and the primary marker at `marker` (FST times; -1: none).
+void write_design_gtkwave_save(const std::string& fst_path, const std::string& dumpfile, const std::string& save_path,
+                               int64_t time_start, int64_t marker);
 
 }  // namespace rastersim::rtl

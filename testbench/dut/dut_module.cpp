@@ -56,6 +56,10 @@ extern "C" __attribute__((visibility("default"))) bool rastersim_dut_run(
     return false;
   }
 }
+
+extern "C" __attribute__((visibility("default"))) bool rastersim_dut_memory_port() {
+  return rastersim::dut::HasMemoryPort<Vrastersim_dut>::value;
+}
 #endif
 
 extern "C" __attribute__((visibility("default"))) const char* rastersim_module_abi() {

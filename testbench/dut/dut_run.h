@@ -37,5 +37,7 @@ using UnitNameFunction = const char* (*)();
 }  // namespace rastersim::dut
 
 #define RASTERSIM_DUT_RUN_SYMBOL "rastersim_dut_run"
+// bool (): whether the design's top has the memory port (dut_harness.h HasMemoryPort).
+#define RASTERSIM_DUT_MEMORY_PORT_SYMBOL "rastersim_dut_memory_port"
 #define RASTERSIM_UNIT_RUN_SYMBOL "rastersim_unit_run"
 #define RASTERSIM_UNIT_NAME_SYMBOL "rastersim_unit_name"

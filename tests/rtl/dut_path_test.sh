@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # cosim --dut (docs/verification.md): rastersim's own core behind the verification interface
 # (testbench/dut/rastersim_dut.sv) passes cycle, stream, triangle and frame, and cycle mode's report
-# and coverage equal cosim's without --dut; a latency other than the profile's fails cycle mode on a
-# retirement cycle; the same core with its depth
+# and coverage equal cosim's without --dut; so does the core with the memory port
+# (rastersim_dut_memory.sv, the harness's memory behind it), also with a memory that refuses reads;
+# a latency other than the profile's fails cycle mode on a retirement cycle; the same core with its depth
 # test `<` written `<=` fails frame mode at the default --count, and the printed replay command
 # fails alone; a design that never takes a triangle is a clear stall error naming cmd_ready; bad
-# file lists are bad input (exit 2) naming the file and line.
+# file lists are bad input (exit 2) naming the file and line; --wave writes the design's waveform.
 # Usage: dut_path_test.sh RASTERSIM SOURCE_DIR
 set -euo pipefail
 exe="$1"
@@ -41,6 +42,26 @@ done
   fail "cosim of rastersim_top failed: $(tail -1 top.txt)"
 cmp -s top.txt own-cycle.txt || fail "cycle mode's report differs from cosim's: $(diff top.txt own-cycle.txt | head -5)"
 cmp -s top.json own-cycle.json || fail "cycle mode's coverage JSON differs from cosim's"
+# The memory port: the same report from the harness's memory, no read-back.
+memory=(--dut "$src/testbench/dut/rastersim_dut.f" --top rastersim_dut_memory -G TRAVERSAL_SPAN=0 -G MEMORY_LATENCY=5
+        --traversal bbox --memory-latency 5)
+for mode in cycle stream triangle frame; do
+  "$exe" cosim "${memory[@]}" "${flags[@]}" --count 20 --compare "$mode" > "memory-$mode.txt" 2> "memory-$mode.err" ||
+    fail "the core with the memory port failed --compare $mode: $(grep -E '^frame|passed' "memory-$mode.txt" | head -3)"
+  grep -q "^47 passed, 0 failed$" "memory-$mode.txt" || fail "memory port, --compare $mode: $(tail -1 "memory-$mode.txt")"
+done
+cmp -s top.txt memory-cycle.txt || fail "the memory port's cycle report differs from cosim's: $(diff top.txt memory-cycle.txt | head -5)"
+# A memory that refuses 30 % of the reads: the model delays each refused read, so cycle mode passes
+# only when the harness refuses exactly those (a harness that never refused would retire early).
+"$exe" cosim "${memory[@]}" "${flags[@]}" --count 20 --compare cycle --memory-stall-percent 30 > stalls.txt 2> stalls.err ||
+  fail "the memory port with refusals failed cycle mode: $(grep -E '^frame|passed' stalls.txt | head -3)"
+grep -q "^47 passed, 0 failed$" stalls.txt || fail "refusals: $(tail -1 stalls.txt)"
+# A design that keeps its buffers has no memory to refuse: bad input.
+status=0
+"$exe" cosim "${own[@]}" "${flags[@]}" --count 1 --memory-stall-percent 30 > keeps.txt 2>&1 || status=$?
+[ "$status" -eq 2 ] && grep -q "memory_stall_percent 30: rastersim_dut keeps its buffers" keeps.txt ||
+  fail "refusals for a design without the memory port: exit $status: $(cat keeps.txt)"
+
 # A design whose memory latency is not the profile's: the first retirement a cycle early.
 status=0
 "$exe" cosim --dut "$src/testbench/dut/rastersim_dut.f" --top rastersim_dut -G TRAVERSAL_SPAN=0 -G MEMORY_LATENCY=4 \
@@ -52,7 +73,7 @@ grep -m1 '^frame ' latency.txt | grep -q "retirement cycle: expected cycle [0-9]
 # The depth test's < written <=.
 mkdir -p bug/rtl bug/testbench/dut
 cp "$src"/rtl/*.sv "$src"/rtl/*.vh "$src"/rtl/rastersim.f bug/rtl/
-cp "$src"/testbench/dut/rastersim_dut.sv "$src"/testbench/dut/rastersim_dut.f bug/testbench/dut/
+cp "$src"/testbench/dut/rastersim_dut*.sv "$src"/testbench/dut/rastersim_dut.f bug/testbench/dut/
 sed -i 's/RS_DEPTH_LESS: pass = done_z < mem_rd_depth;/RS_DEPTH_LESS: pass = done_z <= mem_rd_depth;/' bug/rtl/zbuffer.sv
 cmp -s bug/rtl/zbuffer.sv "$src/rtl/zbuffer.sv" && fail "the depth test's line was not found"
 status=0
@@ -92,8 +113,20 @@ status=0
 status=0
 "$exe" cosim --dut bad.f "${flags[@]}" > notop.txt 2>&1 || status=$?
 [ "$status" -eq 2 ] && grep -q "needs --top" notop.txt || fail "--dut without --top: exit $status"
+
+# --wave: the last frame's waveform of the design, a stalled one's up to the stall, a window of
+# cycles from the first handshake, FST or VCD, each with its GTKWave save file.
 status=0
-"$exe" cosim --dut stuck --top rastersim_dut_template --wave w.fst "${flags[@]}" > wave.txt 2>&1 || status=$?
-[ "$status" -eq 2 ] && grep -q -- "--replay-dir" wave.txt || fail "--dut with --wave: exit $status: $(cat wave.txt)"
-[ ! -e w.fst ] || fail "--wave with --dut wrote w.fst"
-echo "dut_path_test: rastersim's core passes cycle, stream, triangle and frame; the latency, the <= depth test, the stall and bad input are caught"
+"$exe" cosim --dut stuck --top rastersim_dut_template --wave w.fst "${flags[@]}" --count 0 --frame 0 > wave.txt 2>&1 || status=$?
+[ "$status" -eq 1 ] && [ -s w.fst ] && grep -q 'dumpfile.*/w.fst"' w.gtkw || fail "--wave of a stalled design: exit $status: $(cat wave.txt)"
+"$exe" cosim "${memory[@]}" "${flags[@]}" --count 1 --wave w.vcd --wave-from 10 --wave-to 20 > vcd.txt 2>&1 ||
+  fail "--wave w.vcd with --dut: $(tail -3 vcd.txt)"
+grep -q '^\$enddefinitions' w.vcd && grep -q 'mem_rd_valid' w.vcd && grep -q 'dumpfile.*/w.vcd"' w.gtkw ||
+  fail "no VCD of the design with its save file"
+# 11 cycles: 22 half-cycle times in the window.
+[ "$(grep -c '^#' w.vcd)" -le 23 ] || fail "the window 10..20 holds $(grep -c '^#' w.vcd) times"
+status=0
+"$exe" cosim --unit zbuffer --dut stuck --top rastersim_dut_template --wave u.fst "${flags[@]}" > unitwave.txt 2>&1 || status=$?
+[ "$status" -eq 2 ] && grep -q -- "--replay-dir" unitwave.txt || fail "--unit with --wave: exit $status: $(cat unitwave.txt)"
+[ ! -e u.fst ] || fail "--wave with --unit wrote u.fst"
+echo "dut_path_test: rastersim's core passes cycle, stream, triangle and frame, with and without the memory port; the latency, the <= depth test, the stall and bad input are caught"
