@@ -267,6 +267,9 @@ nlohmann::ordered_json with_distributions(nlohmann::ordered_json j, verify::Comp
   return j;
 }
 
+// A failing frame's waveform: this many cycles either side of the mismatch.
+constexpr int64_t kWaveAround = 32;
+
 // One frame of a user's design: the model's run, the design's, their comparison by mode. On a
 // mismatch with a replay prefix, the frame again with a waveform at <prefix>.fst.
 struct DesignFrame {
@@ -310,7 +313,6 @@ DesignFrame design_frame(const dut::Design& design, const rtl::CosimCase& c, con
     if (waveform.wave_vcd) rtl::fst_to_vcd(fst_path, waveform.wave_path);
   }
   if (d.passed) return d;
-  constexpr int64_t kAround = 32;
   if (!prefix.empty() && at >= 0) d.message += "; the design's cycle " + std::to_string(at) + ", marked in " + prefix + ".gtkw";
   d.message += "; replay: " + replay;
   if (!prefix.empty()) {
@@ -319,7 +321,7 @@ DesignFrame design_frame(const dut::Design& design, const rtl::CosimCase& c, con
     dut::DutRunOptions wave;
     wave.wave_path = prefix + ".fst";
     wave.wave_window = at >= 0;
-    wave.wave_from = at - kAround, wave.wave_to = at + kAround;
+    wave.wave_from = at - kWaveAround, wave.wave_to = at + kWaveAround;
     rtl::RtlResult again;
     try {
       again = design.run(c.profile, c.triangles, wave);
@@ -328,7 +330,7 @@ DesignFrame design_frame(const dut::Design& design, const rtl::CosimCase& c, con
     d.message += "; waveform: " + wave.wave_path;
     if (at >= 0) {
       const int64_t edge = 2 * (again.first_handshake + at) + 9;  // the rising edge of the mismatch's cycle
-      rtl::write_design_gtkwave_save(wave.wave_path, wave.wave_path, prefix + ".gtkw", edge - 2 * kAround - 1, edge);
+      rtl::write_design_gtkwave_save(wave.wave_path, wave.wave_path, prefix + ".gtkw", edge - 2 * kWaveAround - 1, edge);
     }
   }
   return d;
@@ -341,25 +343,35 @@ DesignFrame unit_design_frame(const dut::Design& design, dut::Unit unit, const r
   DesignFrame d;
   d.model = rtl::run_model(c.profile, c.triangles, c.texture);
   const dut::UnitFrame frame = verify::unit_frame(unit, c.profile, c.triangles, d.model, seed);
+  int64_t at = -1;  // the mismatch's cycle in the unit, -1 for a stall
   try {
     const dut::UnitResult result = design.run_unit(frame);
     d.report = verify::compare_unit(frame, d.model, result, mode, tolerance);
     d.passed = d.report.passed();
     d.message = d.passed ? "" : d.report.summary();
+    if (!d.passed) at = verify::unit_design_cycle(d.report.mismatches.front(), frame, result);
   } catch (const std::runtime_error& e) {
     d.message = e.what();
   }
   if (d.passed) return d;
+  if (!prefix.empty() && at >= 0) d.message += "; the unit's cycle " + std::to_string(at) + ", marked in " + prefix + ".gtkw";
   d.message += "; replay: " + replay;
   if (!prefix.empty()) {
+    // The frame again: the cycles around the mismatch, the marker at it (a stall's waveform holds
+    // the frame up to it).
     dut::DutRunOptions wave;
     wave.wave_path = prefix + ".fst";
+    wave.wave_window = at >= 0;
+    wave.wave_from = at - kWaveAround, wave.wave_to = at + kWaveAround;
     try {
       design.run_unit(frame, wave);
     } catch (const std::runtime_error&) {
-      // The stall is reported above; the waveform holds the frame up to it.
     }
     d.message += "; waveform: " + wave.wave_path;
+    if (at >= 0) {
+      const int64_t edge = 2 * at + 9;  // the rising edge of the mismatch's cycle (after reset's 8 half cycles)
+      rtl::write_design_gtkwave_save(wave.wave_path, wave.wave_path, prefix + ".gtkw", edge - 2 * kWaveAround - 1, edge);
+    }
   }
   return d;
 }

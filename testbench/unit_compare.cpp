@@ -143,4 +143,27 @@ FunctionalReport compare_unit(const dut::UnitFrame& frame, const rtl::RtlResult&
   return report;
 }
 
+int64_t unit_design_cycle(const Mismatch& m, const dut::UnitFrame& frame, const dut::UnitResult& design) {
+  const auto at = [](const std::vector<int64_t>& cycles, size_t k) -> int64_t { return k < cycles.size() ? cycles[k] : -1; };
+  int64_t cycle = -1;
+  if (m.triangle >= 0 && m.x >= 0) {
+    for (const Fragment& f : design.fragments)  // the walker's
+      if (f.tri == m.triangle && f.x == m.x && f.y == m.y) return f.cycle;
+    for (size_t k = 0; k < frame.fragments.size(); ++k) {  // the z-buffer's result of that fragment
+      const Fragment& f = frame.fragments[k];
+      if (f.tri == m.triangle && f.x == m.x && f.y == m.y) cycle = at(design.result_cycles, k);
+      if (cycle >= 0) return cycle;
+    }
+  }
+  if (m.triangle >= 0) {
+    if (m.field == "status" || m.field == "missing decision" || m.field == "extra decision")
+      cycle = at(design.decision_cycles, size_t(m.triangle));
+    for (size_t k = 0; cycle < 0 && k < frame.record_index.size(); ++k)  // a record's field
+      if (frame.record_index[k] == m.triangle) cycle = at(design.record_cycles, k);
+    for (const Fragment& f : design.fragments)  // the walker's first fragment of the triangle
+      if (cycle < 0 && f.tri == m.triangle) cycle = f.cycle;
+  }
+  return cycle >= 0 ? cycle : design.cycles;
+}
+
 }  // namespace rastersim::verify

@@ -29,4 +29,9 @@ dut::UnitFrame unit_frame(dut::Unit unit, const Profile& profile, const std::vec
 FunctionalReport compare_unit(const dut::UnitFrame& frame, const rtl::RtlResult& model, const dut::UnitResult& design,
                               CompareMode mode, const Tolerance& tolerance = {}, size_t max_mismatches = 10);
 
+// The unit's cycle (from the first after reset) nearest a mismatch, for its waveform's marker: the
+// output the mismatch names (a fragment, a depth-test result, a record, a decision), else the
+// frame's end.
+int64_t unit_design_cycle(const Mismatch& m, const dut::UnitFrame& frame, const dut::UnitResult& design);
+
 }  // namespace rastersim::verify

@@ -37,10 +37,15 @@ class UnitSim {
   }
   V& operator*() { return *top_; }
   V* operator->() { return top_.get(); }
+  // Cycle `cycle` begins: with a window, the FST holds only the window's cycles (and no reset).
+  void begin(int64_t cycle) {
+    dumping_ = !options_.wave_window || (cycle >= options_.wave_from && cycle <= options_.wave_to);
+  }
   void half_cycle(int clk) {
     top_->clk = clk;
     top_->eval();
-    if (fst_) fst_->dump(time_++);
+    if (fst_ && dumping_) fst_->dump(time_);
+    ++time_;
   }
   // rst high for 4 cycles; the frame's cycle 0 is the next.
   void reset() {
@@ -62,7 +67,8 @@ class UnitSim {
   std::unique_ptr<VerilatedContext> context_;
   std::unique_ptr<V> top_;
   std::unique_ptr<VerilatedFstC> fst_;
-  uint64_t time_ = 0;
+  uint64_t time_ = 0;  // half cycles: cycle k's rising edge at 2 k + 9
+  bool dumping_ = !options_.wave_window;
   int64_t idle_ = 0;
 };
 
@@ -92,14 +98,23 @@ UnitResult run_setup(const UnitFrame& f, const DutRunOptions& options) {
   size_t next = 0;
   int64_t last_accept = -1;
   for (int64_t cycle = 0;; ++cycle) {
+    sim.begin(cycle);
     const bool offering = next < f.triangles.size();
     sim->cmd_valid = offering;
     if (offering) drive_command(*sim, f.triangles[next]);
     sim.half_cycle(0);
     bool progress = false;
     if (offering && sim->cmd_ready) ++next, last_accept = cycle, progress = true;
-    if (sim->dec_valid) out.decisions.push_back(SetupStatus(sim->dec_status)), progress = true;
-    if (sim->rec_valid) out.records.push_back(unpack_unit_record(sim->rec.data())), progress = true;
+    if (sim->dec_valid) {
+      out.decisions.push_back(SetupStatus(sim->dec_status));
+      out.decision_cycles.push_back(cycle);
+      progress = true;
+    }
+    if (sim->rec_valid) {
+      out.records.push_back(unpack_unit_record(sim->rec.data()));
+      out.record_cycles.push_back(cycle);
+      progress = true;
+    }
     const bool done = next == f.triangles.size() && cycle > last_accept && sim->frame_done;
     sim.half_cycle(1);
     if (done) {
@@ -129,6 +144,7 @@ UnitResult run_walker(const UnitFrame& f, const std::vector<std::vector<uint32_t
   size_t next = 0;
   int64_t last_accept = -1;
   for (int64_t cycle = 0;; ++cycle) {
+    sim.begin(cycle);
     const bool offering = next < f.records.size();
     sim->rec_valid = offering;
     if (offering) {
@@ -178,6 +194,7 @@ UnitResult run_zbuffer(const UnitFrame& f, const DutRunOptions& options) {
   size_t next = 0;
   int64_t last_accept = -1;
   for (int64_t cycle = 0;; ++cycle) {
+    sim.begin(cycle);
     const bool offering = next < f.fragments.size();
     sim->frag_valid = offering;
     if (offering) {
@@ -189,7 +206,11 @@ UnitResult run_zbuffer(const UnitFrame& f, const DutRunOptions& options) {
     sim.half_cycle(0);
     bool progress = false;
     if (offering && sim->frag_ready) ++next, last_accept = cycle, progress = true;
-    if (sim->res_valid) out.results.push_back(sim->res_pass != 0), progress = true;
+    if (sim->res_valid) {
+      out.results.push_back(sim->res_pass != 0);
+      out.result_cycles.push_back(cycle);
+      progress = true;
+    }
     const bool done = next == f.fragments.size() && cycle > last_accept && sim->frame_done;
     sim.half_cycle(1);
     if (done) {
@@ -206,6 +227,7 @@ UnitResult run_zbuffer(const UnitFrame& f, const DutRunOptions& options) {
   out.color.resize(words);
   sim->frag_valid = 0;
   for (size_t a = 0; a < words; ++a) {
+    sim.begin(out.cycles + 1 + int64_t(a));
     sim->rb_addr = uint32_t(a);
     sim.half_cycle(0), sim.half_cycle(1);
     out.depth[a] = uint32_t(sim->rb_depth);

@@ -131,9 +131,11 @@ struct UnitFrame {
 struct UnitResult {
   std::vector<SetupStatus> decisions;
   std::vector<SetupResult> records;
-  std::vector<Fragment> fragments;
+  std::vector<Fragment> fragments;  // each with the cycle it was handed on (Fragment::cycle)
   std::vector<bool> results;
   std::vector<uint32_t> depth, color;
+  // The cycle of each decision, record and result, from the first cycle after reset.
+  std::vector<int64_t> decision_cycles, record_cycles, result_cycles;
   int64_t cycles = 0;
 };
 

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # cosim --unit (docs/verification.md "Checking one unit: cosim --unit"): rastersim's own setup
 # unit, walker and z-buffer behind their unit interfaces (testbench/dut/rastersim_*_unit.sv) pass;
-# a bug injected into a copy of each unit's RTL is caught with the triangle and field named and a
-# replay command that fails alone; a walker that never takes a record is a stall naming rec_ready;
+# a bug injected into a copy of each unit's RTL is caught with the triangle and field named, a
+# waveform window marking the unit's cycle and a replay command that fails alone; --jobs and
+# --shard give the same frames; a walker that never takes a record is a stall naming rec_ready;
 # bad usage is bad input (exit 2).
 # Usage: unit_path_test.sh RASTERSIM SOURCE_DIR
 set -euo pipefail
@@ -67,12 +68,34 @@ PY
   case "$replay" in "rastersim cosim --unit $unit --dut "*" --frame "*) ;; *) fail "$name: no replay command: $line" ;; esac
   wave="${line##*; waveform: }"
   [ -s "$wave" ] || fail "$name: no waveform at $wave"
+  # The window's GTKWave save file with the primary marker at the unit's cycle the line names.
+  save="${wave%.fst}.gtkw"
+  case "$line" in *"; the unit's cycle "*", marked in $save; replay: "*) ;; *) fail "$name: the unit's cycle is not named: $line" ;; esac
+  at="${line#*"; the unit's cycle "}"
+  at="${at%%,*}"
+  grep -q "^\*-[0-9.]* $((2 * at + 9)) " "$save" || fail "$name: no marker at cycle $at's edge $((2 * at + 9)) in $save"
   status=0
   eval "\"$exe\" ${replay#rastersim }" > "$name.replay.txt" 2>&1 || status=$?
   [ "$status" -eq 1 ] || fail "$name: the replay command exited $status, not 1: $replay"
   grep -q "^0 passed, 1 failed$" "$name.replay.txt" || fail "$name: the replay did not fail its one frame: $(tail -1 "$name.replay.txt")"
   echo "unit_path_test: $name caught: ${line:0:200}"
 done
+
+# --jobs and --shard as for a design: the same report from two jobs; two shards that merge into the
+# whole run's frames; a bug's first failing frame the same with two jobs.
+list="$src/testbench/dut/rastersim_setup_unit.f"
+run jobs setup "$list" rastersim_setup_unit --jobs 2 || fail "two jobs failed: $(tail -1 jobs.txt)"
+cmp -s jobs.txt own-setup-stream.txt || fail "two jobs reported otherwise: $(diff own-setup-stream.txt jobs.txt | head -5)"
+for k in 1 2; do
+  run "shard-$k" setup "$list" rastersim_setup_unit --shard "$k/2" --junit "shard-$k.xml" || fail "shard $k/2 failed"
+done
+"$exe" junit-merge shard-1.xml shard-2.xml -o merged.xml > merged.txt 2>&1 || fail "the shards do not merge: $(cat merged.txt)"
+frames="$(sed -n 's/.*: \([0-9]*\) directed and \([0-9]*\) random frames.*/\1 + \2/p' own-setup-stream.txt)"
+grep -q "^merged 2 files: $((frames)) frames, 0 failed$" merged.txt || fail "the shards' frames: $(cat merged.txt), not $((frames))"
+status=0
+run top_edge_bias-jobs setup top_edge_bias/testbench/dut/rastersim_setup_unit.f rastersim_setup_unit --jobs 2 || status=$?
+[ "$status" -eq 1 ] && [ "$(grep -m1 '^frame ' top_edge_bias-jobs.txt | cut -d';' -f1)" = "$(grep -m1 '^frame ' top_edge_bias.txt | cut -d';' -f1)" ] ||
+  fail "two jobs found another first failure: $(grep -m1 '^frame ' top_edge_bias-jobs.txt | cut -c1-200)"
 
 # The walker's installed template as it stands: a unit that never takes a record (one template:
 # the three share the harness's stall watch, and each build costs seconds).
@@ -93,7 +116,6 @@ bad() {  # bad EXPECTED-TEXT ARGS...: cosim ARGS exits 2 printing EXPECTED-TEXT
   [ "$status" -eq 2 ] || fail "cosim $*: exit $status, not 2"
   grep -q -- "$expected" bad.txt || fail "cosim $*: '$expected' not said: $(cat bad.txt)"
 }
-list="$src/testbench/dut/rastersim_setup_unit.f"
 bad "is not setup, walker or zbuffer" --unit raster --dut "$list" --top rastersim_setup_unit
 bad "goes with --dut" --unit setup
 bad "an empty name is not setup, walker or zbuffer" --unit "" --dut "$list" --top rastersim_setup_unit
