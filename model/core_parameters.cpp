@@ -34,6 +34,8 @@ int64_t value_of(const std::string& name, const Profile& p, CoreBounds bounds) {
   // One exponent bit makes a word equal to the fixed-point one (docs/arithmetic.md section 6).
   if (name == "DEPTH_EXPONENT_BITS") return p.depth_exponent_bits >= 2 ? p.depth_exponent_bits : 0;
   if (name == "DEPTH_BIAS") return p.depth_biased() ? 1 : 0;
+  if (name == "PIXEL_CENTER") return int64_t(p.pixel_center);
+  if (name == "FILL_RULE") return int64_t(p.fill_rule);
   throw std::logic_error("core parameter " + name + " has no mapping from the profile");
 }
 

@@ -28,7 +28,9 @@ namespace rastersim {
   X(TEXTURE, Equal)                  \
   X(MAX_TEXTURE_LATENCY, Bound)      \
   X(DEPTH_EXPONENT_BITS, Equal)      \
-  X(DEPTH_BIAS, Bound)
+  X(DEPTH_BIAS, Bound)               \
+  X(PIXEL_CENTER, Equal)             \
+  X(FILL_RULE, Equal)
 
 struct CoreParameter {
   std::string name;

@@ -187,9 +187,10 @@ const std::vector<ProfileKey> kTable = {
     {"pixel_center", KeyType::Choice, 0, 1, nullptr, 0, RS_CHOICES(kPixelCenterNames), nullptr,
      "where a pixel is sampled: its centre (i + 1/2, j + 1/2) or its corner (i, j) "
      "([arithmetic.md](arithmetic.md) section 7)",
-     RtlPlace::Default, "", RS_MEMBER(pixel_center)},
+     RtlPlace::Parameter, "PIXEL_CENTER", RS_MEMBER(pixel_center)},
     {"fill_rule", KeyType::Choice, 0, 3, nullptr, 0, RS_CHOICES(kFillRuleNames), nullptr,
-     "which edges own a sample that lies exactly on them ([arithmetic.md](arithmetic.md) section 7)", RtlPlace::Default, "", RS_MEMBER(fill_rule)},
+     "which edges own a sample that lies exactly on them ([arithmetic.md](arithmetic.md) section 7)", RtlPlace::Parameter,
+     "FILL_RULE", RS_MEMBER(fill_rule)},
     {"vertex_snap", KeyType::Choice, 0, 3, nullptr, 0, RS_CHOICES(kVertexSnapNames), nullptr,
      "how vertex x and y become subpixels: round half up, round half to even, floor, toward zero "
      "([arithmetic.md](arithmetic.md) section 7; the host's work: the RTL takes snapped words)",

@@ -25,7 +25,9 @@ module rastersim_core #(
   parameter integer TEXTURE = 0,               // 1: the texture unit (profile texture_unit)
   parameter integer MAX_TEXTURE_LATENCY = 64,  // cfg_texture_latency <= this
   parameter integer DEPTH_EXPONENT_BITS = 0,   // Ne: 0 (or 1) the fixed-point depth word, 2..4 floating point
-  parameter integer DEPTH_BIAS = 0             // 1: the depth bias (cfg_depth_bias_*)
+  parameter integer DEPTH_BIAS = 0,            // 1: the depth bias (cfg_depth_bias_*)
+  parameter integer PIXEL_CENTER = 0,          // RS_PIXEL_CENTER_*: the sample point (profile pixel_center)
+  parameter integer FILL_RULE = 0              // RS_FILL_*: the edges owning samples on them (profile fill_rule)
 ) (
   input  wire clk,
   input  wire rst,
@@ -137,8 +139,11 @@ module rastersim_core #(
   localparam integer WALKER_LOAD_CYCLES /*verilator public*/ = 1;
   // The encodings of rastersim_widths.vh in one word, from bit 0: RS_DEPTH_NEVER .. RS_DEPTH_ALWAYS
   // (3 bits each), RS_CULL_NONE, _BACK, _FRONT (2), RS_FRONT_CCW, _CW, RS_TRAVERSAL_BBOX, _SPAN,
-  // RS_SHADING_FLAT, _GOURAUD (1), RS_STATUS_DRAWN .. RS_STATUS_NO_CENTRE (3).
-  localparam [50:0] ENCODINGS /*verilator public*/ = {
+  // RS_SHADING_FLAT, _GOURAUD (1), RS_STATUS_DRAWN .. RS_STATUS_NO_CENTRE (3), RS_PIXEL_CENTER_HALF,
+  // _CORNER (1), RS_FILL_TOP_LEFT .. RS_FILL_BOTTOM_RIGHT (2).
+  localparam [60:0] ENCODINGS /*verilator public*/ = {
+      2'(RS_FILL_BOTTOM_RIGHT), 2'(RS_FILL_BOTTOM_LEFT), 2'(RS_FILL_TOP_RIGHT), 2'(RS_FILL_TOP_LEFT),
+      1'(RS_PIXEL_CENTER_CORNER), 1'(RS_PIXEL_CENTER_HALF),
       RS_STATUS_NO_CENTRE, RS_STATUS_OFFSCREEN, RS_STATUS_CULLED, RS_STATUS_DEGENERATE, RS_STATUS_DRAWN,
       RS_SHADING_GOURAUD, RS_SHADING_FLAT, RS_TRAVERSAL_SPAN, RS_TRAVERSAL_BBOX, RS_FRONT_CW, RS_FRONT_CCW,
       RS_CULL_FRONT, RS_CULL_BACK, RS_CULL_NONE,
@@ -157,6 +162,8 @@ module rastersim_core #(
   localparam integer P_MAX_TEXTURE_LATENCY /*verilator public*/ = MAX_TEXTURE_LATENCY;
   localparam integer P_DEPTH_EXPONENT_BITS /*verilator public*/ = DEPTH_EXPONENT_BITS;
   localparam integer P_DEPTH_BIAS /*verilator public*/ = DEPTH_BIAS;
+  localparam integer P_PIXEL_CENTER /*verilator public*/ = PIXEL_CENTER;
+  localparam integer P_FILL_RULE /*verilator public*/ = FILL_RULE;
   localparam integer TEXTURE_REG_BITS /*verilator public*/ = rs_texture_reg_bits(WIDTH, HEIGHT);
   /* verilator lint_on UNUSEDPARAM */
 
@@ -224,7 +231,8 @@ module rastersim_core #(
   assign trace_setup_done = setup_valid;
 
   triangle_setup #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(DEPTH_PLANE_BITS),
-                   .Z_GUARD_BITS(Z_GUARD_BITS), .SETUP_INTERVAL(SETUP_INTERVAL), .TEXTURE(TEXTURE)) setup (
+                   .Z_GUARD_BITS(Z_GUARD_BITS), .SETUP_INTERVAL(SETUP_INTERVAL), .TEXTURE(TEXTURE),
+                   .PIXEL_CENTER(PIXEL_CENTER), .FILL_RULE(FILL_RULE)) setup (
     .clk(clk), .rst(rst), .run(frame_ready), .free(setup_free), .cfg_cull(cull_q), .cfg_front_face(front_face_q),
     .in_valid(cmd_valid && frame_ready && credit_free), .in_ready(setup_ready),
     .in_x({cmd_x2, cmd_x1, cmd_x0}), .in_y({cmd_y2, cmd_y1, cmd_y0}), .in_z({cmd_z2, cmd_z1, cmd_z0}),

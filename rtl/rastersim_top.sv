@@ -17,7 +17,9 @@ module rastersim_top #(
   parameter integer TEXTURE = 0,               // 1: the texture unit and its memory
   parameter integer MAX_TEXTURE_LATENCY = 64,
   parameter integer DEPTH_EXPONENT_BITS = 0,   // as rastersim_core's
-  parameter integer DEPTH_BIAS = 0
+  parameter integer DEPTH_BIAS = 0,
+  parameter integer PIXEL_CENTER = 0,          // as rastersim_core's
+  parameter integer FILL_RULE = 0
 ) (
   input  wire clk,
   input  wire rst,
@@ -98,7 +100,7 @@ module rastersim_top #(
                    .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY),
                    .MAX_SETUP_FIFO_DEPTH(MAX_SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL), .TEXTURE(TEXTURE),
                    .MAX_TEXTURE_LATENCY(MAX_TEXTURE_LATENCY), .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS),
-                   .DEPTH_BIAS(DEPTH_BIAS)) core (
+                   .DEPTH_BIAS(DEPTH_BIAS), .PIXEL_CENTER(PIXEL_CENTER), .FILL_RULE(FILL_RULE)) core (
     .clk(clk), .rst(rst), .cfg_depth_func(cfg_depth_func), .cfg_depth_write(cfg_depth_write),
     .cfg_cull(cfg_cull), .cfg_front_face(cfg_front_face), .cfg_traversal(cfg_traversal),
     .cfg_shading(cfg_shading), .cfg_memory_latency(cfg_memory_latency),

@@ -22,7 +22,9 @@ module triangle_setup #(
   parameter integer Z_BITS = 24,         // the depth plane's bits (docs/arithmetic.md section 6)
   parameter integer Z_GUARD_BITS = 0,
   parameter integer SETUP_INTERVAL = 0,  // 0: serial (one shared datapath); 2..64: pipelined, initiation interval
-  parameter integer TEXTURE = 0          // 1: the S, T, Q planes (profile texture_unit)
+  parameter integer TEXTURE = 0,         // 1: the S, T, Q planes (profile texture_unit)
+  parameter integer PIXEL_CENTER = 0,    // RS_PIXEL_CENTER_*: the sample point, half or corner (profile pixel_center)
+  parameter integer FILL_RULE = 0        // RS_FILL_*: the edges that own samples on them (profile fill_rule)
 ) (
   input  wire clk,
   input  wire rst,
@@ -65,6 +67,8 @@ module triangle_setup #(
   `RS_REQUIRE(illegal_z_guard_bits, Z_GUARD_BITS >= 0 && Z_GUARD_BITS <= 24, "triangle_setup: Z_GUARD_BITS must be 0 (derived) or 1..24")
   `RS_REQUIRE(illegal_setup_interval, SETUP_INTERVAL == 0 || (SETUP_INTERVAL >= 2 && SETUP_INTERVAL <= 64), "triangle_setup: SETUP_INTERVAL must be 0 (serial) or 2..64")
   `RS_REQUIRE(illegal_texture, TEXTURE == 0 || TEXTURE == 1, "triangle_setup: TEXTURE must be 0 or 1")
+  `RS_REQUIRE(illegal_pixel_center, PIXEL_CENTER == 0 || PIXEL_CENTER == 1, "triangle_setup: PIXEL_CENTER must be 0 (half) or 1 (corner)")
+  `RS_REQUIRE(illegal_fill_rule, FILL_RULE >= 0 && FILL_RULE <= 3, "triangle_setup: FILL_RULE must be 0..3")
 
   localparam integer S = SUBPIXEL_BITS;
   localparam integer F = rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS);
@@ -81,12 +85,23 @@ module triangle_setup #(
   localparam integer BB = COORD_BITS + 2;           // bounding-box arithmetic, signed pixels
   // Plane numerators sum_k v_k e_k, signed (pipelined unit): v of N bits, or m_t with TEXTURE.
   localparam integer NB = (TEXTURE != 0 ? RS_TEXTURE_VERTEX_BITS : Z_BITS) + EDGE_BITS + 4;
-  localparam integer HALF = 1 << (S - 1);   // half a pixel in subpixels
+  // The sample point within a pixel, subpixels: half a pixel, or 0 at the corner (arithmetic.md 7).
+  localparam integer SAMPLE = PIXEL_CENTER == RS_PIXEL_CENTER_CORNER ? 0 : 1 << (S - 1);
+  // Which edges own the samples on them (FILL_RULE): left (else right) ones, top (else bottom) ones.
+  localparam [0:0] OWN_LEFT = FILL_RULE == RS_FILL_TOP_LEFT || FILL_RULE == RS_FILL_BOTTOM_LEFT;
+  localparam [0:0] OWN_TOP = FILL_RULE == RS_FILL_TOP_LEFT || FILL_RULE == RS_FILL_TOP_RIGHT;
+  // Whether an edge owns the samples on it, from the signs of its -dy and dx (the ordered triangle
+  // has its interior to the right as y points down: -dy > 0 is a left edge, a horizontal edge with
+  // dx > 0 a top one); model/triangle_setup.cpp owns_samples_on_edge.
+  function automatic owns_samples(input ndy_positive, input ndy_negative, input dx_positive, input dx_negative);
+    owns_samples = ndy_positive || ndy_negative ? (OWN_LEFT ? ndy_positive : ndy_negative)
+                                                : (OWN_TOP ? dx_positive : dx_negative);
+  endfunction
   localparam integer ONE_LESS = (1 << S) - 1;  // one pixel less one subpixel
   localparam integer X_LAST = WIDTH - 1;
   localparam integer Y_LAST = HEIGHT - 1;
 
-  localparam signed [BB-1:0] HALF_B = HALF[BB-1:0];
+  localparam signed [BB-1:0] SAMPLE_B = SAMPLE[BB-1:0];
   localparam signed [BB-1:0] ONE_LESS_B = ONE_LESS[BB-1:0];
   localparam signed [BB-1:0] X_LAST_B = X_LAST[BB-1:0];
   localparam signed [BB-1:0] Y_LAST_B = Y_LAST[BB-1:0];
@@ -175,11 +190,11 @@ module triangle_setup #(
   // The extremes the box is cut from: x_min .. y_max themselves in the pipelined unit, registered
   // copies in the serial unit (below).
   wire signed [BB-1:0] box_x_min, box_x_max, box_y_min, box_y_max;
-  // Pixel i is a candidate when its centre i 2^S + 2^(S-1) lies in [min, max].
-  wire signed [BB-1:0] bx0_num = box_x_min - HALF_B + ONE_LESS_B;
-  wire signed [BB-1:0] by0_num = box_y_min - HALF_B + ONE_LESS_B;
-  wire signed [BB-1:0] bx1_num = box_x_max - HALF_B;
-  wire signed [BB-1:0] by1_num = box_y_max - HALF_B;
+  // Pixel i is a candidate when its sample point i 2^S + SAMPLE lies in [min, max].
+  wire signed [BB-1:0] bx0_num = box_x_min - SAMPLE_B + ONE_LESS_B;
+  wire signed [BB-1:0] by0_num = box_y_min - SAMPLE_B + ONE_LESS_B;
+  wire signed [BB-1:0] bx1_num = box_x_max - SAMPLE_B;
+  wire signed [BB-1:0] by1_num = box_y_max - SAMPLE_B;
   wire signed [BB-1:0] bx0_raw = bx0_num >>> S;
   wire signed [BB-1:0] by0_raw = by0_num >>> S;
   wire signed [BB-1:0] bx1_raw = bx1_num >>> S;
@@ -301,16 +316,15 @@ module triangle_setup #(
         end
       end
     end
-    // The top-left rule's bias per edge, registered beside the deltas so that no step waits for
+    // The fill rule's bias per edge, registered beside the deltas so that no step waits for
     // their compares: the cycle after the vertices are loaded from the deltas (nothing reads it
-    // before DECIDE), and in the swap from the deltas as they turn round (-dy > 0 is dy < 0).
-    // Interior to the right (dy < 0) is a left edge; horizontal with interior below is top.
+    // before DECIDE), and in the swap from the deltas as they turn round (each sign inverted).
     reg [2:0] bias_q;
     integer e;
     always @(posedge clk) begin
       for (e = 0; e < 3; e = e + 1)
-        bias_q[e] <= swap_vertices ? !(ndy_q[2 - e] < 0 || (ndy_q[2 - e] == 0 && dx_q[2 - e] < 0))
-                                   : !(ndy_q[e] > 0 || (ndy_q[e] == 0 && dx_q[e] > 0));
+        bias_q[e] <= swap_vertices ? !owns_samples(ndy_q[2 - e] < 0, ndy_q[2 - e] > 0, dx_q[2 - e] < 0, dx_q[2 - e] > 0)
+                                   : !owns_samples(ndy_q[e] > 0, ndy_q[e] < 0, dx_q[e] > 0, dx_q[e] < 0);
     end
     wire signed [DELTA_BITS-1:0] dx [0:2];
     wire signed [DELTA_BITS-1:0] ndy [0:2];
@@ -535,8 +549,8 @@ module triangle_setup #(
     assign box_no_centre = box_no_centre_q;
 
     // ---- Operands of the load cycle ----
-    wire signed [BB-1:0] centre_x = (box_x0 <<< S) + HALF_B;
-    wire signed [BB-1:0] centre_y = (box_y0 <<< S) + HALF_B;
+    wire signed [BB-1:0] centre_x = (box_x0 <<< S) + SAMPLE_B;  // the first candidate's sample point
+    wire signed [BB-1:0] centre_y = (box_y0 <<< S) + SAMPLE_B;
     wire signed [BB-1:0] rel_x = centre_x - BB'(vx_q[edge_k]);
     wire signed [BB-1:0] rel_y = centre_y - BB'(vy_q[edge_k]);
     // Plane p's vertex values: depth and colour unsigned, S, T, Q m_t bits signed (Z_BITS < m_t).
@@ -808,8 +822,8 @@ module triangle_setup #(
     assign box_y_max = y_max;
     assign box_offscreen = offscreen;
     assign box_no_centre = bx0 > bx1 || by0 > by1;
-    wire signed [BB-1:0] centre_x = (bx0 <<< S) + HALF_B;
-    wire signed [BB-1:0] centre_y = (by0 <<< S) + HALF_B;
+    wire signed [BB-1:0] centre_x = (bx0 <<< S) + SAMPLE_B;  // the first candidate's sample point
+    wire signed [BB-1:0] centre_y = (by0 <<< S) + SAMPLE_B;
     /* verilator lint_on UNUSEDSIGNAL */
 
     // An edge slot's operands for edge k at [k*EOP]: {bias, dx, ndy, rel_x, rel_y, E (accumulator)}.
@@ -830,8 +844,7 @@ module triangle_setup #(
         wire signed [DELTA_BITS-1:0] ndy = DELTA_BITS'(oy[k]) - DELTA_BITS'(oy[(k + 1) % 3]);
         wire signed [RLB-1:0] rel_x = RLB'(centre_x) - RLB'(ox[k]);
         wire signed [RLB-1:0] rel_y = RLB'(centre_y) - RLB'(oy[k]);
-        // Interior to the right (dy < 0) is a left edge; horizontal with interior below is top.
-        wire bias = !(ndy > 0 || (ndy == 0 && dx > 0));
+        wire bias = !owns_samples(ndy > 0, ndy < 0, dx > 0, dx < 0);
         assign edge_step_x[k] = EDGE_STEP_X_BITS'({ndy, {S{1'b0}}});
         assign edge_step_y[k] = EDGE_STEP_Y_BITS'({dx, {S{1'b0}}});
         assign front_edges[k*EOP +: EOP] = {bias, dx, ndy, rel_x, rel_y, {EDGE_BITS{1'b0}}};

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Profiles the build has no verilated RTL for run anyway (docs/debugging.md "Any profile on the RTL
-# backends"): a 48x48 profile through --backend rtl, cosim and systemc, and a textured 48x32 one
+# backends"): a 48x48 profile, sampling pixel corners by the bottom-left fill rule (the core's
+# PIXEL_CENTER and FILL_RULE), through --backend rtl, cosim and systemc, and a textured 48x32 one
 # through systemc, verilated on demand into a cache of this test's own. Checks that two runs started together build the module once and agree;
 # the outputs equal the model's; a later run loads the module without building (and prints how long
 # it took); a bad cache folder, an invalid profile or a stall pattern (no RTL build runs one) is an
@@ -13,9 +14,12 @@ trap 'rm -rf "$work"' EXIT
 cd "$work"
 export RASTERSIM_CACHE_DIR="$work/cache"
 fail() { echo "check-modules-on-demand: $*"; exit 1; }
-profile=(--width 48 --height 48 --scene default)
+conventions=(--pixel-center corner --fill-rule bottom_left)
+profile=(--width 48 --height 48 --scene default "${conventions[@]}")
 
 "$exe" render --backend model "${profile[@]}" -o model.png --fragments model.csv > /dev/null
+"$exe" render --backend model --width 48 --height 48 --scene default -o default.png --fragments default.csv > /dev/null
+cmp -s default.csv model.csv && fail "the conventions change no fragment of this scene: the test would not see them"
 
 # Two runs at once: one builds, the other waits for it; both get the same module.
 "$exe" render --backend rtl "${profile[@]}" -o a.png --fragments a.csv > a.out 2> a.err & first=$!
@@ -44,7 +48,7 @@ echo "second run of render --backend rtl ${profile[*]}: $(( ($(date +%s%N) - sta
 cmp -s c.png model.png || fail "the second run's image differs from the model's"
 
 # cosim takes the same module; random frames vary the runtime settings around it.
-"$exe" cosim --width 48 --height 48 --count 20 > cosim.out 2> cosim.err || fail "cosim failed: $(tail -3 cosim.out)"
+"$exe" cosim --width 48 --height 48 "${conventions[@]}" --count 20 > cosim.out 2> cosim.err || fail "cosim failed: $(tail -3 cosim.out)"
 grep -Eq '^[0-9]+ passed, 0 failed' cosim.out || fail "cosim did not pass: $(tail -1 cosim.out)"
 [ ! -s cosim.err ] || fail "cosim rebuilt the module: $(cat cosim.err)"
 

@@ -61,6 +61,8 @@ constexpr uint64_t enum_encodings() {
   for (SetupStatus s : {SetupStatus::Drawn, SetupStatus::Degenerate, SetupStatus::Culled, SetupStatus::Offscreen,
                        SetupStatus::NoCentre})
     put(int(s), 3);
+  put(int(PixelCenter::Half), 1), put(int(PixelCenter::Corner), 1);
+  for (FillRule f : {FillRule::TopLeft, FillRule::TopRight, FillRule::BottomLeft, FillRule::BottomRight}) put(int(f), 2);
   return word;
 }
 

@@ -171,8 +171,7 @@ INSTANTIATE_TEST_SUITE_P(CentresRoundingsTraversals, Rounding_,
 
 TEST(Conventions, RastersimsRtlRefusesTheConventionsItLacks) {
   EXPECT_EQ(rtl_convention_error(Profile{}), "");
-  for (const auto& [key, value] : {std::pair{"pixel_center", "corner"}, std::pair{"fill_rule", "bottom_right"},
-                                   std::pair{"depth_rounding", "truncate"}, std::pair{"color_rounding", "truncate"}}) {
+  for (const auto& [key, value] : {std::pair{"depth_rounding", "truncate"}, std::pair{"color_rounding", "truncate"}}) {
     Profile p;
     ASSERT_EQ(set_profile_key(p, key, value), "");
     const std::string error = rtl_convention_error(p);
@@ -181,6 +180,11 @@ TEST(Conventions, RastersimsRtlRefusesTheConventionsItLacks) {
   Profile snapped;  // snapping is the host's: the RTL takes snapped words
   snapped.vertex_snap = VertexSnap::TowardZero;
   EXPECT_EQ(rtl_convention_error(snapped), "");
+  // The sample point and the fill rule are build parameters of the core (PIXEL_CENTER, FILL_RULE).
+  Profile geometry;
+  geometry.pixel_center = PixelCenter::Corner;
+  geometry.fill_rule = FillRule::BottomRight;
+  EXPECT_EQ(rtl_convention_error(geometry), "");
 }
 
 // cosim's profile line names the conventions that are not rastersim's.

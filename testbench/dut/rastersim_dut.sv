@@ -12,7 +12,10 @@ module rastersim_dut #(
   parameter integer SETUP_INTERVAL = 4,
   parameter integer TRAVERSAL_SPAN = 1,   /// 1: span, 0: bbox
   parameter integer MEMORY_LATENCY = 2,   /// the on-chip memory's read latency L
-  parameter integer SETUP_FIFO_DEPTH = 8
+  parameter integer SETUP_FIFO_DEPTH = 8,
+  // The conventions (the profile's pixel_center and fill_rule, as rastersim_core's parameters).
+  parameter integer PIXEL_CENTER = 0,
+  parameter integer FILL_RULE = 0
 ) (
   input  wire clk,
   input  wire rst,
@@ -52,7 +55,8 @@ module rastersim_dut #(
   wire [23:0] mem_wr_rgb;
   rastersim_dut_memory #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
                          .SETUP_INTERVAL(SETUP_INTERVAL), .TRAVERSAL_SPAN(TRAVERSAL_SPAN),
-                         .MEMORY_LATENCY(MEMORY_LATENCY), .SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH)) dut (
+                         .MEMORY_LATENCY(MEMORY_LATENCY), .SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH),
+                         .PIXEL_CENTER(PIXEL_CENTER), .FILL_RULE(FILL_RULE)) dut (
     .clk(clk), .rst(rst), .cfg_depth_func(cfg_depth_func), .cfg_depth_write(cfg_depth_write),
     .cfg_depth_clear(cfg_depth_clear), .cfg_cull(cfg_cull), .cfg_front_face(cfg_front_face),
     .cfg_shading(cfg_shading), .cmd_valid(cmd_valid), .cmd_ready(cmd_ready),

@@ -19,7 +19,10 @@ module rastersim_dut_memory #(
   parameter integer SETUP_INTERVAL = 4,
   parameter integer TRAVERSAL_SPAN = 1,   /// 1: span, 0: bbox
   parameter integer MEMORY_LATENCY = 2,   /// the memory's read latency L (the profile's memory_latency)
-  parameter integer SETUP_FIFO_DEPTH = 8
+  parameter integer SETUP_FIFO_DEPTH = 8,
+  // The conventions (the profile's pixel_center and fill_rule, as rastersim_core's parameters).
+  parameter integer PIXEL_CENTER = 0,
+  parameter integer FILL_RULE = 0
 ) (
   input  wire clk,
   input  wire rst,
@@ -78,7 +81,7 @@ module rastersim_dut_memory #(
   /* verilator lint_off PINCONNECTEMPTY */
   rastersim_core #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
                   .MAX_MEMORY_LATENCY(MEMORY_LATENCY), .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH),
-                  .SETUP_INTERVAL(SETUP_INTERVAL)) core (
+                  .SETUP_INTERVAL(SETUP_INTERVAL), .PIXEL_CENTER(PIXEL_CENTER), .FILL_RULE(FILL_RULE)) core (
     .clk(clk), .rst(rst), .cfg_depth_func(cfg_depth_func), .cfg_depth_write(cfg_depth_write),
     .cfg_cull(cfg_cull), .cfg_front_face(cfg_front_face),
     .cfg_traversal(TRAVERSAL_SPAN[0]), .cfg_shading(cfg_shading),
@@ -106,7 +109,7 @@ module rastersim_dut_memory #(
   assign mem_rd_addr = 32'(rd_addr);
   assign mem_wr_addr = 32'(wr_addr);
   /* verilator lint_off UNUSEDSIGNAL */
-  wire unused = cfg_depth_clear;  // the harness's memory clears itself
+  wire unused = ^cfg_depth_clear;  // the harness's memory clears itself
   /* verilator lint_on UNUSEDSIGNAL */
 
   assign cmd_ready = cmd_ready_core && frame_ready;

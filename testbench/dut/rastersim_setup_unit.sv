@@ -2,8 +2,8 @@
 // (docs/verification.md "Checking one unit: cosim --unit"): `rastersim cosim --unit setup --dut
 // testbench/dut/rastersim_setup_unit.f --top rastersim_setup_unit`. Its packed record's fields
 // (rastersim_record.vh) are sign-extended into setup_record_t; it carries no owns_samples flag, so
-// each edge's is formed from its steps by the top-left rule it implements (docs/arithmetic.md: a
-// left edge has step_x = -dy 2^S > 0, a top edge step_x = 0 and step_y = dx 2^S > 0).
+// each edge's is formed from its steps by the fill rule the unit is built with (docs/arithmetic.md
+// section 7: a left edge has step_x = -dy 2^S > 0, a top edge step_x = 0 and step_y = dx 2^S > 0).
 module rastersim_setup_unit #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
@@ -11,7 +11,10 @@ module rastersim_setup_unit #(
   parameter integer Z_BITS = 24,
   parameter integer FRACTION_BITS = 9,
   // The micro-architecture (not part of the interface): 0 serial, 2..64 pipelined.
-  parameter integer SETUP_INTERVAL = 4
+  parameter integer SETUP_INTERVAL = 4,
+  // The conventions (the profile's pixel_center and fill_rule, as rastersim_core's parameters).
+  parameter integer PIXEL_CENTER = 0,
+  parameter integer FILL_RULE = 0
 ) (
   input  wire clk,
   input  wire rst,
@@ -46,7 +49,8 @@ module rastersim_setup_unit #(
   wire [rs_rec_lsb(20, WIDTH, HEIGHT, SUBPIXEL_BITS, Z_BITS, Z_GUARD_BITS)-1:0] r;
   /* verilator lint_off PINCONNECTEMPTY */
   triangle_setup #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
-                   .Z_GUARD_BITS(Z_GUARD_BITS), .SETUP_INTERVAL(SETUP_INTERVAL), .TEXTURE(0)) setup (
+                   .Z_GUARD_BITS(Z_GUARD_BITS), .SETUP_INTERVAL(SETUP_INTERVAL), .TEXTURE(0),
+                   .PIXEL_CENTER(PIXEL_CENTER), .FILL_RULE(FILL_RULE)) setup (
     .clk(clk), .rst(rst), .run(!rst), .free(), .cfg_cull(cfg_cull), .cfg_front_face(cfg_front_face),
     .in_valid(cmd_valid), .in_ready(cmd_ready),
     .in_x({cmd_x2[COORD_BITS-1:0], cmd_x1[COORD_BITS-1:0], cmd_x0[COORD_BITS-1:0]}),
@@ -63,6 +67,8 @@ module rastersim_setup_unit #(
   wire [EB-1:0]  start [0:2];
   wire [SXB-1:0] step_x [0:2];
   wire [SYB-1:0] step_y [0:2];
+  localparam [0:0] OWN_LEFT = FILL_RULE == RS_FILL_TOP_LEFT || FILL_RULE == RS_FILL_BOTTOM_LEFT;
+  localparam [0:0] OWN_TOP = FILL_RULE == RS_FILL_TOP_LEFT || FILL_RULE == RS_FILL_TOP_RIGHT;
   wire [2:0] owns_samples;
   genvar k;
   generate
@@ -70,7 +76,10 @@ module rastersim_setup_unit #(
       assign start[k] = r[LSB_EDGE_START + k*EB +: EB];
       assign step_x[k] = r[LSB_EDGE_STEP_X + k*SXB +: SXB];
       assign step_y[k] = r[LSB_EDGE_STEP_Y + k*SYB +: SYB];
-      assign owns_samples[k] = $signed(step_x[k]) > 0 || (step_x[k] == '0 && $signed(step_y[k]) > 0);
+      wire left_edge = $signed(step_x[k]) > 0, right_edge = $signed(step_x[k]) < 0;
+      wire top_edge = $signed(step_y[k]) > 0, bottom_edge = $signed(step_y[k]) < 0;
+      assign owns_samples[k] = left_edge || right_edge ? (OWN_LEFT ? left_edge : right_edge)
+                                                       : (OWN_TOP ? top_edge : bottom_edge);
     end
   endgenerate
   wire [ZR-1:0] depth_start = r[LSB_DEPTH_START +: ZR];

@@ -16,12 +16,13 @@
 namespace rastersim::vectors {
 
 // Bumped when a file, a layout or the testbench's contract changes incompatibly (docs/vectors.md).
-constexpr int kFormatVersion = 6;  // 2: check_manifest.py added; 3: status no_centre, its counter;
+constexpr int kFormatVersion = 7;  // 2: check_manifest.py added; 3: status no_centre, its counter;
                                    // 4: one testbench with a parameter file, +functional;
                                    // 5: the planes along the left edges in setup.hex, setup cycles;
                                    // 6: commands' depths in the depth plane's bits, the depth word's
                                    //    and the depth bias's parameters; the texture unit (texture.hex,
-                                   //    S, T, Q commands, the texture record), two frame counters
+                                   //    S, T, Q commands, the texture record), two frame counters;
+                                   // 7: the conventions' parameters PIXEL_CENTER and FILL_RULE
 
 // Where the triangles came from, recorded in the manifest and in the regeneration command.
 struct Source {

@@ -112,6 +112,9 @@ std::string params_text(const PackageFacts& k) {
     << "localparam integer DEPTH_EXPONENT_BITS = " << core_parameter(p, "DEPTH_EXPONENT_BITS")
     << ";  // 0: the fixed-point depth word; Ne: the floating-point word\n"
     << "localparam integer DEPTH_BIAS = " << core_parameter(p, "DEPTH_BIAS") << ";  // 1: the core's depth bias stage\n"
+    << "localparam integer PIXEL_CENTER = " << core_parameter(p, "PIXEL_CENTER") << ";  // 0: pixel centres; 1: corners\n"
+    << "localparam integer FILL_RULE = " << core_parameter(p, "FILL_RULE")
+    << ";  // 0 top_left, 1 top_right, 2 bottom_left, 3 bottom_right\n"
     << "localparam integer TEXTURE = " << core_parameter(p, "TEXTURE") << ";  // 1: the texture unit and texture.hex\n"
     << "localparam integer TEXTURE_LATENCY = " << p.texture_latency
     << ";  // cfg_texture_latency and MAX_TEXTURE_LATENCY\n"

@@ -45,10 +45,13 @@ class HwCost(unittest.TestCase):
         plain = hw_cost.unit_parameters("rastersim_core", profile)
         self.assertFalse(set(hw_cost.BUILD_OPTIONS) & set(plain))  # defaults: cached keys unchanged
         self.assertEqual(plain["SETUP_INTERVAL"], 0)
-        profile.update({"TEXTURE": 1, "MAX_TEXTURE_LATENCY": 8, "DEPTH_EXPONENT_BITS": 3, "DEPTH_BIAS": 1})
+        changed = {"TEXTURE": 1, "MAX_TEXTURE_LATENCY": 8, "DEPTH_EXPONENT_BITS": 3, "DEPTH_BIAS": 1, "PIXEL_CENTER": 1,
+                   "FILL_RULE": 3}
+        profile.update(changed)
         core = hw_cost.unit_parameters("rastersim_core", profile)
-        self.assertEqual({k: core[k] for k in hw_cost.BUILD_OPTIONS},
-                         {"TEXTURE": 1, "MAX_TEXTURE_LATENCY": 8, "DEPTH_EXPONENT_BITS": 3, "DEPTH_BIAS": 1})
+        self.assertEqual({k: core[k] for k in hw_cost.BUILD_OPTIONS}, changed)
+        self.assertEqual((hw_cost.unit_parameters("triangle_setup", profile).get("PIXEL_CENTER"),
+                          hw_cost.unit_parameters("triangle_setup", profile).get("FILL_RULE")), (1, 3))
         z_adder = hw_cost.unit_parameters("z_adder", profile)
         self.assertEqual((z_adder.get("DEPTH_EXPONENT_BITS"), z_adder.get("DEPTH_BIAS")), (3, 1))
         self.assertNotIn("SETUP_INTERVAL", z_adder)  # declared by the core, not by the Z adder

@@ -41,7 +41,7 @@ grep -q "^compare triangle: depth error (design - model) [1-9][0-9]* samples, er
 # and the field its first mismatch names ('#' between them).
 mkdir -p bug
 mutants=(
-  "top_edge_bias#setup#triangle_setup.sv#wire bias = !(ndy > 0 || (ndy == 0 && dx > 0));#wire bias = !(ndy > 0 || (ndy == 0 && dx < 0));#: edge[0-2]_start: expected"
+  "top_edge_bias#setup#triangle_setup.sv#wire bias = !owns_samples(ndy > 0, ndy < 0, dx > 0, dx < 0);#wire bias = !owns_samples(ndy > 0, ndy < 0, dx < 0, dx > 0);#: edge[0-2]_start: expected"
   "left_edge_carry#walker#plane_register.sv#along_step_carry_q[k] <= record_step[k] - step_x_in;#along_step_carry_q[k] <= record_step[k] + step_x_in;#: \(z\|color\): expected"
   "less_as_lequal#zbuffer#zbuffer.sv#RS_DEPTH_LESS: pass = done_z < mem_rd_depth;#RS_DEPTH_LESS: pass = done_z <= mem_rd_depth;#: pass: expected"
 )
@@ -96,6 +96,15 @@ status=0
 run top_edge_bias-jobs setup top_edge_bias/testbench/dut/rastersim_setup_unit.f rastersim_setup_unit --jobs 2 || status=$?
 [ "$status" -eq 1 ] && [ "$(grep -m1 '^frame ' top_edge_bias-jobs.txt | cut -d';' -f1)" = "$(grep -m1 '^frame ' top_edge_bias.txt | cut -d';' -f1)" ] ||
   fail "two jobs found another first failure: $(grep -m1 '^frame ' top_edge_bias-jobs.txt | cut -c1-200)"
+
+# The setup unit built with the other sample point and a fill rule (PIXEL_CENTER, FILL_RULE): it
+# passes against the profile that says so, and not against the default one.
+corner=(-G PIXEL_CENTER=1 -G FILL_RULE=3)
+run corner setup "$list" rastersim_setup_unit "${corner[@]}" --pixel-center corner --fill-rule bottom_right ||
+  fail "the setup unit at pixel corners, bottom_right failed: $(grep -m1 '^frame' corner.txt || tail -3 corner.err)"
+status=0
+run corner-default setup "$list" rastersim_setup_unit "${corner[@]}" || status=$?
+[ "$status" -eq 1 ] || fail "the setup unit at pixel corners passed against the default conventions (exit $status)"
 
 # The walker's installed template as it stands: a unit that never takes a record (one template:
 # the three share the harness's stall watch, and each build costs seconds).
