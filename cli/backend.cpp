@@ -67,7 +67,7 @@ std::string design_library(const modules::DutDesign& design) {
 void ensure_rtl_configuration(const Profile& profile) {
   // No build runs a z-buffer memory stall pattern (rastersim_top's memory has none): configuration_error
   // says so without a module being built first.
-  if (validate(profile).empty() && rtl_convention_error(profile).empty() && profile.memory_stall_percent == 0 &&
+  if (validate(profile).empty() && profile.memory_stall_percent == 0 &&
       !rtl::has_configuration(profile))
     rtl::load_module(module_for(modules::Kind::Rtl, profile));
 }
@@ -75,8 +75,6 @@ void ensure_rtl_configuration(const Profile& profile) {
 
 void check_backend_profile(Backend backend, const Profile& profile) {
   if (backend == Backend::Model) return;
-  if (validate(profile).empty())
-    if (const std::string convention = rtl_convention_error(profile); !convention.empty()) throw InputError(convention);
 #ifdef RASTERSIM_HAVE_SYSTEMC
   if (backend == Backend::Systemc) {
     if (validate(profile).empty() && !systemc_backend().geometry_error(profile).empty())

@@ -95,8 +95,11 @@ HardwareCost hardware_cost(const Profile& p, const std::string& rtl_dir, const s
                              "design -reset\n" + read + "\n" + chparam +
                              "\nsynth_ice40 -top rastersim_core -run :check\ntee -q -o ICE40 stat\n";
 
-  std::string key = hardware_parameters(p) + " " + digest(sources, script);
-  std::replace(key.begin(), key.end(), ' ', '_');
+  // The entry's name: the parameters' values in core_parameters() order (their names are in the
+  // script's digest), short enough for any file system's 255-byte names.
+  std::string key = "core";
+  for (const CoreParameter& c : core_parameters(p)) key += "-" + std::to_string(c.value);
+  key += "-" + digest(sources, script);
   const fs::path cache_dir = cache_dir_or_empty.empty() ? default_cache_dir() : cache_dir_or_empty;
   const fs::path entry = cache_dir / (key + ".stat");
   std::string generic, ice40;

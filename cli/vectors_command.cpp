@@ -94,8 +94,6 @@ int run_vectors(const VectorsOptions& o) {
   if (o.top == "rastersim_top" && profile.memory_stall_percent > 0)
     throw InputError("--top rastersim_top with memory_stall_percent " + std::to_string(profile.memory_stall_percent) +
                      ": its on-chip memory has no back-pressure; use --top rastersim_core");
-  // A package's expected words are rastersim's RTL's: its conventions only.
-  if (const std::string convention = rtl_convention_error(profile); !convention.empty()) throw InputError(convention);
   if (!o.testbench_path.empty() && std::filesystem::path(o.testbench_path).is_absolute())
     throw InputError("--testbench-path must be relative to the package folder (a package must not depend on where it was "
                      "made)");

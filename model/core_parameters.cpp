@@ -36,6 +36,8 @@ int64_t value_of(const std::string& name, const Profile& p, CoreBounds bounds) {
   if (name == "DEPTH_BIAS") return p.depth_biased() ? 1 : 0;
   if (name == "PIXEL_CENTER") return int64_t(p.pixel_center);
   if (name == "FILL_RULE") return int64_t(p.fill_rule);
+  if (name == "DEPTH_ROUNDING") return int64_t(p.depth_rounding);
+  if (name == "COLOR_ROUNDING") return int64_t(p.color_rounding);
   throw std::logic_error("core parameter " + name + " has no mapping from the profile");
 }
 

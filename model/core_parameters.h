@@ -30,7 +30,9 @@ namespace rastersim {
   X(DEPTH_EXPONENT_BITS, Equal)      \
   X(DEPTH_BIAS, Bound)               \
   X(PIXEL_CENTER, Equal)             \
-  X(FILL_RULE, Equal)
+  X(FILL_RULE, Equal)                \
+  X(DEPTH_ROUNDING, Equal)           \
+  X(COLOR_ROUNDING, Equal)
 
 struct CoreParameter {
   std::string name;

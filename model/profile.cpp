@@ -196,11 +196,11 @@ const std::vector<ProfileKey> kTable = {
      "([arithmetic.md](arithmetic.md) section 7; the host's work: the RTL takes snapped words)",
      RtlPlace::None, "", RS_MEMBER(vertex_snap)},
     {"depth_rounding", KeyType::Choice, 0, 1, nullptr, 0, RS_CHOICES(kRoundingNames), nullptr,
-     "the depth plane's output: rounded to nearest or truncated ([arithmetic.md](arithmetic.md) section 7)", RtlPlace::Default, "",
-     RS_MEMBER(depth_rounding)},
+     "the depth plane's output: rounded to nearest or truncated ([arithmetic.md](arithmetic.md) section 7)",
+     RtlPlace::Parameter, "DEPTH_ROUNDING", RS_MEMBER(depth_rounding)},
     {"color_rounding", KeyType::Choice, 0, 1, nullptr, 0, RS_CHOICES(kRoundingNames), nullptr,
-     "the colour planes' outputs: rounded to nearest or truncated ([arithmetic.md](arithmetic.md) section 7)", RtlPlace::Default, "",
-     RS_MEMBER(color_rounding)},
+     "the colour planes' outputs: rounded to nearest or truncated ([arithmetic.md](arithmetic.md) section 7)",
+     RtlPlace::Parameter, "COLOR_ROUNDING", RS_MEMBER(color_rounding)},
 };
 #undef RS_MEMBER
 #undef RS_CHOICES
@@ -288,7 +288,7 @@ std::string profile_table_markdown() {
       at = end ? end + 2 : at + name.size();
     }
     out += "| `" + std::string(row.key) + "` | " + values_text(row) + " | " +
-           (row.word && def == row.word ? "`" + def + "`" : def) + " | " + (row.place == RtlPlace::Default ? "default only" : rtl.empty() ? "-" : rtl) + " | " +
+           (row.word && def == row.word ? "`" + def + "`" : def) + " | " + (rtl.empty() ? "-" : rtl) + " | " +
            row.meaning + " |\n";
   }
   return out;
@@ -437,17 +437,6 @@ std::string conventions_text(const Profile& p) {
     if (row.get(p) != row.get(defaults)) out += (out.empty() ? "" : ", ") + std::string(key) + " " + key_value_text(row, row.get(p));
   }
   return out;
-}
-
-std::string rtl_convention_error(const Profile& p) {
-  const Profile defaults;
-  for (const ProfileKey& row : kTable) {
-    if (row.place != RtlPlace::Default || row.get(p) == row.get(defaults)) continue;
-    return std::string(row.key) + " " + key_value_text(row, row.get(p)) + ": rastersim's RTL has " + row.key + " " +
-           key_value_text(row, row.get(defaults)) + " only (the model and cosim --dut, which checks a design of "
-           "your own, take every convention; docs/verification.md)";
-  }
-  return "";
 }
 
 std::string profile_to_json(const Profile& p, int indent) {

@@ -134,7 +134,6 @@ enum class RtlPlace {
   Port,       // a cfg_* input of rastersim_core (`rtl_name`), sampled during reset
   Parameter,  // a build parameter of rastersim_core (`rtl_name`; core_parameters() maps it)
   Both,       // a cfg_* input whose largest value (or whose presence) is a build parameter
-  Default,    // a convention the RTL has at its default value only (rtl_convention_error)
 };
 struct ProfileKey {
   const char* key;  // JSON key; the flag is --key with '-' for '_'
@@ -191,11 +190,6 @@ const ConventionPreset* find_convention_preset(const std::string& name);
 // The conventions of docs/arithmetic.md section 7 that differ from the defaults, as
 // "pixel_center corner, fill_rule top_right"; empty with rastersim's own.
 std::string conventions_text(const Profile& profile);
-
-// Why rastersim's RTL cannot run the profile's conventions (keys whose place is RtlPlace::Default
-// at another value than the default), or "" when it can. Designs of one's own with other conventions
-// are checked through cosim --dut (docs/verification.md).
-std::string rtl_convention_error(const Profile& profile);
 
 // The profile as a JSON object text (all keys, resolved values).
 std::string profile_to_json(const Profile& profile, int indent = 2);

@@ -6,7 +6,8 @@
 module plane_register #(
   parameter integer REG_BITS = 37,    // s(OUT_BITS+1).GUARD_BITS
   parameter integer GUARD_BITS = 12,  // F
-  parameter integer OUT_BITS = 24     // output u(OUT_BITS), clamped to [0, 2^OUT_BITS - 1]
+  parameter integer OUT_BITS = 24,    // output u(OUT_BITS), clamped to [0, 2^OUT_BITS - 1]
+  parameter integer ROUNDING = 0      // RS_ROUNDING_NEAREST: out adds 2^(F-1) before the shift; _TRUNCATE: not
 ) (
   input  wire clk,
   input  wire load,         // take the record; value = start, or the entered slot's left_start
@@ -21,7 +22,7 @@ module plane_register #(
   input  wire [REG_BITS-1:0] step_y_in,
   input  wire [2*REG_BITS-1:0] left_start,  // slot j at [j*REG_BITS]: the plane at its span start, first row
   input  wire [2*REG_BITS-1:0] left_step,   // its change per row without the DDA's carry
-  output wire [OUT_BITS-1:0] out,       // clamp((value + 2^(F-1)) >>> F, 0, 2^OUT_BITS - 1)
+  output wire [OUT_BITS-1:0] out,       // clamp((value + 2^(F-1) or 0) >>> F, 0, 2^OUT_BITS - 1)
   output wire [REG_BITS-1:0] value      // the register itself (the texture planes' divide takes it)
 );
   // Parameter legality, as RS_REQUIRE of rastersim_widths.vh checks it (that header is not included
@@ -86,7 +87,7 @@ module plane_register #(
   localparam integer ROUNDED_BITS = REG_BITS - GUARD_BITS;
   // The fraction bits are dropped by the rounding shift.
   /* verilator lint_off UNUSEDSIGNAL */
-  wire [REG_BITS-1:0] biased = value_q + {{(REG_BITS-GUARD_BITS){1'b0}}, 1'b1, {(GUARD_BITS-1){1'b0}}};
+  wire [REG_BITS-1:0] biased = value_q + {{(REG_BITS-GUARD_BITS){1'b0}}, 1'(ROUNDING == 0), {(GUARD_BITS-1){1'b0}}};
   /* verilator lint_on UNUSEDSIGNAL */
   wire signed [ROUNDED_BITS-1:0] rounded = biased[REG_BITS-1:GUARD_BITS];
   wire [ROUNDED_BITS-1:0] out_max = {{(ROUNDED_BITS-OUT_BITS){1'b0}}, {OUT_BITS{1'b1}}};

@@ -27,7 +27,9 @@ module rastersim_core #(
   parameter integer DEPTH_EXPONENT_BITS = 0,   // Ne: 0 (or 1) the fixed-point depth word, 2..4 floating point
   parameter integer DEPTH_BIAS = 0,            // 1: the depth bias (cfg_depth_bias_*)
   parameter integer PIXEL_CENTER = 0,          // RS_PIXEL_CENTER_*: the sample point (profile pixel_center)
-  parameter integer FILL_RULE = 0              // RS_FILL_*: the edges owning samples on them (profile fill_rule)
+  parameter integer FILL_RULE = 0,             // RS_FILL_*: the edges owning samples on them (profile fill_rule)
+  parameter integer DEPTH_ROUNDING = 0,        // RS_ROUNDING_*: the depth output (profile depth_rounding)
+  parameter integer COLOR_ROUNDING = 0         // RS_ROUNDING_*: the colour outputs (profile color_rounding)
 ) (
   input  wire clk,
   input  wire rst,
@@ -140,8 +142,9 @@ module rastersim_core #(
   // The encodings of rastersim_widths.vh in one word, from bit 0: RS_DEPTH_NEVER .. RS_DEPTH_ALWAYS
   // (3 bits each), RS_CULL_NONE, _BACK, _FRONT (2), RS_FRONT_CCW, _CW, RS_TRAVERSAL_BBOX, _SPAN,
   // RS_SHADING_FLAT, _GOURAUD (1), RS_STATUS_DRAWN .. RS_STATUS_NO_CENTRE (3), RS_PIXEL_CENTER_HALF,
-  // _CORNER (1), RS_FILL_TOP_LEFT .. RS_FILL_BOTTOM_RIGHT (2).
-  localparam [60:0] ENCODINGS /*verilator public*/ = {
+  // _CORNER (1), RS_FILL_TOP_LEFT .. RS_FILL_BOTTOM_RIGHT (2), RS_ROUNDING_NEAREST, _TRUNCATE (1).
+  localparam [62:0] ENCODINGS /*verilator public*/ = {
+      1'(RS_ROUNDING_TRUNCATE), 1'(RS_ROUNDING_NEAREST),
       2'(RS_FILL_BOTTOM_RIGHT), 2'(RS_FILL_BOTTOM_LEFT), 2'(RS_FILL_TOP_RIGHT), 2'(RS_FILL_TOP_LEFT),
       1'(RS_PIXEL_CENTER_CORNER), 1'(RS_PIXEL_CENTER_HALF),
       RS_STATUS_NO_CENTRE, RS_STATUS_OFFSCREEN, RS_STATUS_CULLED, RS_STATUS_DEGENERATE, RS_STATUS_DRAWN,
@@ -164,6 +167,8 @@ module rastersim_core #(
   localparam integer P_DEPTH_BIAS /*verilator public*/ = DEPTH_BIAS;
   localparam integer P_PIXEL_CENTER /*verilator public*/ = PIXEL_CENTER;
   localparam integer P_FILL_RULE /*verilator public*/ = FILL_RULE;
+  localparam integer P_DEPTH_ROUNDING /*verilator public*/ = DEPTH_ROUNDING;
+  localparam integer P_COLOR_ROUNDING /*verilator public*/ = COLOR_ROUNDING;
   localparam integer TEXTURE_REG_BITS /*verilator public*/ = rs_texture_reg_bits(WIDTH, HEIGHT);
   /* verilator lint_on UNUSEDPARAM */
 
@@ -354,7 +359,8 @@ module rastersim_core #(
     .busy(trace_walker_busy), .candidate(trace_walker_candidate), .last(trace_walker_last));
 
   z_adder #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS), .TEXTURE(TEXTURE),
-            .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS), .DEPTH_BIAS(DEPTH_BIAS)) adders (
+            .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS), .DEPTH_BIAS(DEPTH_BIAS), .DEPTH_ROUNDING(DEPTH_ROUNDING),
+            .COLOR_ROUNDING(COLOR_ROUNDING)) adders (
     .clk(clk), .cfg_shading(shading_q), .cfg_depth_bias_constant(depth_bias_constant_q),
     .cfg_depth_bias_slope(depth_bias_slope_q), .load(adder_load), .step_x(adder_step_x),
     .next_row(adder_next_row), .row_enter(adder_row_enter), .enter_left(adder_enter_left),

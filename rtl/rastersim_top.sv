@@ -19,7 +19,9 @@ module rastersim_top #(
   parameter integer DEPTH_EXPONENT_BITS = 0,   // as rastersim_core's
   parameter integer DEPTH_BIAS = 0,
   parameter integer PIXEL_CENTER = 0,          // as rastersim_core's
-  parameter integer FILL_RULE = 0
+  parameter integer FILL_RULE = 0,
+  parameter integer DEPTH_ROUNDING = 0,
+  parameter integer COLOR_ROUNDING = 0
 ) (
   input  wire clk,
   input  wire rst,
@@ -100,7 +102,8 @@ module rastersim_top #(
                    .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY),
                    .MAX_SETUP_FIFO_DEPTH(MAX_SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL), .TEXTURE(TEXTURE),
                    .MAX_TEXTURE_LATENCY(MAX_TEXTURE_LATENCY), .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS),
-                   .DEPTH_BIAS(DEPTH_BIAS), .PIXEL_CENTER(PIXEL_CENTER), .FILL_RULE(FILL_RULE)) core (
+                   .DEPTH_BIAS(DEPTH_BIAS), .PIXEL_CENTER(PIXEL_CENTER), .FILL_RULE(FILL_RULE),
+                   .DEPTH_ROUNDING(DEPTH_ROUNDING), .COLOR_ROUNDING(COLOR_ROUNDING)) core (
     .clk(clk), .rst(rst), .cfg_depth_func(cfg_depth_func), .cfg_depth_write(cfg_depth_write),
     .cfg_cull(cfg_cull), .cfg_front_face(cfg_front_face), .cfg_traversal(cfg_traversal),
     .cfg_shading(cfg_shading), .cfg_memory_latency(cfg_memory_latency),

@@ -294,7 +294,7 @@ endfunction
 
 // Encodings of the run-time settings, of the setup decision and of the conventions, numbered as
 // the C++ enums of model/profile.h (DepthFunc, CullMode, FrontFace, Traversal, Shading,
-// PixelCenter, FillRule) and model/triangle_setup.h (SetupStatus). rastersim_core publishes them in one word (ENCODINGS), which the C++ build
+// PixelCenter, FillRule, Rounding) and model/triangle_setup.h (SetupStatus). rastersim_core publishes them in one word (ENCODINGS), which the C++ build
 // static_asserts against the enums (testbench/rtl_configuration.h).
 /* verilator lint_off UNUSEDPARAM */
 localparam [2:0] RS_DEPTH_NEVER = 3'd0, RS_DEPTH_LESS = 3'd1,
@@ -308,8 +308,10 @@ localparam [0:0] RS_TRAVERSAL_BBOX = 1'b0, RS_TRAVERSAL_SPAN = 1'b1;
 localparam [0:0] RS_SHADING_FLAT = 1'b0, RS_SHADING_GOURAUD = 1'b1;
 localparam [2:0] RS_STATUS_DRAWN = 3'd0, RS_STATUS_DEGENERATE = 3'd1, RS_STATUS_CULLED = 3'd2,
                  RS_STATUS_OFFSCREEN = 3'd3, RS_STATUS_NO_CENTRE = 3'd4;
-// The conventions that are build parameters (PIXEL_CENTER, FILL_RULE): PixelCenter, FillRule.
+// The conventions, build parameters (PIXEL_CENTER, FILL_RULE, DEPTH_ROUNDING, COLOR_ROUNDING):
+// PixelCenter, FillRule, Rounding.
 localparam integer RS_PIXEL_CENTER_HALF = 0, RS_PIXEL_CENTER_CORNER = 1;
+localparam integer RS_ROUNDING_NEAREST = 0, RS_ROUNDING_TRUNCATE = 1;
 localparam integer RS_FILL_TOP_LEFT = 0, RS_FILL_TOP_RIGHT = 1, RS_FILL_BOTTOM_LEFT = 2,
                    RS_FILL_BOTTOM_RIGHT = 3;
 /* verilator lint_on UNUSEDPARAM */

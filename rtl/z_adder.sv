@@ -13,7 +13,9 @@ module z_adder #(
   parameter integer Z_GUARD_BITS = 0,
   parameter integer TEXTURE = 0,    // 1: the texture planes (rs_texture_record_bits), else none
   parameter integer DEPTH_EXPONENT_BITS = 0,  // Ne: the depth plane has rs_depth_plane_bits(N, Ne) bits
-  parameter integer DEPTH_BIAS = 0            // 1: the depth bias
+  parameter integer DEPTH_BIAS = 0,           // 1: the depth bias
+  parameter integer DEPTH_ROUNDING = 0,       // RS_ROUNDING_*: the depth output (profile depth_rounding)
+  parameter integer COLOR_ROUNDING = 0        // RS_ROUNDING_*: the colour outputs (profile color_rounding)
 ) (
   input  wire clk,
   input  wire cfg_shading,  // RS_SHADING_* (rastersim_widths.vh); flat: the provoking vertex colour
@@ -59,9 +61,9 @@ module z_adder #(
   reg [23:0] flat_q;
   always @(posedge clk) if (load) flat_q <= flat_rgb;
 
-  wire [NP-1:0] depth_rounded;  // clamp((V + 2^(F-1)) >> F, 0, 2^Np - 1)
+  wire [NP-1:0] depth_rounded;  // clamp((V + R) >> F, 0, 2^Np - 1), R = 2^(F-1) (nearest) or 0 (truncate)
   wire [Z_REG_BITS-1:0] depth_value;
-  plane_register #(.REG_BITS(Z_REG_BITS), .GUARD_BITS(F), .OUT_BITS(NP)) depth_plane (
+  plane_register #(.REG_BITS(Z_REG_BITS), .GUARD_BITS(F), .OUT_BITS(NP), .ROUNDING(DEPTH_ROUNDING)) depth_plane (
     .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter),
     .enter_left(enter_left), .enter_slot(enter_slot), .left_carry(left_carry),
     .start(depth_start), .step_x_in(depth_step_x), .step_y_in(depth_step_y),
@@ -69,7 +71,7 @@ module z_adder #(
     .left_step({left_step[SLOT_BITS +: Z_REG_BITS], left_step[0 +: Z_REG_BITS]}),
     .out(depth_rounded), .value(depth_value));
 
-  // The plane output X with the triangle's bias B: clamp((V + B + 2^(F-1)) >> F, 0, 2^Np - 1).
+  // The plane output X with the triangle's bias B: clamp((V + B + R) >> F, 0, 2^Np - 1).
   wire [NP-1:0] depth_x;
   generate
     if (DEPTH_BIAS != 0) begin : bias
@@ -88,10 +90,10 @@ module z_adder #(
       wire signed [PB-1:0] clamped = unclamped > limit ? limit : unclamped < -limit ? -limit : unclamped;
       reg signed [Z_REG_BITS:0] bias_q;  // [-2^(Np+F), 2^(Np+F)]
       always @(posedge clk) if (load) bias_q <= clamped[Z_REG_BITS:0];
-      // V + B + 2^(F-1) in Np + F + 3 bits, then the rounding shift and the clamp.
+      // V + B + R in Np + F + 3 bits, then the rounding shift and the clamp.
       wire signed [Z_REG_BITS+1:0] sum = $signed({{2{depth_value[Z_REG_BITS-1]}}, depth_value}) +
                                          $signed({bias_q[Z_REG_BITS], bias_q}) +
-                                         $signed({{(Z_REG_BITS+2-F){1'b0}}, 1'b1, {(F-1){1'b0}}});
+                                         $signed({{(Z_REG_BITS+2-F){1'b0}}, 1'(DEPTH_ROUNDING == 0), {(F-1){1'b0}}});
       wire signed [Z_REG_BITS+1-F:0] rounded = sum[Z_REG_BITS+1:F];
       wire signed [Z_REG_BITS+1-F:0] out_max = $signed({{(Z_REG_BITS+2-F-NP){1'b0}}, {NP{1'b1}}});
       assign depth_x = rounded[Z_REG_BITS+1-F] ? {NP{1'b0}} : rounded > out_max ? {NP{1'b1}} : rounded[NP-1:0];
@@ -134,7 +136,7 @@ module z_adder #(
       /* verilator lint_off UNUSEDSIGNAL */
       wire [COLOR_REG_BITS-1:0] value_unused;
       /* verilator lint_on UNUSEDSIGNAL */
-      plane_register #(.REG_BITS(COLOR_REG_BITS), .GUARD_BITS(F), .OUT_BITS(8)) plane (
+      plane_register #(.REG_BITS(COLOR_REG_BITS), .GUARD_BITS(F), .OUT_BITS(8), .ROUNDING(COLOR_ROUNDING)) plane (
         .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter),
         .enter_left(enter_left), .enter_slot(enter_slot), .left_carry(left_carry),
         .start(color_start[c*COLOR_REG_BITS +: COLOR_REG_BITS]), .step_x_in(color_step_x[c*COLOR_REG_BITS +: COLOR_REG_BITS]),

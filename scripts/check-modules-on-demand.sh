@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Profiles the build has no verilated RTL for run anyway (docs/debugging.md "Any profile on the RTL
-# backends"): a 48x48 profile, sampling pixel corners by the bottom-left fill rule (the core's
-# PIXEL_CENTER and FILL_RULE), through --backend rtl, cosim and systemc, and a textured 48x32 one
+# backends"): a 48x48 profile, sampling pixel corners by the bottom-left fill rule with truncated
+# colours (the core's PIXEL_CENTER, FILL_RULE and COLOR_ROUNDING), through --backend rtl, cosim and
+# systemc, and a textured 48x32 one
 # through systemc, verilated on demand into a cache of this test's own. Checks that two runs started together build the module once and agree;
 # the outputs equal the model's; a later run loads the module without building (and prints how long
 # it took); a bad cache folder, an invalid profile or a stall pattern (no RTL build runs one) is an
@@ -14,7 +15,7 @@ trap 'rm -rf "$work"' EXIT
 cd "$work"
 export RASTERSIM_CACHE_DIR="$work/cache"
 fail() { echo "check-modules-on-demand: $*"; exit 1; }
-conventions=(--pixel-center corner --fill-rule bottom_left)
+conventions=(--pixel-center corner --fill-rule bottom_left --color-rounding truncate)
 profile=(--width 48 --height 48 --scene default "${conventions[@]}")
 
 "$exe" render --backend model "${profile[@]}" -o model.png --fragments model.csv > /dev/null

@@ -55,7 +55,7 @@ PROFILE_PARAMETERS = ["WIDTH", "HEIGHT", "SUBPIXEL_BITS", "Z_BITS", "Z_GUARD_BIT
 # Build options of the core (rtl/rastersim_core.sv), passed to a unit that declares them only when
 # they differ from their defaults here (so that results cached without them stay valid).
 BUILD_OPTIONS = {"TEXTURE": 0, "MAX_TEXTURE_LATENCY": 64, "DEPTH_EXPONENT_BITS": 0, "DEPTH_BIAS": 0, "PIXEL_CENTER": 0,
-                 "FILL_RULE": 0}
+                 "FILL_RULE": 0, "DEPTH_ROUNDING": 0, "COLOR_ROUNDING": 0}
 DEVICES = {"hx8k": ("--hx8k", "ct256", 7680, 32), "up5k": ("--up5k", "sg48", 5280, 30), "hx1k": ("--hx1k", "tq144", 1280, 16)}
 BRAM_BITS = 4096  # SB_RAM40_4K
 MEMORY_UNITS = {"zbuffer_memory", "rastersim_top"}  # the units that hold the frame memory

@@ -10,8 +10,8 @@ for params in "" "-GWIDTH=16 -GHEIGHT=8 -GSUBPIXEL_BITS=2 -GZ_BITS=16 -GMAX_MEMO
               "-GSETUP_INTERVAL=2" "-GWIDTH=16 -GHEIGHT=8 -GSUBPIXEL_BITS=2 -GZ_BITS=16 -GSETUP_INTERVAL=5" \
               "-GSETUP_INTERVAL=64" "-GTEXTURE=1" \
               "-GWIDTH=16 -GHEIGHT=8 -GSUBPIXEL_BITS=2 -GZ_BITS=16 -GSETUP_INTERVAL=0 -GTEXTURE=1" \
-              "-GDEPTH_EXPONENT_BITS=3 -GDEPTH_BIAS=1" "-GPIXEL_CENTER=1 -GFILL_RULE=3" \
-              "-GWIDTH=16 -GHEIGHT=8 -GSUBPIXEL_BITS=2 -GZ_BITS=16 -GSETUP_INTERVAL=0 -GPIXEL_CENTER=1 -GFILL_RULE=1" \
+              "-GDEPTH_EXPONENT_BITS=3 -GDEPTH_BIAS=1" "-GPIXEL_CENTER=1 -GFILL_RULE=3 -GDEPTH_ROUNDING=1 -GCOLOR_ROUNDING=1" \
+              "-GWIDTH=16 -GHEIGHT=8 -GSUBPIXEL_BITS=2 -GZ_BITS=16 -GSETUP_INTERVAL=0 -GPIXEL_CENTER=1 -GFILL_RULE=1 -GDEPTH_BIAS=1 -GDEPTH_ROUNDING=1" \
               "-GWIDTH=16 -GHEIGHT=8 -GSUBPIXEL_BITS=2 -GZ_BITS=16 -GSETUP_INTERVAL=0 -GDEPTH_EXPONENT_BITS=4 -GDEPTH_BIAS=1"; do
   for top in plane_register triangle_setup setup_fifo span_bounds scanline_walker_entry scanline_walker z_adder zbuffer zbuffer_memory texture_divide texture_address texture_filter texture_memory texture_unit rastersim_core rastersim_top; do
     unit_params=""

@@ -84,7 +84,6 @@ int built_max_memory_latency(const Profile& p) {
 std::string configuration_error(const Profile& p) {
   const std::vector<std::string> errors = validate(p);
   if (!errors.empty()) return "invalid profile: " + errors.front();
-  if (std::string convention = rtl_convention_error(p); !convention.empty()) return convention;
   // Whatever the geometry: rastersim_top's on-chip memories have no stall pattern.
   if (p.memory_stall_percent > 0)
     return "memory_stall_percent " + std::to_string(p.memory_stall_percent) +

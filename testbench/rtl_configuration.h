@@ -63,6 +63,7 @@ constexpr uint64_t enum_encodings() {
     put(int(s), 3);
   put(int(PixelCenter::Half), 1), put(int(PixelCenter::Corner), 1);
   for (FillRule f : {FillRule::TopLeft, FillRule::TopRight, FillRule::BottomLeft, FillRule::BottomRight}) put(int(f), 2);
+  put(int(Rounding::Nearest), 1), put(int(Rounding::Truncate), 1);
   return word;
 }
 

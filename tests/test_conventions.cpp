@@ -12,6 +12,7 @@
 #include <cmath>
 #include <random>
 
+#include "model/core_parameters.h"
 #include "model/pipeline.h"
 #include "reference.h"
 #include "test_util.h"
@@ -169,22 +170,24 @@ INSTANTIATE_TEST_SUITE_P(CentresRoundingsTraversals, Rounding_,
                                   "_" + to_string(std::get<3>(info.param));
                          });
 
-TEST(Conventions, RastersimsRtlRefusesTheConventionsItLacks) {
-  EXPECT_EQ(rtl_convention_error(Profile{}), "");
-  for (const auto& [key, value] : {std::pair{"depth_rounding", "truncate"}, std::pair{"color_rounding", "truncate"}}) {
-    Profile p;
-    ASSERT_EQ(set_profile_key(p, key, value), "");
-    const std::string error = rtl_convention_error(p);
-    EXPECT_NE(error.find(std::string(key) + " " + value + ": rastersim's RTL has " + key), std::string::npos) << error;
-  }
+// Every convention but the host's snapping is a build parameter of rastersim's core
+// (docs/rtl.md), numbered as its enum.
+TEST(Conventions, EachConventionOfTheCoreIsABuildParameter) {
+  Profile p;
+  p.pixel_center = PixelCenter::Corner;
+  p.fill_rule = FillRule::BottomRight;
+  p.depth_rounding = Rounding::Truncate;
+  p.color_rounding = Rounding::Truncate;
+  const CoreParameters core = core_parameters(p);
+  EXPECT_EQ(parameter_value(core, "PIXEL_CENTER"), 1);
+  EXPECT_EQ(parameter_value(core, "FILL_RULE"), 3);
+  EXPECT_EQ(parameter_value(core, "DEPTH_ROUNDING"), 1);
+  EXPECT_EQ(parameter_value(core, "COLOR_ROUNDING"), 1);
+  for (const char* name : {"PIXEL_CENTER", "FILL_RULE", "DEPTH_ROUNDING", "COLOR_ROUNDING"})
+    EXPECT_EQ(parameter_value(core_parameters(Profile{}), name), 0) << name;
   Profile snapped;  // snapping is the host's: the RTL takes snapped words
   snapped.vertex_snap = VertexSnap::TowardZero;
-  EXPECT_EQ(rtl_convention_error(snapped), "");
-  // The sample point and the fill rule are build parameters of the core (PIXEL_CENTER, FILL_RULE).
-  Profile geometry;
-  geometry.pixel_center = PixelCenter::Corner;
-  geometry.fill_rule = FillRule::BottomRight;
-  EXPECT_EQ(rtl_convention_error(geometry), "");
+  EXPECT_EQ(core_parameters(snapped), core_parameters(Profile{}));
 }
 
 // cosim's profile line names the conventions that are not rastersim's.

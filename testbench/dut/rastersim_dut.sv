@@ -13,9 +13,12 @@ module rastersim_dut #(
   parameter integer TRAVERSAL_SPAN = 1,   /// 1: span, 0: bbox
   parameter integer MEMORY_LATENCY = 2,   /// the on-chip memory's read latency L
   parameter integer SETUP_FIFO_DEPTH = 8,
-  // The conventions (the profile's pixel_center and fill_rule, as rastersim_core's parameters).
+  // The conventions (the profile's pixel_center, fill_rule, depth_rounding and color_rounding, as
+  // rastersim_core's parameters).
   parameter integer PIXEL_CENTER = 0,
-  parameter integer FILL_RULE = 0
+  parameter integer FILL_RULE = 0,
+  parameter integer DEPTH_ROUNDING = 0,
+  parameter integer COLOR_ROUNDING = 0
 ) (
   input  wire clk,
   input  wire rst,
@@ -56,7 +59,8 @@ module rastersim_dut #(
   rastersim_dut_memory #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
                          .SETUP_INTERVAL(SETUP_INTERVAL), .TRAVERSAL_SPAN(TRAVERSAL_SPAN),
                          .MEMORY_LATENCY(MEMORY_LATENCY), .SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH),
-                         .PIXEL_CENTER(PIXEL_CENTER), .FILL_RULE(FILL_RULE)) dut (
+                         .PIXEL_CENTER(PIXEL_CENTER), .FILL_RULE(FILL_RULE), .DEPTH_ROUNDING(DEPTH_ROUNDING),
+                         .COLOR_ROUNDING(COLOR_ROUNDING)) dut (
     .clk(clk), .rst(rst), .cfg_depth_func(cfg_depth_func), .cfg_depth_write(cfg_depth_write),
     .cfg_depth_clear(cfg_depth_clear), .cfg_cull(cfg_cull), .cfg_front_face(cfg_front_face),
     .cfg_shading(cfg_shading), .cmd_valid(cmd_valid), .cmd_ready(cmd_ready),

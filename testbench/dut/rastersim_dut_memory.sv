@@ -20,9 +20,12 @@ module rastersim_dut_memory #(
   parameter integer TRAVERSAL_SPAN = 1,   /// 1: span, 0: bbox
   parameter integer MEMORY_LATENCY = 2,   /// the memory's read latency L (the profile's memory_latency)
   parameter integer SETUP_FIFO_DEPTH = 8,
-  // The conventions (the profile's pixel_center and fill_rule, as rastersim_core's parameters).
+  // The conventions (the profile's pixel_center, fill_rule, depth_rounding and color_rounding, as
+  // rastersim_core's parameters).
   parameter integer PIXEL_CENTER = 0,
-  parameter integer FILL_RULE = 0
+  parameter integer FILL_RULE = 0,
+  parameter integer DEPTH_ROUNDING = 0,
+  parameter integer COLOR_ROUNDING = 0
 ) (
   input  wire clk,
   input  wire rst,
@@ -81,7 +84,8 @@ module rastersim_dut_memory #(
   /* verilator lint_off PINCONNECTEMPTY */
   rastersim_core #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
                   .MAX_MEMORY_LATENCY(MEMORY_LATENCY), .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH),
-                  .SETUP_INTERVAL(SETUP_INTERVAL), .PIXEL_CENTER(PIXEL_CENTER), .FILL_RULE(FILL_RULE)) core (
+                  .SETUP_INTERVAL(SETUP_INTERVAL), .PIXEL_CENTER(PIXEL_CENTER), .FILL_RULE(FILL_RULE),
+                  .DEPTH_ROUNDING(DEPTH_ROUNDING), .COLOR_ROUNDING(COLOR_ROUNDING)) core (
     .clk(clk), .rst(rst), .cfg_depth_func(cfg_depth_func), .cfg_depth_write(cfg_depth_write),
     .cfg_cull(cfg_cull), .cfg_front_face(cfg_front_face),
     .cfg_traversal(TRAVERSAL_SPAN[0]), .cfg_shading(cfg_shading),

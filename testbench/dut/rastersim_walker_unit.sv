@@ -12,7 +12,10 @@ module rastersim_walker_unit #(
   parameter integer FRACTION_BITS = 9,
   parameter integer AUX_BITS = 1,
   // The micro-architecture (not part of the interface): 1 span, 0 bounding-box traversal.
-  parameter integer TRAVERSAL_SPAN = 1
+  parameter integer TRAVERSAL_SPAN = 1,
+  // The conventions (the profile's depth_rounding and color_rounding, as rastersim_core's parameters).
+  parameter integer DEPTH_ROUNDING = 0,
+  parameter integer COLOR_ROUNDING = 0
 ) (
   input  wire clk,
   input  wire rst,
@@ -102,7 +105,8 @@ module rastersim_walker_unit #(
   wire textured_unused;
   wire [3*rs_texture_reg_bits(WIDTH, HEIGHT)-1:0] stq_unused;
   /* verilator lint_on UNUSEDSIGNAL */
-  z_adder #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS)) adders (
+  z_adder #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS),
+            .DEPTH_ROUNDING(DEPTH_ROUNDING), .COLOR_ROUNDING(COLOR_ROUNDING)) adders (
     .clk(clk), .cfg_shading(cfg_shading), .cfg_depth_bias_constant(33'd0), .cfg_depth_bias_slope(8'd0),
     .load(load), .step_x(adder_step_x), .next_row(adder_next_row), .row_enter(adder_row_enter),
     .enter_left(adder_enter_left), .enter_slot(adder_enter_slot), .left_carry(adder_left_carry),

@@ -22,7 +22,8 @@ constexpr int kFormatVersion = 7;  // 2: check_manifest.py added; 3: status no_c
                                    // 6: commands' depths in the depth plane's bits, the depth word's
                                    //    and the depth bias's parameters; the texture unit (texture.hex,
                                    //    S, T, Q commands, the texture record), two frame counters;
-                                   // 7: the conventions' parameters PIXEL_CENTER and FILL_RULE
+                                   // 7: the conventions' parameters PIXEL_CENTER, FILL_RULE,
+                                   //    DEPTH_ROUNDING and COLOR_ROUNDING
 
 // Where the triangles came from, recorded in the manifest and in the regeneration command.
 struct Source {

@@ -115,6 +115,8 @@ std::string params_text(const PackageFacts& k) {
     << "localparam integer PIXEL_CENTER = " << core_parameter(p, "PIXEL_CENTER") << ";  // 0: pixel centres; 1: corners\n"
     << "localparam integer FILL_RULE = " << core_parameter(p, "FILL_RULE")
     << ";  // 0 top_left, 1 top_right, 2 bottom_left, 3 bottom_right\n"
+    << "localparam integer DEPTH_ROUNDING = " << core_parameter(p, "DEPTH_ROUNDING") << ";  // 0: nearest; 1: truncate\n"
+    << "localparam integer COLOR_ROUNDING = " << core_parameter(p, "COLOR_ROUNDING") << ";  // 0: nearest; 1: truncate\n"
     << "localparam integer TEXTURE = " << core_parameter(p, "TEXTURE") << ";  // 1: the texture unit and texture.hex\n"
     << "localparam integer TEXTURE_LATENCY = " << p.texture_latency
     << ";  // cfg_texture_latency and MAX_TEXTURE_LATENCY\n"

@@ -715,28 +715,6 @@ TEST(CliRtl, CosimEndsWithPassedLine) {
   EXPECT_FALSE(contains(last, "0 passed")) << r.out;
 }
 
-// rastersim's RTL rounds its planes to nearest only: another rounding is refused before anything
-// is built, and the model runs it.
-TEST(CliRtl, OtherConventionsAreRefusedForRastersimsRtl) {
-  ScratchDir dir;
-  for (const std::vector<std::string>& args :
-       {std::vector<std::string>{"cosim", "--count", "1", "--width", "64", "--height", "48", "--color-rounding",
-                                 "truncate"},
-        std::vector<std::string>{"render", "--backend", "rtl", "--scene", "stress", "--width", "64", "--height", "48",
-                                 "--depth-rounding", "truncate"},
-        std::vector<std::string>{"vectors", "--random", "3", "--width", "64", "--height", "48", "--depth-rounding",
-                                 "truncate", "--out", "pk"}}) {
-    const RunResult r = run_rastersim(dir, args);
-    EXPECT_EQ(r.exit_code, 2) << args[0] << ": " << r.out << r.err;
-    EXPECT_TRUE(contains(r.err, "rastersim's RTL has")) << args[0] << ": " << r.err;
-  }
-  EXPECT_FALSE(fs::exists(dir.work() / "pk"));
-  EXPECT_FALSE(fs::exists(dir.root() / "cache"));
-  const RunResult model = run_rastersim(dir, {"render", "--scene", "stress", "--width", "64", "--height", "48",
-                                              "--pixel-center", "corner", "--depth-rounding", "truncate"});
-  EXPECT_EQ(model.exit_code, 0) << model.err;
-}
-
 // The testcase names of a JUnit file, in order.
 std::vector<std::string> junit_testcases(const fs::path& path) {
   const std::string xml = read_text(path);

@@ -46,6 +46,8 @@ Profile unusual_profile() {
   p.depth_bias_constant = 3;
   p.pixel_center = PixelCenter::Corner;
   p.fill_rule = FillRule::BottomLeft;
+  p.depth_rounding = Rounding::Truncate;
+  p.color_rounding = Rounding::Truncate;
   return p;
 }
 
@@ -54,14 +56,15 @@ const std::vector<std::string> kUnusualFlags = {
     "--width", "48", "--height", "40", "--subpixel-bits", "5", "--z-bits", "20", "--z-guard-bits", "9",
     "--memory-latency", "5", "--setup-fifo-depth", "3", "--setup-interval", "8", "--texture-unit", "true",
     "--texture-latency", "7", "--depth-exponent-bits", "2", "--depth-bias-constant", "3",
-    "--pixel-center", "corner", "--fill-rule", "bottom_left"};
+    "--pixel-center", "corner", "--fill-rule", "bottom_left", "--depth-rounding", "truncate",
+    "--color-rounding", "truncate"};
 
 // Written out by hand from rtl/rastersim_core.sv's parameter list and the rules of docs/rtl.md.
 const CoreParameters kExpected = {
     {"WIDTH", 48},           {"HEIGHT", 40},         {"SUBPIXEL_BITS", 5},       {"Z_BITS", 20},
     {"Z_GUARD_BITS", 9},     {"MAX_MEMORY_LATENCY", 5}, {"MAX_SETUP_FIFO_DEPTH", 3}, {"SETUP_INTERVAL", 8},
     {"TEXTURE", 1},          {"MAX_TEXTURE_LATENCY", 7}, {"DEPTH_EXPONENT_BITS", 2}, {"DEPTH_BIAS", 1},
-    {"PIXEL_CENTER", 1},     {"FILL_RULE", 2}};
+    {"PIXEL_CENTER", 1},     {"FILL_RULE", 2},           {"DEPTH_ROUNDING", 1},      {"COLOR_ROUNDING", 1}};
 
 std::vector<std::string> names_of(const CoreParameters& parameters) {
   std::vector<std::string> names;

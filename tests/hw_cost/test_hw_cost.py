@@ -46,7 +46,7 @@ class HwCost(unittest.TestCase):
         self.assertFalse(set(hw_cost.BUILD_OPTIONS) & set(plain))  # defaults: cached keys unchanged
         self.assertEqual(plain["SETUP_INTERVAL"], 0)
         changed = {"TEXTURE": 1, "MAX_TEXTURE_LATENCY": 8, "DEPTH_EXPONENT_BITS": 3, "DEPTH_BIAS": 1, "PIXEL_CENTER": 1,
-                   "FILL_RULE": 3}
+                   "FILL_RULE": 3, "DEPTH_ROUNDING": 1, "COLOR_ROUNDING": 1}
         profile.update(changed)
         core = hw_cost.unit_parameters("rastersim_core", profile)
         self.assertEqual({k: core[k] for k in hw_cost.BUILD_OPTIONS}, changed)
