@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -270,6 +271,32 @@ nlohmann::ordered_json with_distributions(nlohmann::ordered_json j, verify::Comp
 // A failing frame's waveform: this many cycles either side of the mismatch.
 constexpr int64_t kWaveAround = 32;
 
+// A failing frame's replay waveform at <prefix>.fst: `rerun` runs the frame again with the options
+// given and returns the cycle its numbering starts from (a design's first handshake, a unit's 0);
+// with `at` >= 0 the FST holds the cycles around `at` and <prefix>.gtkw marks it, else (a stall) the
+// frame up to the stall. `who` names the cycle in the message ("design", "unit").
+void add_failure_waveform(std::string& message, const std::string& prefix, int64_t at, const char* who,
+                          const std::string& replay, const std::function<int64_t(const dut::DutRunOptions&)>& rerun) {
+  if (!prefix.empty() && at >= 0)
+    message += std::string("; the ") + who + "'s cycle " + std::to_string(at) + ", marked in " + prefix + ".gtkw";
+  message += "; replay: " + replay;
+  if (prefix.empty()) return;
+  dut::DutRunOptions wave;
+  wave.wave_path = prefix + ".fst";
+  wave.wave_window = at >= 0;
+  wave.wave_from = at - kWaveAround, wave.wave_to = at + kWaveAround;
+  int64_t origin = 0;
+  try {
+    origin = rerun(wave);
+  } catch (const std::runtime_error&) {  // the stall is reported already; the waveform ends at it
+  }
+  message += "; waveform: " + wave.wave_path;
+  if (at >= 0) {
+    const int64_t edge = 2 * (origin + at) + 9;  // the mismatch cycle's rising edge, after reset's 8 half cycles
+    rtl::write_design_gtkwave_save(wave.wave_path, wave.wave_path, prefix + ".gtkw", edge - 2 * kWaveAround - 1, edge);
+  }
+}
+
 // One frame of a user's design: the model's run, the design's, their comparison by mode. On a
 // mismatch with a replay prefix, the frame again with a waveform at <prefix>.fst.
 struct DesignFrame {
@@ -313,26 +340,9 @@ DesignFrame design_frame(const dut::Design& design, const rtl::CosimCase& c, con
     if (waveform.wave_vcd) rtl::fst_to_vcd(fst_path, waveform.wave_path);
   }
   if (d.passed) return d;
-  if (!prefix.empty() && at >= 0) d.message += "; the design's cycle " + std::to_string(at) + ", marked in " + prefix + ".gtkw";
-  d.message += "; replay: " + replay;
-  if (!prefix.empty()) {
-    // The frame again: a window of the cycles around the mismatch, the marker at it (a stall's
-    // waveform holds the whole frame up to it).
-    dut::DutRunOptions wave;
-    wave.wave_path = prefix + ".fst";
-    wave.wave_window = at >= 0;
-    wave.wave_from = at - kWaveAround, wave.wave_to = at + kWaveAround;
-    rtl::RtlResult again;
-    try {
-      again = design.run(c.profile, c.triangles, wave);
-    } catch (const std::runtime_error&) {
-    }
-    d.message += "; waveform: " + wave.wave_path;
-    if (at >= 0) {
-      const int64_t edge = 2 * (again.first_handshake + at) + 9;  // the rising edge of the mismatch's cycle
-      rtl::write_design_gtkwave_save(wave.wave_path, wave.wave_path, prefix + ".gtkw", edge - 2 * kWaveAround - 1, edge);
-    }
-  }
+  add_failure_waveform(d.message, prefix, at, "design", replay, [&](const dut::DutRunOptions& wave) {
+    return design.run(c.profile, c.triangles, wave).first_handshake;
+  });
   return d;
 }
 
@@ -354,25 +364,10 @@ DesignFrame unit_design_frame(const dut::Design& design, dut::Unit unit, const r
     d.message = e.what();
   }
   if (d.passed) return d;
-  if (!prefix.empty() && at >= 0) d.message += "; the unit's cycle " + std::to_string(at) + ", marked in " + prefix + ".gtkw";
-  d.message += "; replay: " + replay;
-  if (!prefix.empty()) {
-    // The frame again: the cycles around the mismatch, the marker at it (a stall's waveform holds
-    // the frame up to it).
-    dut::DutRunOptions wave;
-    wave.wave_path = prefix + ".fst";
-    wave.wave_window = at >= 0;
-    wave.wave_from = at - kWaveAround, wave.wave_to = at + kWaveAround;
-    try {
-      design.run_unit(frame, wave);
-    } catch (const std::runtime_error&) {
-    }
-    d.message += "; waveform: " + wave.wave_path;
-    if (at >= 0) {
-      const int64_t edge = 2 * at + 9;  // the rising edge of the mismatch's cycle (after reset's 8 half cycles)
-      rtl::write_design_gtkwave_save(wave.wave_path, wave.wave_path, prefix + ".gtkw", edge - 2 * kWaveAround - 1, edge);
-    }
-  }
+  add_failure_waveform(d.message, prefix, at, "unit", replay, [&](const dut::DutRunOptions& wave) {
+    design.run_unit(frame, wave);
+    return int64_t(0);  // a unit's cycles count from the first after reset
+  });
   return d;
 }
 
