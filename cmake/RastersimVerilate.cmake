@@ -67,6 +67,7 @@ function(rastersim_verilate target prefix config)
     VERILATOR_ARGS
       ${cfg_GENERICS}
       --x-assign unique --x-initial unique
+      --assert  # the units' assertions (rtl/rastersim_assert.vh): a failure ends the frame
       -Wno-fatal -Werror-USERERROR  # lint cleanliness is its own test (rtl/CMakeLists.txt); illegal parameters stop
     OPT_GLOBAL -w
     OPT_FAST -w -O2

@@ -231,6 +231,8 @@ module rastersim_core #(
   end
 
   assign cmd_ready = setup_ready && frame_ready && credit_free;
+`include "rastersim_assert.vh"
+  `RS_ASSERT(credits_within_depth, credits_held_q <= setup_fifo_depth_q)
   wire setup_free;
   assign trace_setup_stall = cmd_valid && frame_ready && setup_free && !accept;
   assign trace_setup_done = setup_valid;

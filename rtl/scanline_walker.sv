@@ -253,4 +253,18 @@ module scanline_walker #(
       end
     end
   end
+
+`include "rastersim_assert.vh"
+  // A fragment stays offered until the z-buffer (or texture unit) takes it; it lies inside the
+  // bounding box of its triangle and on the screen.
+  `RS_ASSERT_HELD(fragment_held, frag_valid, frag_ready, {frag_x, frag_y})
+  `RS_ASSERT(fragment_in_box, !frag_valid || (x0_q <= frag_x && frag_x <= x1_q && frag_y <= y1_q))
+  `RS_ASSERT(fragment_on_screen, !frag_valid || (32'(frag_x) < WIDTH && 32'(frag_y) < HEIGHT))
+  // The plane registers enter a row at a left edge's slot only when that slot holds a left edge
+  // (slot 1: the triangle has two); the edges' sides are the entry's at a load, else the registers'.
+  `RS_ASSERT(left_slot_holds_a_left_edge,
+      !(((adder_row_enter && span_nonempty) || (adder_load && cfg_traversal && !in_entry[LSB_ROW_EMPTY])) && adder_enter_left)
+      || (adder_enter_slot ? {1'b0, mid_walk_q ? left_q[0] : in_entry[LSB_LEFT]} + {1'b0, mid_walk_q ? left_q[1] : in_entry[LSB_LEFT + 1]}
+                             + {1'b0, mid_walk_q ? left_q[2] : in_entry[LSB_LEFT + 2]} >= 2'd2
+                           : |(mid_walk_q ? left_q : in_entry[LSB_LEFT +: 3])))
 endmodule

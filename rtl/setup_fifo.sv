@@ -41,6 +41,11 @@ module setup_fifo #(
     end
   end
 
+  // The record credits keep it from overflowing; the walker reads only a record that is there.
+`include "rastersim_assert.vh"
+  `RS_ASSERT(no_push_when_full, !push || pop || count_q != COUNT_BITS'(ENTRIES))
+  `RS_ASSERT(no_pop_when_empty, !pop || !empty)
+
   // Storage (no reset: an entry is written before it is read).
   always @(posedge clk) if (push) entries_q[write_index_q] <= push_data;
 endmodule

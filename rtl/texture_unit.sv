@@ -200,4 +200,10 @@ module texture_unit #(
   assign out_valid = modulated_q || !output_empty;
   wire [FRAG_BITS-2:0] offered = output_empty ? finished : output_head;
   assign {out_rgb, out_z, out_y, out_x} = offered;
+
+`include "rastersim_assert.vh"
+  // Requests and fragments stay offered until taken; never more than C fragments are held.
+  `RS_ASSERT_HELD(read_held, tex_rd_valid, tex_rd_ready, tex_rd_addr)
+  `RS_ASSERT_HELD(fragment_held, out_valid, out_ready, {out_rgb, out_z, out_y, out_x})
+  `RS_ASSERT(within_capacity, {1'b0, held_q} <= capacity)
 endmodule

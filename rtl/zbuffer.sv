@@ -220,4 +220,8 @@ module zbuffer #(
         match_q[e] <= match_q[e] & ~now_onehot_q | (ahead_q[e] ? now_onehot_q : {RING{1'b0}});
       end
   end
+
+`include "rastersim_assert.vh"
+  // A read request stays offered, at its address, until the memory takes it (its contract).
+  `RS_ASSERT_HELD(read_held, mem_rd_valid, mem_rd_ready, mem_rd_addr)
 endmodule

@@ -203,6 +203,12 @@ file[setup_fifo_empty]=setup_fifo.sv
 from[setup_fifo_empty]='assign empty = count_q == {COUNT_BITS{1'"'"'b0}};'
 to[setup_fifo_empty]='assign empty = count_q <= {{(COUNT_BITS-1){1'"'"'b0}}, 1'"'"'b1};'  # one record looks like none
 
+# Mutants that an assertion inside the units (rtl/rastersim_assert.vh, verilated with --assert) must
+# catch: the assertion's name, which the simulator's message gives ("Assertion failed in SCOPE: NAME").
+declare -A assertion
+assertion[setup_credit_count]=credits_within_depth
+assertion[walker_backpressure]=fragment_held
+
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 status=0
@@ -223,7 +229,7 @@ PY
   # Verilate, then build; Verilator's runtime objects (verilated*.o: the same sources and flags for
   # every mutant) are compiled for the first mutant only and copied into the others, touched so
   # that make takes them as newer than the freshly generated makefile they depend on.
-  if ! verilator --cc --exe -Wno-fatal -Wno-lint -Wno-style --x-assign unique --x-initial unique \
+  if ! verilator --cc --exe -Wno-fatal -Wno-lint -Wno-style --x-assign unique --x-initial unique --assert \
       -I"$dir/rtl" "$dir"/rtl/*.sv "$root/testbench/rtl/rastersim_debug.sv" --top-module rastersim_top --prefix Vmutant -Mdir "$dir/obj" \
       -GWIDTH=64 -GHEIGHT=48 -GSUBPIXEL_BITS=4 -GZ_BITS=24 -GMAX_MEMORY_LATENCY=$max_latency ${params[$m]:-} --trace-fst \
       "$root/testbench/mutant_check.cpp" -o mutant_check \
@@ -250,9 +256,11 @@ PY
       replayed="$sentence"  # a textured frame: no .tri replay (it would carry no texture)
     else
       read -r _ prefix seed < <(sed -n 's/^replay: mutant_check //p' "$dir/check.log")
-      replayed=$("$dir/obj/mutant_check" --replay "$prefix" "$seed" || true)
+      replayed=$("$dir/obj/mutant_check" --replay "$prefix" "$seed" | grep '^first divergence: ' || true)
     fi
-    if [ "$replayed" != "$sentence" ]; then
+    if [ -n "${assertion[$m]:-}" ] && ! grep -q "Assertion failed in .*${assertion[$m]}" "$dir/check.log"; then
+      echo "mutant $m: caught, but not by the assertion ${assertion[$m]}"; status=1
+    elif [ "$replayed" != "$sentence" ]; then
       echo "mutant $m: the replay gives '$replayed', not the catch's '$sentence'"; status=1
     elif ! python3 - "$prefix.vcd" "$cycle" <<'PY'
 import sys

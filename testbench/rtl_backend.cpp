@@ -208,6 +208,10 @@ Divergence compare_setup(int64_t t, const SetupResult& m, const SetupResult& r, 
 
 Divergence compare(const RtlResult& model, const RtlResult& rtl) {
   using std::to_string;
+  // A failed assertion stopped the RTL: what follows it would only differ for that reason.
+  if (rtl.assertion_cycle >= 0)
+    return divergence(-1, "pipeline", "assertion", "every assertion holds", "one failed (the simulator's message names it)",
+                      rtl.assertion_cycle);
   // Fragments grouped by triangle, in emission order.
   size_t next_model = 0, next_rtl = 0;
   const size_t triangles = std::max(model.triangles.size(), rtl.triangles.size());

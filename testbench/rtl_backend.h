@@ -47,6 +47,7 @@ struct RtlResult {
   std::vector<SetupResult> setups;
   bool finished = true;  // false: the RTL did not finish within max_cycles
   std::string note;      // why it did not finish
+  int64_t assertion_cycle = -1;  // the cycle an assertion of the RTL failed in (it stopped there)
   // Only what the verification interface carries (a design behind cosim --dut): each triangle's
   // index, status and setup_decided, each fragment's fields and `tested` (its retirement), the final
   // buffers and stats.cycles (frame_done); cycles count from the first command handshake.

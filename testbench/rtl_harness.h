@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "testbench/assertions.h"
 #include "testbench/rtl_backend.h"
 #include "testbench/core_ports.h"
 #include "testbench/frame_config.h"
@@ -42,6 +43,7 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
   const int coord_bits = Core::COORD_BITS;
   const int setup_cycles = int(Core::SETUP_TEXTURED_DRAWN_LATENCY) + 1;
   auto context = std::make_unique<VerilatedContext>();
+  record_assertion_failures(*context);
   context->randReset(2);
   context->randSeed(int(options.seed % 2147483647u) + 1);
   context->traceEverOn(!options.wave_path.empty());
@@ -107,6 +109,8 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
   for (int64_t i = 0; !top->frame_ready; ++i) {
     if (i > clear_bound) throw std::runtime_error("RTL: the z-buffer clear did not finish");
     half_cycle(0), half_cycle(1);
+    if (assertion_failed(*context))
+      throw std::runtime_error("RTL: an assertion failed while the z-buffer memory was cleared (the simulator's message names it)");
   }
 
   RtlResult out;
@@ -133,6 +137,12 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
     // Observe this cycle's handshakes and decisions (before the rising edge).
     if (!observer.observe(cycle, sample_trace(*top), [&] { return read_setup_record(core, gouraud); })) break;
     half_cycle(1);
+    if (assertion_failed(*context)) {
+      out.finished = false;
+      out.note = assertion_failure_note(cycle);
+      out.assertion_cycle = cycle;
+      break;
+    }
     if (observer.done()) break;
   }
   observer.finish();

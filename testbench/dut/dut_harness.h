@@ -16,6 +16,7 @@
 #include "verilated_fst_c.h"
 
 #include "model/zbuffer_memory.h"
+#include "testbench/assertions.h"
 #include "testbench/dut/dut_run.h"
 #include "testbench/frame_config.h"
 
@@ -91,6 +92,7 @@ void drive_command(V& top, const SnappedTriangle& t) {
 template <class V>
 rtl::RtlResult run(const Profile& p, const std::vector<SnappedTriangle>& tris, const DutRunOptions& options) {
   auto context = std::make_unique<VerilatedContext>();
+  rtl::record_assertion_failures(*context);
   context->traceEverOn(!options.wave_path.empty());
   auto top = std::make_unique<V>(context.get(), "dut");
   std::unique_ptr<VerilatedFstC> fst;
@@ -176,6 +178,11 @@ rtl::RtlResult run(const Profile& p, const std::vector<SnappedTriangle>& tris, c
     if constexpr (memory_port) memory->take(*top, cycle);
     const bool done = next == tris.size() && cycle > last_accept && top->frame_done;
     half_cycle(1);
+    if (rtl::assertion_failed(*context)) {
+      if (fst) fst->close();
+      throw std::runtime_error("the design: " + rtl::assertion_failure_note(cycle - first_accept) +
+                               ", counted from the first command handshake");
+    }
     if (done) {
       out.stats.cycles = cycle;
       break;

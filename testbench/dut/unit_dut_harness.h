@@ -23,6 +23,7 @@ template <class V>
 class UnitSim {
  public:
   explicit UnitSim(const DutRunOptions& options) : options_(options), context_(std::make_unique<VerilatedContext>()) {
+    rtl::record_assertion_failures(*context_);
     context_->traceEverOn(!options.wave_path.empty());
     top_ = std::make_unique<V>(context_.get(), "dut");
     if (!options.wave_path.empty()) {
@@ -39,6 +40,7 @@ class UnitSim {
   V* operator->() { return top_.get(); }
   // Cycle `cycle` begins: with a window, the FST holds only the window's cycles (and no reset).
   void begin(int64_t cycle) {
+    cycle_ = cycle;
     dumping_ = !options_.wave_window || (cycle >= options_.wave_from && cycle <= options_.wave_to);
   }
   void half_cycle(int clk) {
@@ -46,6 +48,7 @@ class UnitSim {
     top_->eval();
     if (fst_ && dumping_) fst_->dump(time_);
     ++time_;
+    if (rtl::assertion_failed(*context_)) throw std::runtime_error("the unit: " + rtl::assertion_failure_note(cycle_));
   }
   // rst high for 4 cycles; the frame's cycle 0 is the next.
   void reset() {
@@ -69,6 +72,7 @@ class UnitSim {
   std::unique_ptr<VerilatedFstC> fst_;
   uint64_t time_ = 0;  // half cycles: cycle k's rising edge at 2 k + 9
   bool dumping_ = !options_.wave_window;
+  int64_t cycle_ = -1;  // the cycle begun last
   int64_t idle_ = 0;
 };
 

@@ -7,6 +7,7 @@
 #include "Vrastersim_sc_rastersim_core.h"
 #include "model/core_parameters.h"
 #include "model/widths.h"
+#include "testbench/assertions.h"
 
 namespace rastersim::systemc {
 
@@ -195,6 +196,14 @@ void RastersimSystem::monitor() {
   if (cycle_ > bound_) {
     result_->finished = false;
     result_->note = "the RTL did not finish within " + std::to_string(bound_) + " cycles";
+    observing_ = false;
+    sc_core::sc_pause();
+    return;
+  }
+  if (Verilated::gotError()) {  // an assertion failed in the last cycle (rtl/rastersim_assert.vh)
+    result_->finished = false;
+    result_->note = rtl::assertion_failure_note(cycle_ - 1);
+    result_->assertion_cycle = cycle_ - 1;
     observing_ = false;
     sc_core::sc_pause();
     return;

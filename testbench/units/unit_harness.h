@@ -7,9 +7,11 @@
 #include <cstdint>
 #include <cstdlib>
 #include <memory>
+#include <stdexcept>
 #include <type_traits>
 
 #include "model/profile.h"
+#include "testbench/assertions.h"
 #include "testbench/core_ports.h"
 
 namespace rastersim::units {
@@ -57,6 +59,7 @@ template <class V>
 class Unit {
  public:
   explicit Unit(uint64_t seed) : context_(std::make_unique<VerilatedContext>()) {
+    rtl::record_assertion_failures(*context_);
     context_->randReset(2);  // registers without a reset start random: the unit must not read them
     context_->randSeed(int(seed % 2147483647u) + 1);
     top_ = std::make_unique<V>(context_.get(), "unit");
@@ -75,11 +78,14 @@ class Unit {
     top_->eval();
     top_->clk = 0;
     top_->eval();
+    if (rtl::assertion_failed(*context_)) throw std::runtime_error(rtl::assertion_failure_note(cycle_));
+    ++cycle_;
   }
 
  private:
   std::unique_ptr<VerilatedContext> context_;
   std::unique_ptr<V> top_;
+  int64_t cycle_ = 0;  // rising edges since construction
 };
 
 }  // namespace rastersim::units
