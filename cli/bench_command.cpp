@@ -42,14 +42,20 @@ void parse_size_range(const std::string& text, double& min_size, double& max_siz
 }
 
 void add_bench_input_options(CLI::App& cmd, BenchInput& o) {
-  cmd.add_option("input", o.input, "a .tri, .obj or .json file instead of random triangles")->type_name("INPUT");
-  cmd.add_option("--scene", o.scene, "a built-in scene instead of random triangles (see `rastersim scenes`)")
-      ->type_name("NAME");
-  cmd.add_option("--triangles", o.triangles, "number of random triangles")
-      ->check(CLI::Range(int64_t(1), int64_t(kMaxTriTriangles)))  // a frame's limit, as for a .tri file
-      ->capture_default_str();
-  cmd.add_option("--size", o.size, "random triangle size range in pixels, MIN..MAX")->capture_default_str();
-  cmd.add_option("--seed", o.seed, "random seed")->capture_default_str()->check(unsigned_64_text);
+  CLI::Option* input =
+      cmd.add_option("input", o.input, "a .tri, .obj or .json file instead of random triangles")->type_name("INPUT");
+  CLI::Option* scene =
+      cmd.add_option("--scene", o.scene, "a built-in scene instead of random triangles (see `rastersim scenes`)")
+          ->type_name("NAME");
+  // The random list's options describe a list that an INPUT or a scene replaces: given with one,
+  // they would be ignored, so they are refused.
+  for (CLI::Option* random : {cmd.add_option("--triangles", o.triangles, "number of random triangles")
+                                  ->check(CLI::Range(int64_t(1), int64_t(kMaxTriTriangles)))  // a frame's limit, as for a .tri file
+                                  ->capture_default_str(),
+                              cmd.add_option("--size", o.size, "random triangle size range in pixels, MIN..MAX")
+                                  ->capture_default_str(),
+                              cmd.add_option("--seed", o.seed, "random seed")->capture_default_str()->check(unsigned_64_text)})
+    random->excludes(input)->excludes(scene);
 }
 
 CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {

@@ -407,10 +407,15 @@ int run_cosim(const CosimOptions& o) {
   if (const std::string error = verify::parse_tolerance(o.tolerance, tolerance); !error.empty()) throw InputError(error);
   if (*mode == verify::CompareMode::Cycle && !o.tolerance.empty())
     throw InputError("--tolerance applies to --compare stream, triangle or frame; cycle compares every bit");
-  if (!std::filesystem::is_directory(o.replay_dir))
-    throw InputError("--replay-dir: folder '" + o.replay_dir + "' does not exist");
-  if (!o.export_dir.empty() && !std::filesystem::is_directory(o.export_dir))
-    throw InputError("--export: folder '" + o.export_dir + "' does not exist");
+  // A folder that must exist: "is not a folder" when the name is a file.
+  const auto require_folder = [](const std::string& option, const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) return;
+    throw InputError(option + ": '" + path + "' " +
+                     (std::filesystem::exists(std::filesystem::symlink_status(path, ec)) ? "is not a folder" : "does not exist"));
+  };
+  require_folder("--replay-dir", o.replay_dir);
+  if (!o.export_dir.empty()) require_folder("--export", o.export_dir);
   if (o.frame < -1) throw InputError("--frame " + std::to_string(o.frame) + " is not a frame number (0 or more)");
   if (o.frame >= 0 && shard.count > 1) throw InputError("--frame and --shard choose frames both: give one");
   if (!o.export_dir.empty() && (!o.junit_out.empty() || !o.wave.path.empty() || !o.coverage_out.empty()))

@@ -84,6 +84,16 @@ OutputFiles::~OutputFiles() {
     fs::remove(e.temp_path, ec);
     forget_temporary(e.temp_path);
   }
+  for (const std::string& folder : created_folders_) {
+    std::error_code ec;
+    if (fs::is_empty(folder, ec)) fs::remove(folder, ec);
+    remember_created_folder(folder, false);
+  }
+}
+
+void OutputFiles::remove_uncommitted_folder(const std::string& folder) {
+  created_folders_.push_back(folder);
+  remember_created_folder(folder, true);
 }
 
 void OutputFiles::protect(const std::string& input_path) {
@@ -219,6 +229,7 @@ void OutputFiles::commit() {
     forget_temporary(e.temp_path);
   }
   committed_ = true;
+  for (const std::string& folder : created_folders_) remember_created_folder(folder, false);
 }
 
 // Temporaries to remove when a signal ends the process: fixed storage, so that the
@@ -230,6 +241,9 @@ volatile sig_atomic_t temporary_used[kMaxTemporaries];
 
 char temporary_folders[kMaxTemporaries][4096];
 volatile sig_atomic_t temporary_folder_used[kMaxTemporaries];
+
+char created_folders[kMaxTemporaries][4096];
+volatile sig_atomic_t created_folder_used[kMaxTemporaries];
 
 // Removes a folder and what it holds with system calls only (no allocation): files, and folders
 // below it up to `depth` levels (a package holds rtl/ and the like, one level).
@@ -268,6 +282,8 @@ void remove_temporaries_and_reraise(int signal_number) {
     if (temporary_used[i]) unlink(temporaries[i]);
   for (int i = 0; i < kMaxTemporaries; ++i)
     if (temporary_folder_used[i]) remove_folder_at(AT_FDCWD, temporary_folders[i], 3);
+  for (int i = 0; i < kMaxTemporaries; ++i)
+    if (created_folder_used[i]) rmdir(created_folders[i]);  // only when empty: nothing of anyone else's
   ::signal(signal_number, SIG_DFL);
   ::raise(signal_number);
 }
@@ -286,6 +302,17 @@ void remember_temporary(const std::string& path) {
 void forget_temporary(const std::string& path) {
   for (int i = 0; i < kMaxTemporaries; ++i)
     if (temporary_used[i] && path == temporaries[i]) temporary_used[i] = 0;
+}
+
+void remember_created_folder(const std::string& path, bool exists) {
+  for (int i = 0; i < kMaxTemporaries; ++i) {
+    if (exists && !created_folder_used[i] && path.size() < sizeof created_folders[0]) {
+      std::memcpy(created_folders[i], path.c_str(), path.size() + 1);
+      created_folder_used[i] = 1;
+      return;
+    }
+    if (!exists && created_folder_used[i] && path == created_folders[i]) created_folder_used[i] = 0;
+  }
 }
 
 void remember_temporary_folder(const std::string& path, bool exists) {

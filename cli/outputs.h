@@ -53,6 +53,9 @@ class OutputFiles {
   // A scratch file of the run (not an output): removed when the run ends, committed or not, and on
   // a terminating signal. Returns the path.
   std::string add_scratch(const std::string& path);
+  // A folder this run created for its outputs (sweep --out): removed, when empty, if the run ends
+  // without commit or a terminating signal ends it.
+  void remove_uncommitted_folder(const std::string& folder);
 
  private:
   struct Entry {
@@ -65,6 +68,7 @@ class OutputFiles {
   std::vector<Entry> entries_;
   std::vector<std::string> protected_;
   std::vector<std::string> scratch_;
+  std::vector<std::string> created_folders_;
   bool committed_ = false;
   bool writes_stdout_ = false;
 };
@@ -80,6 +84,8 @@ void forget_temporary(const std::string& path);
 // The same for a hidden folder of files (a vector package being written): the handler removes its
 // files and then the folder. Matches vectors::TemporaryFolderHook.
 void remember_temporary_folder(const std::string& path, bool exists);
+// An empty folder a run created: the handler removes it (rmdir) after the temporaries in it.
+void remember_created_folder(const std::string& path, bool exists);
 void remove_temporaries_on_signals();
 
 // The RTL waveform options of render and cosim: `--wave FILE` (.fst or .vcd; `--fst` is its

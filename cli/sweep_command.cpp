@@ -414,13 +414,14 @@ int run_sweep(const SweepOptions& o) {
   const TextureBinding texture = texture_binding(o.scene, o.scene.input, o.scene.scene, texture_profile);
   if (o.plots && std::system("gnuplot --version > /dev/null 2>&1") != 0)
     throw InputError("gnuplot is not installed (scripts/install-deps.sh installs gnuplot-nox), or use --no-plots");
+  // Every output is checked before any point runs: none may be an input (a profile or texture
+  // inside --out), and all are written to temporaries and renamed into place together. A folder
+  // made here goes again when the run fails or is killed (registered before it exists).
+  OutputFiles outputs;
   std::error_code ec;
-  const bool out_existed = fs::exists(o.out_dir, ec);
+  if (!fs::exists(o.out_dir, ec)) outputs.remove_uncommitted_folder(o.out_dir);
   fs::create_directories(o.out_dir, ec);
   if (ec || !fs::is_directory(o.out_dir)) throw InputError("--out " + o.out_dir + ": cannot create the folder");
-  // Every output is checked before any point runs: none may be an input (a profile or texture
-  // inside --out), and all are written to temporaries and renamed into place together.
-  OutputFiles outputs;
   outputs.protect(o.scene.input);
   for (const std::string& mesh : frontend::scene_mesh_files(o.scene.input)) outputs.protect(mesh);
   outputs.protect(o.scene.profile.profile_file);
@@ -429,19 +430,14 @@ int run_sweep(const SweepOptions& o) {
   const std::string gp_path = (fs::path(o.out_dir) / "sweep.gp").string();
   std::map<std::string, std::string> plot_temps;  // file name in --out -> temporary gnuplot writes
   std::string csv_temp, gp_temp;
-  try {
-    csv_temp = outputs.add(csv_path, "--out");
-    gp_temp = outputs.add(gp_path, "--out");
-    if (o.plots) {
-      std::vector<std::string> plots;
-      for (const Column& c : figure_columns())
-        if (written(c)) plots.push_back(plot_file(c));
-      if (written.hw_cost) plots.push_back(kCostPlot);
-      for (const std::string& name : plots) plot_temps[name] = outputs.add((fs::path(o.out_dir) / name).string(), "--out");
-    }
-  } catch (...) {
-    if (!out_existed) fs::remove(o.out_dir, ec);  // made by this run: gone with it
-    throw;
+  csv_temp = outputs.add(csv_path, "--out");
+  gp_temp = outputs.add(gp_path, "--out");
+  if (o.plots) {
+    std::vector<std::string> plots;
+    for (const Column& c : figure_columns())
+      if (written(c)) plots.push_back(plot_file(c));
+    if (written.hw_cost) plots.push_back(kCostPlot);
+    for (const std::string& name : plots) plot_temps[name] = outputs.add((fs::path(o.out_dir) / name).string(), "--out");
   }
   const std::string rtl_dir = o.rtl_dir.empty() ? std::string(RASTERSIM_SOURCE_DIR) + "/rtl" : o.rtl_dir;
 

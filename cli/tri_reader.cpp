@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "model/input_error.h"
+#include "model/text_file.h"
 
 namespace rastersim {
 namespace {
@@ -21,22 +22,6 @@ const char* const kVertexColorNames[9] = {"r0", "g0", "b0", "r1", "g1", "b1", "r
 const char* const kTextureNames[9] = {"u0", "v0", "w0", "u1", "v1", "w1", "u2", "v2", "w2"};
 // Starts a line's texture section (format version 2): nine numbers u v w per vertex.
 const char* const kTextureKeyword = "uvw";
-
-// A token as an error message shows it: bytes that would not print (a NUL cut the message) as \xNN.
-std::string shown(const std::string& token) {
-  std::string out;
-  for (unsigned char c : token) {
-    if (c >= 0x20 && c != 0x7f) {
-      out += char(c);
-    } else {
-      static const char hex[] = "0123456789abcdef";
-      out += "\\x";
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    }
-  }
-  return out;
-}
 
 // Lines of `in` without their ends: a line ends at "\n", "\r\n" or a lone "\r" (old Mac files:
 // their second line was read as the colours of the first). A physical line longer than
@@ -109,8 +94,8 @@ std::string parse_real(const std::string& token, const char* field, double& out)
   errno = 0;
   const double value = std::strtod(begin, &end);
   if (end == begin || end != begin + token.size())
-    return std::string(field) + " '" + shown(token) + "' is not a number";
-  if (!std::isfinite(value)) return std::string(field) + " '" + shown(token) + "' is not a finite number";
+    return std::string(field) + " '" + token + "' is not a number";
+  if (!std::isfinite(value)) return std::string(field) + " '" + token + "' is not a finite number";
   out = value;
   return "";
 }
@@ -212,8 +197,7 @@ std::vector<ScreenTriangle> read_tri(std::istream& in, const std::string& file_n
 }
 
 std::vector<ScreenTriangle> read_tri_file(const std::string& path, const Profile& profile) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not a .tri file");
+  refuse_special_file(path, "a .tri file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
   return read_tri(in, path, profile);

@@ -46,6 +46,9 @@ Setting<T> pick(const std::optional<T>& from_file, const Origin& file_origin, co
 
 void require_finite(const Setting<Vec3>& s) {
   if (s.value && !is_finite(*s.value)) s.fail("has a coordinate that is not a finite number");
+  // The camera's arithmetic takes lengths: a vector whose length overflows cannot be placed.
+  if (s.value && !std::isfinite(length(*s.value)))
+    s.fail(vector_text(*s.value) + " is too large: its length overflows double precision");
 }
 void require_finite(const Setting<double>& s) {
   if (s.value && !std::isfinite(*s.value)) s.fail("is not a finite number");
@@ -99,6 +102,9 @@ Camera resolve_camera(const CameraSettings& file, const CameraOptions& flags, co
                            "give --eye (and --target)");
   }
   const Vec3 view = c.target - c.eye;
+  if (!std::isfinite(length(view)))
+    (eye.value ? eye : target).fail(vector_text(c.eye) + " and target " + vector_text(c.target) +
+                                    " are too far apart: their distance overflows double precision");
   if (!(length(view) > 1e-12 * std::max(1.0, length(c.eye)))) {
     (target.value ? target : eye).fail(vector_text(c.target) + ": eye and target are the same point, so there is no view direction");
   }

@@ -172,6 +172,9 @@ class SceneReader {
     if (doc.contains("lights")) {
       const json& lights = doc["lights"];
       if (!lights.is_array()) fail("/lights", "lights must be an array of light objects");
+      if (lights.size() > kMaxSceneLights)
+        fail("/lights", std::to_string(lights.size()) + " lights; a scene has at most " + std::to_string(kMaxSceneLights) +
+                            " (each lights every vertex)");
       scene.lighting.lights.clear();
       for (size_t i = 0; i < lights.size(); ++i) scene.lighting.lights.push_back(read_light(lights[i], JsonLines::child("/lights", i)));
     }
@@ -240,6 +243,9 @@ class SceneReader {
     if (v.contains("mesh")) {
       const std::string key = pointer + "/mesh";
       if (!v["mesh"].is_string()) fail(key, "mesh must be a file name (a string)");
+      // A NUL (\u0000) would end the name where the file system reads it: another file would load.
+      if (v["mesh"].get<std::string>().find('\0') != std::string::npos)
+        fail(key, "mesh file name '" + v["mesh"].get<std::string>() + "' holds a NUL character");
       const std::filesystem::path relative = v["mesh"].get<std::string>();
       const std::filesystem::path path = relative.is_absolute() ? relative : std::filesystem::path(base_) / relative;
       std::error_code ec;

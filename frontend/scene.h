@@ -50,6 +50,8 @@ std::vector<ScreenTriangle> render_scene(const Scene& scene, const Camera& camer
 constexpr size_t kMaxSceneTriangles = 4'000'000;
 // The largest scene file read (scenes list objects; meshes are files of their own).
 constexpr size_t kMaxSceneBytes = size_t(16) << 20;
+// The lights of a scene: every vertex is lit by each (OpenGL's fixed function had 8).
+constexpr size_t kMaxSceneLights = 64;
 Scene load_scene(const std::string& path);
 Scene parse_scene(const std::string& text, const std::string& file_name, const std::string& base_folder);
 // The mesh files a scene file names (as load_scene resolves them), for the outputs to refuse as

@@ -30,10 +30,17 @@ struct ErrorLocator : nlohmann::json_sax<nlohmann::json> {
   std::size_t located_byte = 0;
 };
 
+// A line ends at "\n", "\r\n" or a lone "\r" (old Mac files): true at the byte that ends one.
+bool ends_line(const std::string& text, std::size_t at) {
+  return text[at] == '\n' || (text[at] == '\r' && (at + 1 >= text.size() || text[at + 1] != '\n'));
+}
+
 // The 1-based line of the character before byte `byte` (nlohmann counts the failing character).
 int line_before_byte(const std::string& text, std::size_t byte) {
-  const std::size_t at = std::min(byte, text.size());
-  return 1 + int(std::count(text.begin(), text.begin() + long(at == 0 ? 0 : at - 1), '\n'));
+  const std::size_t end = std::min(byte, text.size());
+  int line = 1;
+  for (std::size_t at = 0; at + 1 < end; ++at) line += ends_line(text, at);
+  return line;
 }
 
 // A recursive walk over valid JSON that records where each value starts.
@@ -49,7 +56,7 @@ class Walker {
  private:
   void skip_space() {
     while (at_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[at_]))) {
-      if (s_[at_] == '\n') ++line_;
+      if (ends_line(s_, at_)) ++line_;
       ++at_;
     }
   }
@@ -89,7 +96,7 @@ class Walker {
         string_token();
         continue;
       }
-      if (c == '\n') ++line_;
+      if (ends_line(s_, at_)) ++line_;
       if (c == '{' || c == '[') ++depth;
       else if (c == '}' || c == ']') --depth;
       ++at_;

@@ -358,7 +358,13 @@ std::string set_profile_key(Profile& p, const std::string& key, const std::strin
   }
   if (row->word && value == row->word) return row->set(p, row->word_value), "";
   const bool wide = row->min < INT32_MIN || row->max > INT32_MAX;
-  if (!parse_int(value, n) || (!wide && (n < INT32_MIN || n > INT32_MAX)))
+  // Digits beyond 64 bits, or beyond 32 for a key whose range fits them, are out of range, not a non-integer.
+  const size_t sign = !value.empty() && (value[0] == '-' || value[0] == '+') ? 1 : 0;
+  const bool digits = value.size() > sign && value.find_first_not_of("0123456789", sign) == std::string::npos;
+  const bool parsed = parse_int(value, n);
+  if (digits && (!parsed || (!wide && (n < INT32_MIN || n > INT32_MAX))))
+    return key + " is " + value + "; it must be " + plain(values_text(*row));
+  if (!parsed)
     return key + " takes an integer" + (row->word ? " or '" + std::string(row->word) + "'" : "") + ", not '" + value + "'";
   // A number that spells the word's value is out of range (0 is how z_guard_bits holds 'auto').
   if (row->word && (n == row->word_value || n < row->min))

@@ -9,9 +9,16 @@
 
 namespace rastersim {
 
-std::string read_text_file(const std::string& path, const std::string& what, size_t max_bytes) {
+void refuse_special_file(const std::string& path, const std::string& what) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not " + what);
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (std::filesystem::is_directory(status)) throw InputError(path, 0, "is a directory, not " + what);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw InputError(path, 0, "is not a regular file (a device, FIFO or socket), so it cannot be " + what);
+}
+
+std::string read_text_file(const std::string& path, const std::string& what, size_t max_bytes) {
+  refuse_special_file(path, what);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot open " + what + ": " + std::strerror(errno));
   std::string text;

@@ -1,6 +1,11 @@
 // `rastersim vectors` end to end: a package from each kind of source, and exit 2 with a message
 // naming the problem and nothing written for every kind of bad usage.
+#include <sys/wait.h>
+
 #include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <utility>
 
 #include "cli_test_support.h"
 
@@ -63,6 +68,30 @@ TEST(CliVectors, WritesAPackageFromEachSource) {
   EXPECT_EQ(random["source"]["count"], 5);
   EXPECT_EQ(random["source"]["seed"], 3);
   EXPECT_EQ(random["cycles"]["per_triangle"].size(), 5u);
+}
+
+// The package's checker reports a damaged manifest (no files list, a path outside the package)
+// with exit 2 and a message, not a Python traceback, and does not read outside the package.
+TEST(CliVectors, TheCheckerRefusesADamagedManifest) {
+  ScratchDir dir;
+  const RunResult made = run_rastersim(dir, {"vectors", "--width", "32", "--height", "24", "--out", "pk", "--scene", "fan"});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  dir.write("secret.txt", "not part of the package\n");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"{\"format\": \"rastersim-vectors\"}", "no \"files\" list"},
+      {"{\"files\": [{\"path\": \"../secret.txt\", \"bytes\": 24, \"crc32\": \"0x00000000\"}]}",
+       "'../secret.txt' is not a path inside the package"},
+      {"{\"files\": [{\"path\": \"commands.hex\"}]}", "is not {path, bytes, crc32}"}};
+  for (const auto& [manifest, message] : cases) {
+    dir.write("pk/manifest.json", manifest);
+    const std::string command = "cd '" + dir.work().string() + "' && python3 pk/check_manifest.py > out.txt 2> err.txt";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 2) << manifest;
+    const std::string err = read_text(dir.path("err.txt"));
+    EXPECT_TRUE(contains(err, message)) << err;
+    EXPECT_FALSE(contains(err, "Traceback")) << err;
+  }
 }
 
 // Camera flags on a 3D input (once refused): the package holds the frame `render` draws with the

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstdlib>
 #include <filesystem>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 
 #include "testbench/cosim_cases.h"
@@ -25,10 +28,29 @@ Profile hires_profile() {
   return p;
 }
 
+// This program's scratch folder: its own under the temporary folder, removed when the program ends
+// unless a test failed (its replay files are then there to run).
+const std::filesystem::path& scratch_folder() {
+  struct Folder {
+    std::filesystem::path path;
+    Folder() {
+      std::string name = (std::filesystem::temp_directory_path() / "rastersim_rtl_tests_XXXXXX").string();
+      if (!mkdtemp(name.data())) throw std::runtime_error("cannot make a scratch folder in " + name);
+      path = name;
+    }
+    ~Folder() {
+      std::error_code ec;
+      if (!::testing::UnitTest::GetInstance()->Failed()) std::filesystem::remove_all(path, ec);
+    }
+  };
+  static const Folder folder;
+  return folder.path;
+}
+
 std::string replay_prefix(const std::string& name) {
   std::string clean;
   for (char c : name) clean += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  return (std::filesystem::temp_directory_path() / ("rastersim_replay_" + clean)).string();
+  return (scratch_folder() / ("rastersim_replay_" + clean)).string();
 }
 
 // Runs one frame through both, fails with the first divergence and the replay command.

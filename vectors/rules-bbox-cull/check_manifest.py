@@ -17,12 +17,31 @@ try:
 except ValueError as error:
     print(f"check_manifest: manifest.json: not JSON ({error}): changed since the package was made", file=sys.stderr)
     sys.exit(2)
+# The manifest's shape: a "files" list of {path, bytes, crc32}, each path a file of this package
+# (relative, no ".." step), so that a damaged manifest is reported, not a traceback.
+def entry_problem(entry):
+    if not isinstance(entry, dict) or not isinstance(entry.get("path"), str) or \
+            not isinstance(entry.get("bytes"), int) or not isinstance(entry.get("crc32"), str):
+        return f"manifest.json: an entry of files is not {{path, bytes, crc32}}: {json.dumps(entry)[:80]}"
+    parts = entry["path"].replace("\\", "/").split("/")
+    if os.path.isabs(entry["path"]) or ".." in parts or entry["path"] == "":
+        return f"manifest.json: {entry['path']!r} is not a path inside the package"
+    return None
+
+
+if not isinstance(manifest, dict) or not isinstance(manifest.get("files"), list):
+    print("check_manifest: manifest.json: no \"files\" list: changed since the package was made", file=sys.stderr)
+    sys.exit(2)
 own = manifest.get("manifest_crc32", "")
 unsigned = re.sub(rb'"manifest_crc32": "0x[0-9a-f]{8}"', b'"manifest_crc32": "0x00000000"', text)
 if f"0x{zlib.crc32(unsigned):08x}" != own:
     problems.append(f"manifest.json: CRC-32 0x{zlib.crc32(unsigned):08x} of its text; its manifest_crc32 says {own} "
                     "(changed since the package was made)")
 for entry in manifest["files"]:
+    problem = entry_problem(entry)
+    if problem:
+        problems.append(problem)
+        continue
     path = os.path.join(here, entry["path"])
     if not os.path.isfile(path):
         problems.append(f"{entry['path']}: missing")
