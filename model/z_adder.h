@@ -176,9 +176,13 @@ class ZAdder {
   }
   // Each left-edge slot to the next row: its edge's quotient moves by span_step_quot, and by one
   // more on the DDA's carry, which moves the span start one pixel left of where `step` took it.
+  // A mask, not a branch per plane: a slot's four registers are then written as one vector, which
+  // enter_span_row() reads back whole in the next row (a read of several smaller writes stalls).
   void step_left_edges(const bool carry[kLeftEdgeSlots]) {
-    for (int j = 0; j < kLeftEdgeSlots; ++j)
-      for (int k = 0; k < kPlanes; ++k) along_[j][k] += along_step_[j][k] - (carry[j] ? step_x_[k] : 0);
+    for (int j = 0; j < kLeftEdgeSlots; ++j) {
+      const uint64_t carried = carry[j] ? ~uint64_t(0) : 0;
+      for (int k = 0; k < kPlanes; ++k) along_[j][k] += along_step_[j][k] - (step_x_[k] & carried);
+    }
     if (textured_) texture_.step_left_edges(carry);
   }
 
