@@ -363,7 +363,7 @@ std::string set_profile_key(Profile& p, const std::string& key, const std::strin
   const bool digits = value.size() > sign && value.find_first_not_of("0123456789", sign) == std::string::npos;
   const bool parsed = parse_int(value, n);
   if (digits && (!parsed || (!wide && (n < INT32_MIN || n > INT32_MAX))))
-    return key + " is " + value + "; it must be " + plain(values_text(*row));
+    return key + " is '" + value + "'; it must be " + plain(values_text(*row));
   if (!parsed)
     return key + " takes an integer" + (row->word ? " or '" + std::string(row->word) + "'" : "") + ", not '" + value + "'";
   // A number that spells the word's value is out of range (0 is how z_guard_bits holds 'auto').

@@ -223,7 +223,7 @@ TEST(ProfileFile, ErrorsNameFileLineAndProblem) {
       // escaped as an uncaught exception).
       {"overflow.json", "{\n  \"width\": 64,\n  \"height\": 1e999\n}\n", 3, "malformed JSON"},
       // An integer above INT64_MAX is refused as written (it wrapped to -1, which is 'max').
-      {"unsigned.json", "{\n  \"depth_clear\": 18446744073709551615\n}\n", 2, "depth_clear is 18446744073709551615; it must be"},
+      {"unsigned.json", "{\n  \"depth_clear\": 18446744073709551615\n}\n", 2, "depth_clear is '18446744073709551615'; it must be"},
       // Nesting deeper than any stack: the line finder steps over it (it recursed once per level).
       {"deep.json", deep_json.c_str(), 3, "profile key 'deep' must be a string, integer or boolean"},
       // Ranges at the key's line (they were reported without file and line).

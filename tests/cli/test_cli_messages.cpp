@@ -52,7 +52,7 @@ TEST(CliMessages, AnIntegerOutOfRangeIsSaidToBe) {
     dir.write("big.json", "{\"memory_latency\": " + value + "}\n");
     const RunResult r = run_rastersim(dir, {"render", "one.tri", "--profile", "big.json"});
     EXPECT_EQ(r.exit_code, 2);
-    EXPECT_TRUE(contains(r.err, "memory_latency is " + value + "; it must be")) << r.err;
+    EXPECT_TRUE(contains(r.err, "memory_latency is '" + value + "'; it must be")) << r.err;
     EXPECT_FALSE(contains(r.err, "takes an integer")) << r.err;
   }
 }
