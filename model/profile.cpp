@@ -157,7 +157,8 @@ const std::vector<ProfileKey> kTable = {
     {"memory_latency", KeyType::Integer, 1, kMaxMemoryLatency, nullptr, 0, {}, nullptr, "z-buffer read latency in cycles",
      RtlPlace::Both, "cfg_memory_latency, MAX_MEMORY_LATENCY", RS_MEMBER(memory_latency)},
     {"memory_stall_percent", KeyType::Integer, 0, 90, nullptr, 0, {}, nullptr,
-     "memory back-pressure: share of cycles refusing reads (SystemC backend, `cosim --dut` memory port; [cycle-model.md](cycle-model.md))",
+     "memory back-pressure: share of cycles refusing reads (backends model and systemc, `rastersim_core` vector "
+     "packages, `cosim --dut` memory port; not `rastersim_top`: rtl, cosim; [cycle-model.md](cycle-model.md))",
      RtlPlace::None, "", RS_MEMBER(memory_stall_percent)},
     {"memory_stall_seed", KeyType::Integer, 0, INT32_MAX, nullptr, 0, {}, nullptr, "seed of the stall pattern",
      RtlPlace::None, "", RS_MEMBER(memory_stall_seed)},
