@@ -190,8 +190,16 @@ std::string OutputFiles::add(const std::string& final_path, const std::string& w
     entries_.push_back({final_path, target.string(), target.string(), true});
     return entries_.back().temp_path;
   }
-  const std::string temp_name = "." + target.stem().string() + ".tmp" + std::to_string(getpid()) + "-" +
-                                std::to_string(entries_.size()) + target.extension().string();
+  // The temporary's name stays well inside NAME_MAX (255 bytes) whatever the target's length: a
+  // long stem is cut (a writer may choose the format by the extension, which is kept when short).
+  std::string stem = target.stem().string();
+  std::string extension = target.extension().string();
+  if (stem.size() + extension.size() > 160) {
+    stem.resize(std::min<size_t>(stem.size(), 100));
+    if (extension.size() > 40) extension.clear();
+  }
+  const std::string temp_name = "." + stem + ".tmp" + std::to_string(getpid()) + "-" +
+                                std::to_string(entries_.size()) + extension;
   entries_.push_back({final_path, target.string(), (folder / temp_name).string(), false});
   remember_temporary(entries_.back().temp_path);
   return entries_.back().temp_path;

@@ -56,7 +56,7 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
   if (!options.wave_path.empty()) {
     fst = std::make_unique<VerilatedFstC>();
     top->trace(fst.get(), 99);
-    fst->open(fst_path.c_str());
+    open_waveform(*fst, fst_path);
   }
   const bool windowed = options.wave_from >= 0 || options.wave_to >= 0;
   bool dumping = !windowed;  // reset and the memory clear are in the dump only without a window

@@ -2,10 +2,23 @@
 // GTKWave save file that opens it with the units' ports grouped (docs/debugging.md).
 #pragma once
 
+#include <cerrno>
 #include <cstdint>
+#include <cstring>
+#include <stdexcept>
 #include <string>
 
 namespace rastersim::rtl {
+
+// Opens Verilator's FST writer `trace` on `path`; a file that cannot be made is an error here, not
+// an empty waveform found later.
+template <class Trace>
+void open_waveform(Trace& trace, const std::string& path) {
+  errno = 0;
+  trace.open(path.c_str());
+  if (!trace.isOpen())
+    throw std::runtime_error("cannot write the waveform " + path + (errno ? " (" + std::string(std::strerror(errno)) + ")" : ""));
+}
 
 // Rewrites the FST at `fst_path` as a VCD at `vcd_path` (the same signals and times).
 void fst_to_vcd(const std::string& fst_path, const std::string& vcd_path);

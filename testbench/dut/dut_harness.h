@@ -19,6 +19,7 @@
 #include "testbench/assertions.h"
 #include "testbench/dut/dut_run.h"
 #include "testbench/frame_config.h"
+#include "testbench/waveform.h"
 
 namespace rastersim::dut {
 
@@ -99,7 +100,7 @@ rtl::RtlResult run(const Profile& p, const std::vector<SnappedTriangle>& tris, c
   if (!options.wave_path.empty()) {
     fst = std::make_unique<VerilatedFstC>();
     top->trace(fst.get(), 99);
-    fst->open(options.wave_path.c_str());
+    rtl::open_waveform(*fst, options.wave_path);
   }
   uint64_t time = 0;
   bool dumping = !options.wave_window;  // a window starts at its first cycle after the first handshake

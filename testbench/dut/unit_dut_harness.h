@@ -29,7 +29,7 @@ class UnitSim {
     if (!options.wave_path.empty()) {
       fst_ = std::make_unique<VerilatedFstC>();
       top_->trace(fst_.get(), 99);
-      fst_->open(options.wave_path.c_str());
+      rtl::open_waveform(*fst_, options.wave_path);
     }
   }
   ~UnitSim() {

@@ -230,6 +230,27 @@ TEST(CliOutputs, DashIsStandardOutput) {
   EXPECT_EQ(dir.listing(), (std::set<std::string>{"small.tri"}));
 }
 
+// A name near the file system's limit (255 bytes) is written: its temporary's name stays inside it.
+TEST(CliOutputs, ANameNearTheLengthLimitIsWritten) {
+  ScratchDir dir;
+  dir.write("small.tri", kSmallTri);
+  const std::string stats = std::string(245, 's') + ".json";
+  std::vector<std::string> args{"render", "small.tri", "--stats", stats, "--width", "64", "--height", "48"};  // a built-in RTL profile
+#ifdef RASTERSIM_HAVE_RTL  // the waveform's writer opens its own temporary, and a VCD a scratch FST beside it
+  const std::string wave = std::string(248, 'w') + ".vcd";
+  for (const std::string arg : {"--backend", "rtl", "--wave", wave.c_str()}) args.push_back(arg);
+#endif
+  const RunResult r = run_rastersim(dir, args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(read_json(dir.path(stats))["fragments"].get<int64_t>(), 0);
+  std::set<std::string> expected{"small.tri", stats};
+#ifdef RASTERSIM_HAVE_RTL
+  EXPECT_TRUE(contains(read_text(dir.path(wave)), "$enddefinitions"));
+  expected.insert({wave, std::string(248, 'w') + ".gtkw"});
+#endif
+  EXPECT_EQ(dir.listing(), expected);
+}
+
 // A file with another hard link stays one file: both names show the output.
 TEST(CliOutputs, AHardLinkStaysLinked) {
   ScratchDir dir;
