@@ -243,9 +243,11 @@ PY
     mkdir -p "$work/runtime"
     cp "$dir"/obj/verilated*.o "$dir"/obj/verilated*.d "$work/runtime/"
   fi
+  # The mutant's binary stays beside its replay files: the replay command it prints runs it there.
   replays="$build/rtl-mutants/$m"
   mkdir -p "$replays"
-  if "$dir/obj/mutant_check" "$replays" "$max_latency" ${check[$m]:-} > "$dir/check.log"; then
+  cp "$dir/obj/mutant_check" "$replays/mutant_check"
+  if "$replays/mutant_check" "$replays" "$max_latency" ${check[$m]:-} > "$dir/check.log"; then
     cat "$dir/check.log"
     # What cosim gives for a divergence: the replay reproduces it alone, and the waveform window
     # holds its cycle (the debug monitor's frame_cycle takes that value in the dump).
@@ -255,8 +257,8 @@ PY
     if grep -q '^replay: none' "$dir/check.log"; then
       replayed="$sentence"  # a textured frame: no .tri replay (it would carry no texture)
     else
-      read -r _ prefix seed < <(sed -n 's/^replay: mutant_check //p' "$dir/check.log")
-      replayed=$("$dir/obj/mutant_check" --replay "$prefix" "$seed" | grep '^first divergence: ' || true)
+      read -r program _ prefix seed < <(sed -n 's/^replay: //p' "$dir/check.log")
+      replayed=$("$program" --replay "$prefix" "$seed" | grep '^first divergence: ' || true)
     fi
     if [ -n "${assertion[$m]:-}" ] && ! grep -q "Assertion failed in .*${assertion[$m]}" "$dir/check.log"; then
       echo "mutant $m: caught, but not by the assertion ${assertion[$m]}"; status=1

@@ -48,7 +48,8 @@ bool caught(const CosimCase& c, uint64_t seed, const std::string& replay_dir, co
   std::printf("caught by %s in %s (traversal %s, memory_latency %d):\n%s\n", suite.c_str(), c.name.c_str(),
               to_string(c.profile.traversal), c.profile.memory_latency, d.sentence.c_str());
   if (c.profile.texture_unit) std::printf("replay: none (a textured frame)\n");
-  else std::printf("replay: mutant_check --replay %s %llu\n", prefix.c_str(), (unsigned long long)seed);
+  else  // rtl-mutants.sh keeps this binary in the replay folder, so the command outlives the run
+    std::printf("replay: %s/mutant_check --replay %s %llu\n", replay_dir.c_str(), prefix.c_str(), (unsigned long long)seed);
   std::printf("waveform: %s.vcd frame cycles %lld..%lld, divergence cycle %lld\n", prefix.c_str(),
               (long long)wave.wave_from, (long long)wave.wave_to, (long long)d.cycle);
   return true;
