@@ -118,6 +118,11 @@ fi
 grep -m1 "MISMATCH triangle [0-9]*, pixel ([0-9]*, [0-9]*), [a-z]" "$work/dpi-bug.out" \
   || { echo "check-install: the DPI example failed without naming triangle, pixel and field"; cat "$work/dpi-bug.out"; exit 1; }
 echo "check-install: the DPI example caught the injected bug"
+# docs/library.md shows these runs: its lines must be what they print.
+for line in "$(grep -m1 'agree with the model' "$work/dpi.out")" "$(grep -m1 'MISMATCH' "$work/dpi-bug.out")" \
+            "$(grep -m1 'FAILED, ' "$work/dpi-bug.out")"; do
+  grep -qxF -- "$line" "$root/docs/library.md" || { echo "check-install: docs/library.md does not show '$line'"; exit 1; }
+done
 
 if [ $# -ge 3 ]; then
   compare "$(realpath "$2")" "$(realpath "$3")"
