@@ -243,7 +243,8 @@ int run_bench(const BenchOptions& o) {
   const int64_t walker_idle = stats.cycles - stats.walker.busy - stats.walker.stall;
   std::printf("throughput  %.3f fragments per clock (bound 1), %.1f cycles per triangle\n", fragments / cycles,
               cycles / std::max(n, 1.0));
-  std::printf("walker      busy %.1f%%, stalled by z-buffer hazards %.1f%%, idle (waiting for setup) %.1f%% of cycles\n",
+  // Held: the z-buffer refuses its fragment (a hazard, or the memory's back-pressure).
+  std::printf("walker      busy %.1f%%, held by the z-buffer %.1f%%, idle (waiting for setup) %.1f%% of cycles\n",
               100.0 * double(stats.walker.busy) / cycles, 100.0 * double(stats.walker.stall) / cycles,
               100.0 * double(walker_idle) / cycles);
   std::printf("setup       latency %d cycles per drawn triangle, %d per rejected; busy %.1f%% of cycles\n",

@@ -3,8 +3,9 @@
 // L = profile.memory_latency, takes every write, and may refuse read requests (back-pressure):
 // in frame cycle c it is not ready when memory_stalls(seed, percent, c), a seeded, deterministic
 // stall pattern (docs/cycle-model.md), so the cycle model predicts its effect exactly. The
-// on-chip memory never stalls (memory_stall_percent 0); the SystemC memory model
-// (testbench/systemc/) applies the pattern. Header-only: the SystemC library uses it as is.
+// on-chip memory never stalls (memory_stall_percent 0); the model and every memory behind the
+// core's port (SystemC, vector packages, --dut designs) apply the pattern. Header-only: the SystemC
+// library uses it as is.
 #pragma once
 
 #include <algorithm>

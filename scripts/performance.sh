@@ -39,7 +39,11 @@ inputs=(
   "scene-overlap|--scene overlap"
   "scene-fan|--scene fan"
   "scene-stress|--scene stress"
+  "random-60px-1024|--triangles 20000 --size 60 --width 1024 --height 1024 --cull none"
 )
+# The Stanford bunny from Debian's glmark2-data, when installed.
+bunny=/usr/share/glmark2/models/bunny.obj
+[ -f "$bunny" ] && inputs+=("bunny|$bunny")
 for entry in "${inputs[@]}"; do
   name="${entry%%|*}"
   read -r -a args <<< "${entry#*|}"
@@ -58,7 +62,7 @@ echo "(pixels: pixels whose count of covering triangles differs between the mode
 echo
 
 echo "## Hardware throughput (model cycles, equal to the RTL's), default profile, memory latency 2"
-printf '%-16s %-5s %10s %10s %9s %9s %9s %9s %7s\n' input walk fragments cycles frag/clk "walk busy" "hazard" "idle" setup
+printf '%-16s %-5s %10s %10s %9s %9s %9s %9s %7s\n' input walk fragments cycles frag/clk "walk busy" "held" "idle" setup
 for entry in "${inputs[@]}"; do
   name="${entry%%|*}"
   read -r -a args <<< "${entry#*|}"
@@ -70,7 +74,7 @@ for entry in "${inputs[@]}"; do
       "$(value 'walker' 8 "$f" | tr -d ,)" "$(value 'walker' 13 "$f")" "$(value 'setup' 3 "$f")"
   done
 done
-echo "(walk busy / hazard / idle: shares of all cycles the walker emits, waits on a z-buffer hazard, waits for setup;"
+echo "(walk busy / held / idle: shares of all cycles the walker emits, is held by the z-buffer, waits for setup;"
 echo " setup: cycles from a drawn triangle's acceptance to its record; the bound is 1 fragment per clock)"
 echo
 
