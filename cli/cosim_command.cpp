@@ -293,7 +293,11 @@ void add_failure_waveform(std::string& message, const std::string& prefix, int64
   message += "; waveform: " + wave.wave_path;
   if (at >= 0) {
     const int64_t edge = 2 * (origin + at) + 9;  // the mismatch cycle's rising edge, after reset's 8 half cycles
-    rtl::write_design_gtkwave_save(wave.wave_path, wave.wave_path, prefix + ".gtkw", edge - 2 * kWaveAround - 1, edge);
+    rtl::WaveView view;
+    view.start = edge - 2 * kWaveAround - 1, view.end = edge + 2 * kWaveAround;
+    view.primary_marker = edge;
+    view.markers = {{"window_start", view.start}, {"mismatch", edge}, {"window_end", view.end}};
+    rtl::write_design_gtkwave_save(wave.wave_path, wave.wave_path, prefix + ".gtkw", view);
   }
 }
 
@@ -336,7 +340,10 @@ DesignFrame design_frame(const dut::Design& design, const rtl::CosimCase& c, con
     d.message = e.what();
   }
   if (!waveform.wave_path.empty()) {  // a stalled frame's waveform ends at the stall
-    rtl::write_design_gtkwave_save(fst_path, waveform.wave_name, waveform.gtkwave_save_path, wave_start, -1);
+    rtl::WaveView view;
+    view.start = wave_start;
+    if (run_options.wave_window) view.markers = {{"window_start", wave_start}};
+    rtl::write_design_gtkwave_save(fst_path, waveform.wave_name, waveform.gtkwave_save_path, view);
     if (waveform.wave_vcd) rtl::fst_to_vcd(fst_path, waveform.wave_path);
   }
   if (d.passed) return d;

@@ -264,10 +264,10 @@ PY
       echo "mutant $m: caught, but not by the assertion ${assertion[$m]}"; status=1
     elif [ "$replayed" != "$sentence" ]; then
       echo "mutant $m: the replay gives '$replayed', not the catch's '$sentence'"; status=1
-    elif ! python3 - "$prefix.vcd" "$cycle" <<'PY'
+    elif ! python3 - "$prefix.vcd" "$cycle" "$prefix.gtkw" <<'PY'
 import sys
-path, cycle = sys.argv[1], int(sys.argv[2])
-ids, scope, values = {}, [], set()
+path, cycle, save = sys.argv[1], int(sys.argv[2]), sys.argv[3]
+ids, scope, values, time = {}, [], {}, 0
 for line in open(path):
     w = line.split()
     if not w:
@@ -278,13 +278,22 @@ for line in open(path):
         scope.pop()
     elif w[0] == "$var" and scope[-1:] == ["debug"] and w[4] == "frame_cycle":
         ids[w[3]] = True
+    elif w[0][0] == "#":
+        time = int(w[0][1:])
     elif w[0][0] == "b" and len(w) == 2 and w[1] in ids:
-        values.add(int(w[0][1:], 2))
+        values[int(w[0][1:], 2)] = time
 if cycle >= 0 and cycle not in values:
     sys.exit(f"{path}: frame_cycle takes {min(values, default=None)}..{max(values, default=None)}, not {cycle}")
+# The save file's marker "mismatch" sits on the divergence cycle's rising edge (frame_cycle turns
+# cycle + 1 there).
+lines = open(save).read().splitlines()
+names = {l[len("[markername] ") + 1:]: ord(l[len("[markername] ")]) - ord("A") for l in lines if l.startswith("[markername] ")}
+times = next(l for l in lines if l.startswith("*")).split()[2:]
+if cycle >= 0 and ("mismatch" not in names or int(times[names["mismatch"]]) != values.get(cycle + 1)):
+    sys.exit(f"{save}: no marker 'mismatch' at time {values.get(cycle + 1)}")
 PY
     then
-      echo "mutant $m: the waveform window misses the divergence cycle $cycle"; status=1
+      echo "mutant $m: the waveform window or its save file misses the divergence cycle $cycle"; status=1
     else
       how="the replay reproduces it alone"
       grep -q '^replay: none' "$dir/check.log" && how="a textured frame, no .tri replay"

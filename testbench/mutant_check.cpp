@@ -44,6 +44,7 @@ bool caught(const CosimCase& c, uint64_t seed, const std::string& replay_dir, co
   wave.wave_path = prefix + ".vcd";
   wave.wave_vcd = true;
   wave.gtkwave_save_path = prefix + ".gtkw";
+  wave.wave_marker = d.cycle;
   detail::run_verilated<Vmutant>(c.profile, c.triangles, wave);
   std::printf("caught by %s in %s (traversal %s, memory_latency %d):\n%s\n", suite.c_str(), c.name.c_str(),
               to_string(c.profile.traversal), c.profile.memory_latency, d.sentence.c_str());

@@ -399,6 +399,7 @@ CosimReport cosim(const Profile& profile, const std::vector<SnappedTriangle>& tr
     again.wave_vcd = false;
     again.wave_fst_scratch.clear();
     again.gtkwave_save_path = replay_prefix + ".gtkw";
+    again.wave_marker = report.divergence.cycle;
     again.wave_name.clear();
     run_rtl(profile, triangles, again);
     report.waveform = again.wave_path;

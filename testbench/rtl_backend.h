@@ -24,8 +24,11 @@ struct RtlOptions {
   bool wave_vcd = false;
   std::string wave_fst_scratch;  // with wave_vcd: the FST written first (default wave_path + ".fst-part")
   int64_t wave_from = -1, wave_to = -1;
-  // A GTKWave save file for the waveform when not empty, naming wave_name as the file to open.
+  // A GTKWave save file for the waveform when not empty, naming wave_name as the file to open; it
+  // opens on the window (markers window_start and window_end) and, with wave_marker >= 0, puts the
+  // primary marker and a marker "mismatch" on that frame cycle's rising edge.
   std::string gtkwave_save_path, wave_name;
+  int64_t wave_marker = -1;
   int64_t max_cycles = 0;  // 0: a generous bound from the triangles' bounding boxes
   // Read the final memories through the RTL's synchronous read-back port (W H cycles) instead of
   // directly from the verilated memory arrays; both give the same words (tests/rtl checks it).

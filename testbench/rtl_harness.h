@@ -118,7 +118,10 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
   const Core& core = *top->rootp->rastersim_top->core;
   const bool gouraud = p.shading == Shading::Gouraud;
   const int64_t bound = options.max_cycles > 0 ? options.max_cycles : default_cycle_bound(p, tris, setup_cycles);
+  const int64_t frame_time = int64_t(time);  // frame cycle c: its low phase at frame_time + 2 c, its edge 1 later
+  int64_t last_cycle = 0;
   for (int64_t cycle = 0;; ++cycle) {
+    last_cycle = cycle;
     if (cycle > bound) {
       out.finished = false;
       out.note = "the RTL did not finish within " + std::to_string(bound) + " cycles";
@@ -172,9 +175,20 @@ RtlResult run_verilated(const Profile& p, const std::vector<SnappedTriangle>& tr
   }
   if (fst) {
     fst->close();
-    if (!options.gtkwave_save_path.empty())
+    if (!options.gtkwave_save_path.empty()) {
+      WaveView view;
+      if (windowed) {
+        view.start = frame_time + 2 * std::max<int64_t>(0, options.wave_from);
+        view.end = frame_time + 2 * (options.wave_to >= 0 ? std::min(options.wave_to, last_cycle) : last_cycle) + 1;
+        view.markers = {{"window_start", view.start}, {"window_end", view.end}};
+      }
+      if (options.wave_marker >= 0) {
+        view.primary_marker = frame_time + 2 * options.wave_marker + 1;
+        view.markers.emplace_back("mismatch", view.primary_marker);
+      }
       write_gtkwave_save(fst_path, options.wave_name.empty() ? options.wave_path : options.wave_name,
-                         options.gtkwave_save_path);
+                         options.gtkwave_save_path, view);
+    }
     if (options.wave_vcd) {
       fst_to_vcd(fst_path, options.wave_path);
       std::remove(fst_path.c_str());

@@ -3,6 +3,7 @@
 #include <gtkwave/fstapi.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -33,6 +34,23 @@ std::string gtkwave_name(std::string name, uint32_t length) {
   return name;
 }
 
+// The save file's view lines: the first time shown, the window's size, the zoom that fits
+// [start, end] into about 1000 pixels (GTKWave shows 2^zoom pixels per time unit), the primary
+// marker and the named markers.
+void write_view(std::ostream& out, const WaveView& view) {
+  constexpr int kNamedMarkers = 26;  // GTKWave's A..Z
+  out << "[timestart] " << std::max<int64_t>(0, view.start) << "\n"
+      << "[size] 1400 900\n";
+  const double zoom = view.end > view.start ? std::floor(std::log2(1000.0 / double(view.end - view.start + 1))) : -6.0;
+  char zoom_text[32];
+  std::snprintf(zoom_text, sizeof zoom_text, "%f", zoom);
+  out << "*" << zoom_text << " " << view.primary_marker;
+  for (int i = 0; i < kNamedMarkers; ++i) out << " " << (size_t(i) < view.markers.size() ? view.markers[size_t(i)].second : -1);
+  out << "\n";
+  for (size_t i = 0; i < view.markers.size() && i < size_t(kNamedMarkers); ++i)
+    out << "[markername] " << char('A' + i) << view.markers[i].first << "\n";
+}
+
 }  // namespace
 
 void fst_to_vcd(const std::string& fst_path, const std::string& vcd_path) {
@@ -47,7 +65,7 @@ void fst_to_vcd(const std::string& fst_path, const std::string& vcd_path) {
 }
 
 void write_design_gtkwave_save(const std::string& fst_path, const std::string& dumpfile, const std::string& save_path,
-                               int64_t time_start, int64_t marker) {
+                               const WaveView& view) {
   FstReader reader(fst_path);
   // The outermost scope holds the top module's ports (Verilator's TOP).
   int depth = 0;
@@ -62,18 +80,16 @@ void write_design_gtkwave_save(const std::string& fst_path, const std::string& d
   std::ofstream out(save_path, std::ios::binary);
   out << "[*] rastersim: a design behind the verification interface, the mismatch at the marker "
          "(docs/verification.md)\n"
-      << "[dumpfile] \"" << std::filesystem::absolute(dumpfile).string() << "\"\n"
-      << "[timestart] " << std::max<int64_t>(0, time_start) << "\n"
-      << "[size] 1400 900\n"
-      << "*-6.000000 " << marker;
-  for (int i = 0; i < 26; ++i) out << " -1";  // the named markers, unset
-  out << "\n@800200\n-interface\n";
+      << "[dumpfile] \"" << std::filesystem::absolute(dumpfile).string() << "\"\n";
+  write_view(out, view);
+  out << "@800200\n-interface\n";
   for (const std::string& p : ports) out << (p.back() == ']' ? "@24\n" : "@28\n") << p << "\n";
   out << "@1000200\n-interface\n";
   if (!out.flush()) throw std::runtime_error("cannot write " + save_path);
 }
 
-void write_gtkwave_save(const std::string& fst_path, const std::string& dumpfile, const std::string& save_path) {
+void write_gtkwave_save(const std::string& fst_path, const std::string& dumpfile, const std::string& save_path,
+                        const WaveView& view) {
   FstReader reader(fst_path);
   // Signals by scope, in declaration order; ports only for the units.
   std::vector<std::string> scope;
@@ -106,8 +122,8 @@ void write_gtkwave_save(const std::string& fst_path, const std::string& dumpfile
     for (const auto& [name, port] : vars) directions |= port;
   std::ofstream out(save_path, std::ios::binary);
   out << "[*] rastersim: the waveform's units, grouped (docs/debugging.md)\n"
-      << "[dumpfile] \"" << std::filesystem::absolute(dumpfile).string() << "\"\n"
-      << "[size] 1400 900\n";
+      << "[dumpfile] \"" << std::filesystem::absolute(dumpfile).string() << "\"\n";
+  write_view(out, view);
   auto group = [&](const std::string& title, const std::vector<std::string>& names) {
     if (names.empty()) return;
     out << "@800200\n-" << title << "\n";

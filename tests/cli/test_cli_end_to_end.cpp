@@ -1237,7 +1237,7 @@ TEST(CliRtl, WaveWindowAsVcdWithAGtkwaveSaveFile) {
   std::string previous;
   for (std::string line; std::getline(lines, line); previous = line) {
     if (previous == "@800200") groups.insert(line.substr(1));
-    if (line.empty() || line[0] == '@' || line[0] == '[' || line[0] == '-') continue;
+    if (line.empty() || line[0] == '@' || line[0] == '[' || line[0] == '-' || line[0] == '*') continue;
     ++signals;
     EXPECT_TRUE(vcd.names.count(line)) << "the save file names " << line << ", which the dump lacks";
   }
@@ -1245,6 +1245,12 @@ TEST(CliRtl, WaveWindowAsVcdWithAGtkwaveSaveFile) {
   EXPECT_EQ(groups, (std::set<std::string>{"frame", "triangle_setup", "setup_fifo", "scanline_walker", "z_adder",
                                            "zbuffer", "zbuffer_memory"}));
   EXPECT_TRUE(contains(save, ".debug.frame_cycle[31:0]")) << save;
+  // It opens on the window: from cycle 100's low phase (time 2 (4 + 48 + 100) = 304) to cycle 120's
+  // edge (345), named markers A and B on them, zoomed to fit 42 time units into about 1000 pixels
+  // (2^4 pixels per unit).
+  EXPECT_TRUE(contains(save, "\n[timestart] 304\n")) << save;
+  EXPECT_TRUE(contains(save, "\n*4.000000 -1 304 345 -1 ")) << save;
+  EXPECT_TRUE(contains(save, "\n[markername] Awindow_start\n[markername] Bwindow_end\n")) << save;
 }
 
 // cosim --export writes any frame as replay files; the printed command (power-on seed included)

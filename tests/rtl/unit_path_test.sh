@@ -128,7 +128,8 @@ PY
     case "$line" in *"; the unit's cycle "*", marked in $save; replay: "*) ;; *) fail "$name: the unit's cycle is not named: $line" ;; esac
     at="${line#*"; the unit's cycle "}"
     at="${at%%,*}"
-    grep -q "^\*-[0-9.]* $((2 * at + 9)) " "$save" || fail "$name: no marker at cycle $at's edge $((2 * at + 9)) in $save"
+    grep -q "^\*-\?[0-9.]* $((2 * at + 9)) " "$save" && grep -q "^\[markername\] Bmismatch$" "$save" ||
+      fail "$name: no marker at cycle $at's edge $((2 * at + 9)) in $save"
     status=0
     eval "\"$exe\" ${replay#rastersim }" > "$name.replay.txt" 2>&1 || status=$?
     [ "$status" -eq 1 ] || fail "$name: the replay command exited $status, not 1: $replay"
