@@ -7,6 +7,8 @@ set(RASTERSIM_RTL_DIR ${RASTERSIM_SOURCE_ROOT}/rtl)
 set(RASTERSIM_RTL_SOURCES
   ${RASTERSIM_RTL_DIR}/rastersim_top.sv
   ${RASTERSIM_RTL_DIR}/triangle_setup.sv
+  ${RASTERSIM_RTL_DIR}/triangle_setup_serial.sv
+  ${RASTERSIM_RTL_DIR}/triangle_setup_pipelined.sv
   ${RASTERSIM_RTL_DIR}/setup_fifo.sv
   ${RASTERSIM_RTL_DIR}/span_bounds.sv
   ${RASTERSIM_RTL_DIR}/scanline_walker_entry.sv

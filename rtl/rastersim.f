@@ -17,6 +17,8 @@ texture_filter.sv
 texture_memory.sv
 texture_unit.sv
 triangle_setup.sv
+triangle_setup_pipelined.sv
+triangle_setup_serial.sv
 z_adder.sv
 zbuffer.sv
 zbuffer_memory.sv

@@ -130,7 +130,7 @@ to[done_last_read]='done_live_q <= |(live_q & next_done_onehot);'  # at L = 2 th
 # The serial setup unit.
 for m in serial_floor serial_remainder_correction serial_multiplier_bits serial_bias_carry serial_swap_deltas \
          serial_product_step_x; do
-  file[$m]=triangle_setup.sv
+  file[$m]=triangle_setup_serial.sv
   params[$m]="-GSETUP_INTERVAL=0"
 done
 from[serial_floor]='wire quotient_bit = (fits && divisor_nonzero) ^ sign_q;'
@@ -173,16 +173,16 @@ for m in setup_slot_counter setup_floor_correction setup_missing_step setup_cred
          setup_offscreen_rows; do
   params[$m]="-GSETUP_INTERVAL=2"
 done
-file[setup_slot_counter]=triangle_setup.sv
+file[setup_slot_counter]=triangle_setup_pipelined.sv
 from[setup_slot_counter]='localparam integer LAST_PHASE = I - 1;'
 to[setup_slot_counter]='localparam integer LAST_PHASE = I;'  # the slot counter wraps one late
-file[setup_floor_correction]=triangle_setup.sv
+file[setup_floor_correction]=triangle_setup_pipelined.sv
 from[setup_floor_correction]='!negative ? magnitude : remainder_nonzero ? ~magnitude : -magnitude;'
 to[setup_floor_correction]='!negative ? magnitude : -magnitude;'  # no floor step for a remainder
-file[setup_missing_step]=triangle_setup.sv
+file[setup_missing_step]=triangle_setup_pipelined.sv
 from[setup_missing_step]='NUMER_STEPS - VW;'
 to[setup_missing_step]='NUMER_STEPS - VW + 1;'  # one shift-add step of the numerators skipped
-file[setup_edge_sign]=triangle_setup.sv
+file[setup_edge_sign]=triangle_setup_pipelined.sv
 from[setup_edge_sign]='(edge_step_index == EDGE_SKIP ? -e_term : e_term)'
 to[setup_edge_sign]='e_term'  # the edge values' sign bits added instead of subtracted
 file[setup_offscreen_rows]=triangle_setup.sv

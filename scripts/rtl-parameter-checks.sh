@@ -51,7 +51,7 @@ for c in "${cases[@]}"; do
   fi
 done
 # The default parameters of every unit elaborate in all three.
-for unit in plane_register triangle_setup setup_fifo scanline_walker z_adder zbuffer zbuffer_memory rastersim_top; do
+for unit in plane_register triangle_setup triangle_setup_serial triangle_setup_pipelined setup_fifo scanline_walker z_adder zbuffer zbuffer_memory rastersim_top; do
   verilator --lint-only -Wno-fatal -Werror-USERERROR -I"$rtl" "$rtl"/*.sv --top-module "$unit" >/dev/null 2>&1 ||
     { echo "FAIL: verilator rejects $unit at its defaults"; status=1; }
   iverilog -g2012 -I"$rtl" -s "$unit" -o "$work/sim" "$rtl"/*.sv && vvp -n "$work/sim" >/dev/null 2>&1 ||
