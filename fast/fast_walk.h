@@ -8,7 +8,8 @@
 
 #include <memory>
 
-#include "model/pipeline.h"
+// Relative, as in model/: installed, these headers are reached as <rastersim/fast/...>.
+#include "../model/pipeline.h"
 
 namespace rastersim {
 

@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "model/z_adder.h"
+// Relative, as in model/: installed, these headers are reached as <rastersim/fast/...>.
+#include "../model/z_adder.h"
 
 namespace rastersim {
 

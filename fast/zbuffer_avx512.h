@@ -5,8 +5,9 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "model/z_adder.h"
-#include "model/zbuffer.h"
+// Relative, as in model/: installed, these headers are reached as <rastersim/fast/...>.
+#include "../model/z_adder.h"
+#include "../model/zbuffer.h"
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>

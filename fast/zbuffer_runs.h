@@ -7,8 +7,9 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "model/z_adder.h"
-#include "model/zbuffer.h"
+// Relative, as in model/: installed, these headers are reached as <rastersim/fast/...>.
+#include "../model/z_adder.h"
+#include "../model/zbuffer.h"
 
 namespace rastersim {
 

@@ -30,6 +30,36 @@ ls "$prefix"/lib/librastersim_model.a "$prefix"/lib/librastersim_model.so "$pref
 cmake -S "$prefix/share/doc/rastersim/examples/scoreboard" -B "$work/sb" -DCMAKE_PREFIX_PATH="$prefix" \
   -DCMAKE_BUILD_TYPE=Release > "$work/configure.log"
 cmake --build "$work/sb" > "$work/build.log"
+# A C-only CMake project (no C++ compiler enabled) linking the static library by its usual name,
+# rastersim::rastersim: the C++ runtime comes with it.
+mkdir -p "$work/c-only-src"
+cp "$prefix/share/doc/rastersim/examples/scoreboard/scoreboard.c" "$work/c-only-src/"
+cat > "$work/c-only-src/CMakeLists.txt" <<'CMAKE'
+cmake_minimum_required(VERSION 3.20)
+project(c_only LANGUAGES C)
+find_package(rastersim 0.1 REQUIRED)
+add_executable(scoreboard scoreboard.c)
+target_link_libraries(scoreboard PRIVATE rastersim::rastersim)
+CMAKE
+cmake -S "$work/c-only-src" -B "$work/c-only" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
+  > "$work/c-only.configure.log"
+cmake --build "$work/c-only" > "$work/c-only.build.log" 2>&1 \
+  || { echo "check-install: a C-only CMake project does not link rastersim::model"; tail -5 "$work/c-only.build.log"; exit 1; }
+# The C++ headers from the one include folder, as <rastersim/...>; the generic model/ and fast/
+# names are not on the include path.
+cat > "$work/headers.cpp" <<'CPP'
+#include <rastersim/fast/fast_walk.h>
+#include <rastersim/model/pipeline.h>
+int main() { return rastersim::Profile{}.width > 0 ? 0 : 1; }
+CPP
+printf '#include <model/pipeline.h>\n' > "$work/generic.cpp"
+# shellcheck disable=SC2046
+c++ -std=c++17 -fsyntax-only $(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --cflags rastersim) "$work/headers.cpp" \
+  || { echo "check-install: <rastersim/model/pipeline.h> does not compile from the installed include folder"; exit 1; }
+# shellcheck disable=SC2046
+if c++ -std=c++17 -fsyntax-only $(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --cflags rastersim) "$work/generic.cpp" 2> /dev/null; then
+  echo "check-install: the installed include path exposes <model/pipeline.h>"; exit 1
+fi
 # And with pkg-config (shared library).
 export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
 # shellcheck disable=SC2046
@@ -47,6 +77,7 @@ PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 \
   "$prefix/share/doc/rastersim/examples/python/scoreboard.py" "$profile" "$triangles" "$work/python.csv" \
   "$work/python.txt" > "$work/python.out"
 "$work/sb/scoreboard_cpp" "$profile" "$triangles" "$work/cpp.csv" "$work/cpp.txt" > "$work/cpp.out"
+"$work/c-only/scoreboard" "$profile" "$triangles" "$work/c-only.csv" "$work/c-only.txt" > "$work/c-only.out"
 "$work/dpi/render_tb" +tri="$triangles" +profile="$profile" +fragments="$work/dpi-render.csv" \
   +buffers="$work/dpi-render.txt" > "$work/dpi-render.out"
 readelf -d "$work/scoreboard_shared" | grep -q 'NEEDED.*librastersim_model\.so' \
@@ -70,7 +101,7 @@ for tri, x, y, z, passed, r, g, b, cycle in (map(int, row) for row in cli[1:]):
             depth[y * width + x] = z
         colour[y * width + x] = (r << 16) | (g << 8) | b
 expected_buffers = [f"{d} {c:06x}" for d, c in zip(depth, colour)]
-for kind in ("static", "shared", "cpp", "python", "dpi-render"):
+for kind in ("static", "shared", "c-only", "cpp", "python", "dpi-render"):
     rows = list(csv.reader(open(f"{work}/{kind}.csv")))
     if rows != cli:
         diff = next(i for i in range(min(len(rows), len(cli)) + 1) if i >= len(rows) or i >= len(cli) or rows[i] != cli[i])
@@ -85,7 +116,7 @@ for kind in ("static", "shared", "cpp", "python", "dpi-render"):
         sys.exit(f"check-install: {kind} buffer word of pixel ({bad % width}, {bad // width}) is "
                  f"{buffers[bad] if bad < len(buffers) else 'missing'}, the replayed trace gives {expected_buffers[bad]}")
 print(f"check-install: {len(cli) - 1} fragments, {stats['cycles']} cycles and {width * height} buffer words agree "
-      "(CLI, C example static and shared, C++ example, Python, DPI-C render_tb)")
+      "(CLI, C example static, shared and C-only CMake, C++ example, Python, DPI-C render_tb)")
 PY
 }
 
