@@ -190,6 +190,7 @@ class Pipeline {
 PYBIND11_MODULE(rastersim, m) {
   m.doc() = "The rastersim golden model: a bit- and cycle-exact model of a fixed-point triangle rasterizer";
   error_type = PyErr_NewException("rastersim.Error", PyExc_ValueError, nullptr);
+  m.attr("__version__") = RASTERSIM_PYTHON_VERSION;
   m.attr("Error") = py::handle(error_type);
   m.attr("FRAGMENT_COLUMNS") = py::make_tuple("tri", "x", "y", "z", "pass", "r", "g", "b", "cycle");
   m.def("version", &rastersim_version, "the release and the commit the library was built from");

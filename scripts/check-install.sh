@@ -23,8 +23,11 @@ for f in bin/rastersim include/rastersim/rastersim.h include/rastersim/model/pip
          share/doc/rastersim/library.md; do
   [ -e "$prefix/$f" ] || { echo "check-install: $f is not installed"; exit 1; }
 done
-ls "$prefix"/lib/librastersim_model.a "$prefix"/lib/librastersim_model.so "$prefix"/lib/python3/dist-packages/rastersim*.so \
-  > /dev/null
+# The Python module where Debian's python3 looks for a /usr/local prefix.
+python_dir="lib/python$(/usr/bin/python3 -c 'import sys; print("%d.%d" % sys.version_info[:2])')/dist-packages"
+ls "$prefix"/lib/librastersim_model.a "$prefix"/lib/librastersim_model.so "$prefix/$python_dir"/rastersim*.so > /dev/null
+/usr/bin/python3 -c "import sys; sys.exit('/usr/local/$python_dir' not in sys.path)" \
+  || { echo "check-install: /usr/local/$python_dir is not on python3's sys.path"; exit 1; }
 
 # The example as a user builds it: find_package (static library).
 cmake -S "$prefix/share/doc/rastersim/examples/scoreboard" -B "$work/sb" -DCMAKE_PREFIX_PATH="$prefix" \
@@ -73,7 +76,7 @@ local profile="$1" triangles="$2"
 "$work/sb/scoreboard" "$profile" "$triangles" "$work/static.csv" "$work/static.txt" > "$work/static.out"
 LD_LIBRARY_PATH="$prefix/lib" "$work/scoreboard_shared" "$profile" "$triangles" "$work/shared.csv" \
   "$work/shared.txt" > "$work/shared.out"
-PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 \
+PYTHONPATH="$prefix/$python_dir" /usr/bin/python3 \
   "$prefix/share/doc/rastersim/examples/python/scoreboard.py" "$profile" "$triangles" "$work/python.csv" \
   "$work/python.txt" > "$work/python.out"
 "$work/sb/scoreboard_cpp" "$profile" "$triangles" "$work/cpp.csv" "$work/cpp.txt" > "$work/cpp.out"

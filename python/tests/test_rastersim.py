@@ -90,6 +90,7 @@ def test_setup_record_and_reset():
     assert pipeline.frame_cycles() == cycles
     assert json.loads(pipeline.profile)["width"] == 64
     assert rastersim.version().startswith("0.1.0")
+    assert rastersim.version().startswith(rastersim.__version__ + " ")
 
 
 def test_setup_record_left_edge_planes():
