@@ -117,7 +117,16 @@ int rastersim_read_depth(const rastersim_pipeline* pipeline, int32_t x, int32_t 
 int rastersim_read_color(const rastersim_pipeline* pipeline, int32_t x, int32_t y, uint32_t* rgb);
 
 /* The same with the types of DPI-C (api/rastersim_dpi.sv imports them): scalars instead of structs,
- * colours as 0x00RRGGBB, `long long` for SystemVerilog's longint, `void*` for its chandle. */
+ * colours as 0x00RRGGBB, `long long` for SystemVerilog's longint, `void*` for its chandle. Every
+ * import has a C name of its own (rastersim_dpi_*), so that a simulator's generated DPI header and
+ * this one can be included in one file. */
+const char* rastersim_dpi_version(void);
+const char* rastersim_dpi_last_error(void);
+int rastersim_dpi_create(const char* profile_json, void** pipeline);
+void rastersim_dpi_destroy(void* pipeline);
+int rastersim_dpi_reset(void* pipeline);
+int rastersim_dpi_width(void* pipeline, int* width);
+int rastersim_dpi_height(void* pipeline, int* height);
 int rastersim_dpi_submit_screen(void* pipeline, double x0, double y0, double z0, unsigned rgb0, double x1,
                                 double y1, double z1, unsigned rgb1, double x2, double y2, double z2,
                                 unsigned rgb2, long long* triangle);

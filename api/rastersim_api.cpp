@@ -305,6 +305,19 @@ uint32_t packed_rgb(uint8_t r, uint8_t g, uint8_t b) { return uint32_t(r) << 16 
 
 extern "C" {
 
+const char* rastersim_dpi_version(void) { return rastersim_version(); }
+const char* rastersim_dpi_last_error(void) { return rastersim_last_error(); }
+int rastersim_dpi_create(const char* profile_json, void** pipeline) {
+  rastersim_pipeline* created = nullptr;
+  const int status = rastersim_create(profile_json, &created);
+  if (pipeline) *pipeline = created;
+  return status;
+}
+void rastersim_dpi_destroy(void* pipeline) { rastersim_destroy(from_chandle(pipeline)); }
+int rastersim_dpi_reset(void* pipeline) { return rastersim_reset(from_chandle(pipeline)); }
+int rastersim_dpi_width(void* pipeline, int* width) { return rastersim_width(from_chandle(pipeline), width); }
+int rastersim_dpi_height(void* pipeline, int* height) { return rastersim_height(from_chandle(pipeline), height); }
+
 int rastersim_dpi_submit_screen(void* pipeline, double x0, double y0, double z0, unsigned rgb0, double x1,
                                 double y1, double z1, unsigned rgb1, double x2, double y2, double z2,
                                 unsigned rgb2, long long* triangle) {

@@ -3,7 +3,10 @@
 #include <cstdio>
 #include <memory>
 
+#include <rastersim/rastersim.h>  // the C API beside the imports' declarations: their C names differ
+
 #include "Vscoreboard_tb.h"
+#include "Vscoreboard_tb__Dpi.h"
 #include "verilated.h"
 
 int main(int argc, char** argv) {
