@@ -12,9 +12,10 @@ namespace rastersim {
 
 // The image module (librastersim_images.so, cli/image_plugin.cpp).
 enum class PixelType { UInt8 = 0, UInt16 = 1, Float = 2 };
-// True when OpenImageIO has a writer for the path's extension.
+// True when there is a writer for the path's extension (PNG here, the others in OpenImageIO).
 bool image_format_writable(const std::string& path);
-// The image encoded in memory by the writer the path's extension selects; throws with its message.
+// The image encoded in memory by the writer the path's extension selects: PNG (8 or 16 bits) by
+// libpng in the program (cli/png_writer.h), the rest by OpenImageIO; throws with its message.
 std::vector<unsigned char> encode_image(const std::string& path, int width, int height, int channels, PixelType type,
                                         const void* pixels);
 

@@ -4,7 +4,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git
   libgtest-dev libbenchmark-dev
-  libopenimageio-dev openimageio-tools
+  libopenimageio-dev openimageio-tools libpng-dev
   nlohmann-json3-dev libcli11-dev libtinyobjloader-dev
   verilator libsystemc-dev iverilog yosys
   libosmesa6-dev nextpnr-ice40 fpga-icestorm
