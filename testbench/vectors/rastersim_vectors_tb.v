@@ -427,6 +427,7 @@ module rastersim_vectors_tb;
   integer passed, failed, skipped, followed;
   reg [8*320:1] text;
   reg [8*96:1] context_text;
+  reg [8*96:1] bound_text;    // the cycle-bound message, with the cycle it was reached in
   integer word_key;          // the cycle where the current vector's mismatch shows
   reg word_ok, word_follows;  // the vector matched; its differences all follow from earlier ones
 
@@ -782,7 +783,9 @@ module rastersim_vectors_tb;
             seen_result_count >= seen_fragment_count) begin
           finished = 1'b1;
         end else if (cycle >= cycle_bound) begin
-          unexpected(cycle, "frame.hex", "the frame did not finish within the cycle bound (+cycle_bound=N)");
+          // Listed first (key -1): every other mismatch of an unfinished frame may follow from it.
+          $sformat(bound_text, "the frame did not finish within the cycle bound (+cycle_bound=N) [cycle %0d]", cycle);
+          unexpected(-1, "frame.hex", bound_text);
           finished = 1'b1;
         end
         cycle = cycle + 1;
@@ -999,7 +1002,7 @@ module rastersim_vectors_tb;
 
     for (k = 0; k < listed; k = k + 1) begin
       if (k == 0) $write("first mismatch: "); else $write("mismatch: ");
-      if (list_key[k] >= NO_CYCLE - 1) $display("%0s", list_text[k]);
+      if (list_key[k] < 0 || list_key[k] >= NO_CYCLE - 1) $display("%0s", list_text[k]);
       else $display("%0s [cycle %0d]", list_text[k], list_key[k]);
     end
     if (hidden > 0) $display("(%0d more mismatches not shown)", hidden);

@@ -423,6 +423,20 @@ TEST_F(IcarusPackage, PlusargsSetTheMismatchesShownAndDumpAWaveform) {
   EXPECT_NE(text.find("\n#"), std::string::npos) << "no time step in the VCD";
 }
 
+// A frame cut short by +cycle_bound: its first mismatch says so, whatever else differs after it.
+TEST_F(IcarusPackage, AFrameOverTheCycleBoundSaysSoFirst) {
+  const std::string first = "first mismatch: frame.hex: the frame did not finish within the cycle bound";
+  int cut = 0;
+  for (const int bound : {10, 40, 80, 120, 160, 240, 320}) {  // the start, and inside triangles
+    const CommandResult r = replay("+cycle_bound=" + std::to_string(bound));
+    if (last_line(r.output).find(", 0 failed") != std::string::npos) continue;  // the frame fits
+    ++cut;
+    EXPECT_NE(r.output.find(first + " (+cycle_bound=N) [cycle " + std::to_string(bound) + "]\n"), std::string::npos)
+        << "+cycle_bound=" << bound << "\n" << r.output;
+  }
+  EXPECT_GE(cut, 3);
+}
+
 // Mismatches come earliest first, by the cycle where they show, whatever file they are in.
 TEST_F(IcarusPackage, MismatchesArePrintedEarliestFirst) {
   const Layouts layouts = make_layouts(small_profile());
