@@ -5,17 +5,12 @@
 #include <filesystem>
 
 #include "builtin_scenes.h"
+#include "outputs.h"
 #include "model/input_error.h"
 #include "tri_reader.h"
 
 namespace rastersim {
 namespace {
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 bool is_3d_scene(const std::string& name) {
   for (const auto& [scene, description] : frontend::builtin_scene_list())

@@ -37,13 +37,13 @@ fs::path link_target(fs::path path) {
   return fs::weakly_canonical(path, ec);
 }
 
+}  // namespace
+
 std::string lower_extension(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   return ext;
 }
-
-}  // namespace
 
 // Standard output (an output named `-`) is appended to: truncating it would empty the file a shell
 // redirected it to after what was already written there.

@@ -28,6 +28,9 @@ struct FrameBuffers {
 
 namespace rastersim {
 
+// A path's extension in lower case, with its dot ("" when it has none): what selects a format.
+std::string lower_extension(const std::string& path);
+
 class OutputFiles {
  public:
   OutputFiles() = default;

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "image_plugin.h"
+#include "outputs.h"
 #include "png_writer.h"
 
 namespace rastersim {
@@ -72,12 +73,12 @@ const Images& images() {
 
 }  // namespace
 
-bool image_format_writable(const std::string& path) { return is_png_path(path) || images().writable(path.c_str()) != 0; }
+bool image_format_writable(const std::string& path) { return lower_extension(path) == ".png" || images().writable(path.c_str()) != 0; }
 
 std::vector<unsigned char> encode_image(const std::string& path, int width, int height, int channels, PixelType type,
                                         const void* pixels) {
   // PNG without OpenImageIO (its samples are integers of 8 or 16 bits).
-  if (is_png_path(path) && type != PixelType::Float)
+  if (lower_extension(path) == ".png" && type != PixelType::Float)
     return encode_png(width, height, channels, type == PixelType::UInt8 ? 8 : 16, pixels);
   unsigned char* data = nullptr;
   size_t size = 0;

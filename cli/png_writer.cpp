@@ -2,8 +2,6 @@
 
 #include <png.h>
 
-#include <algorithm>
-#include <cctype>
 #include <csetjmp>
 #include <stdexcept>
 
@@ -27,13 +25,6 @@ void on_error(png_structp png, png_const_charp message) {
 void on_warning(png_structp, png_const_charp) {}
 
 }  // namespace
-
-bool is_png_path(const std::string& path) {
-  if (path.size() < 4) return false;
-  std::string extension = path.substr(path.size() - 4);
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return extension == ".png";
-}
 
 std::vector<unsigned char> encode_png(int width, int height, int channels, int bits, const void* pixels) {
   static const int kColorTypes[] = {PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA, PNG_COLOR_TYPE_RGB,

@@ -7,8 +7,6 @@
 
 namespace rastersim {
 
-// True for a path ending in .png (any case).
-bool is_png_path(const std::string& path);
 // The image as PNG bytes: 1 to 4 channels (grey, grey + alpha, RGB, RGBA) of 8 or 16 bits, rows
 // top first, samples in machine order. Throws std::runtime_error with libpng's message.
 std::vector<unsigned char> encode_png(int width, int height, int channels, int bits, const void* pixels);
