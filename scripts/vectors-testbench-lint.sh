@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Verilator -Wall lint of the package testbench (testbench/vectors/rastersim_vectors_tb.v), memory
-# model (rastersim_memory_model.v) and board self-test (rastersim_selftest.v) with the parameter files of five packages this build
-# writes: Gouraud and flat shading (their setup layouts differ), a package of rastersim_core
-# with back-pressure (the memory model on its memory port), the floating-point depth word with a
-# depth bias, and the texture unit in rastersim_core (the texture memory beside it; no self-test),
-# each with and without the setup record. Waivers: testbench/vectors/lint_waivers.vlt
-# and rtl/lint_waivers.vlt, each with its reason. Exit 1 on any warning.
+# model (rastersim_memory_model.v) and board self-test (rastersim_selftest.v), through the
+# lint_verilator.sh that every package ships, with the parameter files of five packages this build
+# writes: Gouraud and flat shading (their setup layouts differ), a package of rastersim_core with
+# back-pressure (the memory model on its memory port), the floating-point depth word with a depth
+# bias, and the texture unit in rastersim_core (the texture memory beside it; no self-test), each
+# with and without the setup record. Waivers: the package's lint_waivers.vlt and rtl/lint_waivers.vlt
+# (copies of testbench/vectors/ and rtl/), each with its reason. Exit 1 on any warning.
 # Usage: scripts/vectors-testbench-lint.sh [RASTERSIM]   (default: build/rastersim)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -21,28 +22,14 @@ for variant in gouraud flat core depth texture; do
     texture) flags=(--texture-unit true --texture-stall-percent 20 --top rastersim_core) ;;
     *) flags=(--shading "$variant") ;;
   esac
-  "$exe" vectors --suite depth --width 16 --height 12 "${flags[@]}" --rtl-path ../../rtl \
-    --testbench-path ../../testbench/vectors --out "$package" > /dev/null
+  "$exe" vectors --suite depth --width 16 --height 12 "${flags[@]}" --out "$package" > /dev/null
   for defines in "" "-DRS_NO_SETUP_RECORD"; do
-    # shellcheck disable=SC2086  # defines is a list of words
-    if ! out=$(verilator --lint-only -Wall --timing -I"$package" -I"$root/rtl" $defines "$root/rtl/lint_waivers.vlt" \
-                 "$root/testbench/vectors/lint_waivers.vlt" --top-module rastersim_vectors_tb \
-                 "$root/testbench/vectors/rastersim_vectors_tb.v" "$root/testbench/vectors/rastersim_memory_model.v" \
-                 "$root"/rtl/*.sv 2>&1); then
+    if ! out=$(SIM_FLAGS="$defines" "$package/lint_verilator.sh" 2>&1); then
       echo "lint failed: $variant ${defines:-(setup record read)}"
       echo "$out"
       status=1
     fi
   done
-  # The board self-test (synthesizable: SYNTHESIS hides its simulation wrapper, as yosys does).
-  [ "$variant" = texture ] && continue  # a package with the texture unit has none
-  if ! out=$(verilator --lint-only -Wall -DSYNTHESIS -I"$package" -I"$root/rtl" "$root/rtl/lint_waivers.vlt" \
-               "$root/testbench/vectors/lint_waivers.vlt" --top-module rastersim_selftest \
-               "$root/testbench/vectors/rastersim_selftest.v" "$root"/rtl/*.sv 2>&1); then
-    echo "lint failed: $variant rastersim_selftest"
-    echo "$out"
-    status=1
-  fi
 done
 [ $status -eq 0 ] && echo "vectors-testbench-lint: the testbench, memory model and self-test are clean"
 exit $status

@@ -347,6 +347,7 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
   package.files.push_back({"run_verilator.sh", verilator_script(facts), true});
   // The board self-test has no texture memory (a texture unit and its memory do not fit the HX8K).
   const bool selftest = !profile.texture_unit;
+  package.files.push_back({"lint_verilator.sh", lint_script(facts, selftest), true});
   if (selftest) {
     package.files.push_back({"run_selftest_icarus.sh", selftest_icarus_script(facts), true});
     package.files.push_back({"build_selftest_hx8k.sh", selftest_hx8k_script(facts), true});
@@ -354,7 +355,8 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
     package.files.push_back({kSelftestPinFile, selftest_pins(), false});
   }
   for (const EmbeddedFile& f : embedded_package_tools()) {
-    const bool testbench = f.name == kTestbenchFile || f.name == kMemoryModelFile || f.name == kSelftestFile;
+    const bool testbench = f.name == kTestbenchFile || f.name == kMemoryModelFile || f.name == kSelftestFile ||
+                           f.name == kLintWaiverFile;
     if (testbench && !options.testbench_path.empty()) continue;
     if (f.name == kSelftestFile && !selftest) continue;
     package.files.push_back({f.name, std::string(reinterpret_cast<const char*>(f.data), f.size), !testbench});
@@ -436,6 +438,12 @@ Package build_package(const Profile& profile, const std::vector<SnappedTriangle>
     } else if (f.path == "run_selftest_icarus.sh" || f.path == "build_selftest_hx8k.sh") {
       e["meaning"] = f.path == "run_selftest_icarus.sh" ? "simulates the board self-test with Icarus Verilog"
                                                         : "builds the board self-test's iCE40 HX8K bitstream";
+    } else if (f.path == kLintWaiverFile) {
+      e["meaning"] = "Verilator lint waivers of the testbench, memory model and self-test, each with its reason";
+    } else if (f.path == std::string("rtl/") + kLintWaiverFile) {
+      e["meaning"] = "Verilator lint waivers of the RTL, each with its reason";
+    } else if (f.path == "lint_verilator.sh") {
+      e["meaning"] = "lints the testbench and the self-test with Verilator -Wall and the waivers";
     } else if (f.path == kMemoryModelFile) {
       e["meaning"] = "frame memory model with the profile's latency and back-pressure (packages of rastersim_core)";
     } else if (f.path == kParamsFile) {

@@ -186,14 +186,14 @@ namespace {
 std::string testbench_usage(const PackageFacts& k, const std::string& tool) {
   return "# Runs this package's testbench (" + std::string(kTestbenchFile) + " with " + kParamsFile + ") with " + tool +
          ".\n"
-         "# Exit 0 when the last line is \"N passed, 0 failed\"; 1 when a vector failed; 2 when it cannot build\n"
-         "# or a file differs from manifest.json.\n"
+         "# Exit 0 when the last line is \"N passed, 0 failed\"; 1 when a vector failed; 2 when it cannot build,\n"
+         "# a file differs from manifest.json or a plusarg is wrong (an \"error:\" line).\n"
          "# RTL_DIR: the pipeline's Verilog (default " + k.rtl_folder + "/ beside this script); every .sv and .v\n"
          "# file in it is compiled, with it as the include folder. SIM_FLAGS: more compiler arguments\n"
          "# (e.g. -DRS_NO_SETUP_RECORD for a port without the setup record wires). Arguments go to the\n"
          "# testbench: +functional (compare functionally, not cycle for cycle), +max_shown=N (mismatches\n"
          "# printed, default 20), +dump=FILE (a VCD of the run; FILE relative to this folder, where the\n"
-         "# testbench runs), +cycle_bound=N.\n";
+         "# testbench runs), +dump_from=C and +dump_to=C (frame cycles: the VCD's window), +cycle_bound=N.\n";
 }
 
 // The part every script shares: the package folder, the RTL sources, the manifest check, a
@@ -232,6 +232,7 @@ std::string testbench_files(const PackageFacts& k) {
 // `comment`: lines put just before the command (a shellcheck directive must be).
 std::string script_run(const std::string& command, const std::string& comment = "") {
   return "cd \"$here\"\n" + comment + command + " | tee \"$work/log\"\n" +
+         "if grep -q '^error: ' \"$work/log\"; then exit 2; fi\n"
          "if grep -Eq '^[0-9]+ passed, 0 failed' \"$work/log\"; then exit 0; fi\n"
          "exit 1\n";
 }
@@ -261,6 +262,36 @@ std::string verilator_script(const PackageFacts& k) {
          script_run("\"$work/obj/tb\" \"$@\" | grep -v '^- .*: Verilog \\$finish$'",
                     "# Verilator reports $finish on a line of its own; the summary stays the last line.\n"
                     "# shellcheck disable=SC2016  # a literal $finish\n");
+}
+
+std::string lint_script(const PackageFacts& k, const bool selftest) {
+  const std::string folder = k.testbench_folder == "." ? "$here" : "$here/" + k.testbench_folder;
+  std::string text =
+      script_preamble(k, "# Lints this package's testbench (" + std::string(kTestbenchFile) + ", " + kMemoryModelFile +
+                             ")" + (selftest ? " and board self-test (" + std::string(kSelftestFile) + ")" : "") +
+                             " with\n# Verilator 5 -Wall and the shipped waivers (" + kLintWaiverFile + ", and " +
+                             k.rtl_folder + "/" + kLintWaiverFile + " when the RTL folder has one), each with its reason.\n"
+                             "# Exit 0 when clean, 1 on a warning (printed), 2 when it cannot run. RTL_DIR and SIM_FLAGS\n"
+                             "# (e.g. -DRS_NO_SETUP_RECORD): as run_verilator.sh.\n") +
+      testbench_files(k) +
+      "waivers=(\"" + folder + "/" + kLintWaiverFile + "\")\n"
+      "[ -f \"$rtl/" + kLintWaiverFile + "\" ] && waivers+=(\"$rtl/" + kLintWaiverFile + "\")\n"
+      "command -v verilator > /dev/null || { echo \"$0: verilator not found\" >&2; exit 2; }\n"
+      "status=0\n"
+      "# shellcheck disable=SC2086  # SIM_FLAGS is a list of words\n"
+      "if ! verilator --lint-only -Wall --timing -I\"$here\" -I\"$rtl\" ${SIM_FLAGS:-} \"${waivers[@]}\" --top-module " + kTestbenchTop +
+      " \\\n    \"${testbench[@]}\" \"${sources[@]}\"; then\n"
+      "  status=1\n"
+      "fi\n";
+  if (selftest)
+    text += "# The board self-test as yosys reads it (SYNTHESIS hides its simulation wrapper).\n"
+            "if ! verilator --lint-only -Wall -DSYNTHESIS -I\"$here\" -I\"$rtl\" \"${waivers[@]}\" --top-module rastersim_selftest \\\n"
+            "    \"" + folder + "/" + kSelftestFile + "\" \"${sources[@]}\"; then\n"
+            "  status=1\n"
+            "fi\n";
+  text += "[ $status -eq 0 ] && echo \"lint: clean\"\n"
+          "exit $status\n";
+  return text;
 }
 
 std::string selftest_crcs(const PackageFacts& k, const std::vector<uint32_t>& depth, const std::vector<uint32_t>& color) {
@@ -355,8 +386,12 @@ std::string readme_text(const PackageFacts& k) {
     << "  from an earlier mismatch (a triangle's counts from its fragments, a memory word or a later depth-test result at\n"
     << "  a pixel where a fragment differed, the frame's counters) is counted apart, not as another failure.\n"
     << "- `+max_shown=N`: print the first N mismatches (0: only the summary; at most 1000).\n"
-    << "- `+dump=FILE`: write a VCD of the whole run (FILE relative to this folder).\n"
+    << "- `+dump=FILE`: write a VCD of the run (FILE relative to this folder), reset and memory clear included.\n"
+    << "- `+dump_from=C`, `+dump_to=C`: with `+dump`, only the frame cycles from `+dump_from` to `+dump_to` in the VCD\n"
+    << "  (a 50,000-cycle frame dumps about 300 MB whole).\n"
     << "- `+cycle_bound=N`: abandon the frame after N cycles (default 4 times the expected cycles + 1000).\n\n"
+    << "A wrong plusarg (a negative `+max_shown`, `+dump_to` before `+dump_from`) prints an `error:` line and no\n"
+    << "summary; the scripts then exit 2.\n\n"
     << "For example `./run_icarus.sh +functional +max_shown=100 +dump=run.vcd`. In both modes fragments are compared "
     << "per\ntriangle as sets, matched by pixel: a missing or an extra fragment is one mismatch.\n"
     << (k.rtl_included ? "The RTL in rtl/ is the one the vectors were generated against (CRC-32s in manifest.json).\n"
@@ -419,7 +454,10 @@ std::string readme_text(const PackageFacts& k) {
     << "| " << kMemoryModelFile << " | | | the frame memory model of packages of rastersim_core (latency, back-pressure) "
     << "and the stall pattern the testbench drives texture_refuse with"
     << (k.testbench_folder == "." ? "" : "; in `" + k.testbench_folder + "/`") << " |\n"
-    << "| run_icarus.sh, run_verilator.sh | | | build and run it |\n";
+    << "| run_icarus.sh, run_verilator.sh | | | build and run it |\n"
+    << "| " << kLintWaiverFile << ", lint_verilator.sh | | | Verilator lint waivers of the testbench, memory model and "
+    << "self-test (each with its reason; " << k.rtl_folder << "/" << kLintWaiverFile << " has the RTL's); lint them "
+    << "with -Wall" << (k.testbench_folder == "." ? "" : "; the .vlt in `" + k.testbench_folder + "/`") << " |\n";
   if (!p.texture_unit)
     r << "| " << kSelftestFile << ", " << kSelftestCrcFile << ", " << kSelftestPinFile << " | | | the board self-test "
       << "(below), its expected CRC-32s, its pins" << (k.testbench_folder == "." ? "" : "; the .v in `" + k.testbench_folder + "/`")

@@ -37,11 +37,14 @@ inline const char* const kMemoryModelFile = "rastersim_memory_model.v";
 inline const char* const kSelftestFile = "rastersim_selftest.v";
 inline const char* const kSelftestCrcFile = "selftest.hex";
 inline const char* const kSelftestPinFile = "selftest_hx8k.pcf";
+inline const char* const kLintWaiverFile = "lint_waivers.vlt";  // the testbench's; rtl/ has its own
 
 // The parameter file the testbench includes: profile, widths, vector counts, field places.
 std::string params_text(const PackageFacts& facts);
 std::string icarus_script(const PackageFacts& facts);
 std::string verilator_script(const PackageFacts& facts);
+// Verilator -Wall lint of the testbench and the board self-test with the shipped waivers.
+std::string lint_script(const PackageFacts& facts, bool selftest);
 std::string readme_text(const PackageFacts& facts);
 // The board self-test's files: its expected CRC-32s (depth words as ceil(z_bits / 8) bytes, colour
 // words as 3, least significant byte first), its pin file, and its Icarus and iCE40 scripts.

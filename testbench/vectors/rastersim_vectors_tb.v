@@ -24,7 +24,9 @@
 //                     result at a pixel where a fragment differed, the frame's counters) is counted
 //                     apart, not as another failure. Default: cycle-exact, every field required.
 //   +max_shown=N      print the first N mismatches (default 20, 0: the summary alone, at most 1000)
-//   +dump=FILE        write a VCD of the whole run
+//   +dump=FILE        write a VCD of the run (reset and memory clear included)
+//   +dump_from=C      with +dump: start the VCD at frame cycle C (its rising edge and later)
+//   +dump_to=C        with +dump: end the VCD after frame cycle C
 //   +cycle_bound=N    abandon the frame after N cycles (default 4 CYCLES + 1000)
 //
 // Compile-time options:
@@ -184,8 +186,12 @@ module rastersim_vectors_tb;
 `endif
 
   // ---- Words and their fields ------------------------------------------------------------------
+  // The field functions are called a few hundred times: Verilator keeps them as calls
+  // (no_inline_task) instead of inlining each into the initial block, which g++ then cannot
+  // compile in reasonable time.
   // A field's slot of a word (zero-extended to 64 bits), and a value put into a field's slot.
   function [63:0] slot_of;
+    /*verilator no_inline_task*/
     input [MAX_WORD_BITS-1:0] word;
     input integer lsb, slot;
     reg [MAX_WORD_BITS-1:0] shifted;
@@ -197,6 +203,7 @@ module rastersim_vectors_tb;
   endfunction
   // value (bits wide, two's complement when is_signed) as it sits in a slot: sign- or zero-extended.
   function [63:0] as_slot;
+    /*verilator no_inline_task*/
     input [63:0] value;
     input integer bits, slot, is_signed;
     begin
@@ -226,6 +233,7 @@ module rastersim_vectors_tb;
   // its own width (P_BITS). The params file packs 16 bits per field, field 0 at the low end.
   localparam integer P_LSB = 0, P_SLOT = 1, P_BITS = 2;
   function integer field_place;
+    /*verilator no_inline_task*/
     input integer file, what, k;
     reg [16*128-1:0] places;  // at most 128 fields (the params file checks it)
     begin
@@ -240,6 +248,7 @@ module rastersim_vectors_tb;
     end
   endfunction
   function integer field_signed;
+    /*verilator no_inline_task*/
     input integer file, k;
     begin
       case (file)
@@ -259,6 +268,7 @@ module rastersim_vectors_tb;
   localparam integer R_TRIANGLES = 1, R_DECISIONS_LAST = 6, R_FRAGMENTS = 8, R_DEPTH_FAIL = 10;
 
   function [63:0] field_of;  // field k of a word of a file, as its slot holds it
+    /*verilator no_inline_task*/
     input integer file;
     input [MAX_WORD_BITS-1:0] word;
     input integer k;
@@ -267,6 +277,7 @@ module rastersim_vectors_tb;
     end
   endfunction
   function [63:0] slot_value;  // a value as field k of a file holds it
+    /*verilator no_inline_task*/
     input integer file, k;
     input [63:0] value;
     begin
@@ -318,6 +329,8 @@ module rastersim_vectors_tb;
   integer walker_handed;
   reg submitting, busy, finished, functional;
   reg [8*256:1] dump_file;
+  integer dump_from, dump_to;  // +dump_from, +dump_to: frame cycles (-1, NO_CYCLE: unbounded)
+  reg dumping;
 
   // Vertex v's cmd_texture word of command n: {Q, T, S}, 50 bits each.
   function [149:0] texture_word;
@@ -499,6 +512,25 @@ module rastersim_vectors_tb;
     end
   endtask
 
+  // One field of the current vector that the pipeline never produced (`why` says so).
+  task compare_absent;
+    input [8*16:1] file;
+    input integer index;
+    input [8*24:1] field;
+    input [63:0] expected;
+    input [8*64:1] why;
+    begin
+      if (word_follows) begin
+        vector_differs = 1'b1;
+      end else begin
+        word_ok = 1'b0;
+        $sformat(text, "%0s vector %0d field %0s: expected 0x%0h, actual: none (%0s)%0s", file, index, field, expected,
+                 why, context_text);
+        report(word_key, text);
+      end
+    end
+  endtask
+
   // Something the pipeline did that no vector expects (one failure).
   task unexpected;
     input integer key;
@@ -512,6 +544,7 @@ module rastersim_vectors_tb;
   endtask
 
   function integer earliest;  // the earlier of two cycles; -1 (did not happen) counts as never
+    /*verilator no_inline_task*/
     input integer p, q;
     begin
       if (p < 0) earliest = q < 0 ? NO_CYCLE : q;
@@ -539,6 +572,7 @@ module rastersim_vectors_tb;
   integer ex, ey, et, ecycle, address;
 
   function integer pixel_address;  // -1 off the screen
+    /*verilator no_inline_task*/
     input integer x, y;
     begin
       pixel_address = (x >= 0 && x < WIDTH && y >= 0 && y < HEIGHT) ? y * WIDTH + x : -1;
@@ -583,8 +617,12 @@ module rastersim_vectors_tb;
         compare("fragments.hex", e, "z", field_of(F_FRAGMENTS, fragments[e], G_Z), slot_value(F_FRAGMENTS, G_Z, obs_z[o]));
         compare("fragments.hex", e, "rgb", field_of(F_FRAGMENTS, fragments[e], G_RGB),
                 slot_value(F_FRAGMENTS, G_RGB, obs_rgb[o]));
-        compare("fragments.hex", e, "pass", field_of(F_FRAGMENTS, fragments[e], G_PASS),
-                obs_pass[o] == 2'd2 ? {64{1'b1}} : slot_value(F_FRAGMENTS, G_PASS, obs_pass[o]));
+        if (obs_pass[o] == 2'd2)
+          compare_absent("fragments.hex", e, "pass", field_of(F_FRAGMENTS, fragments[e], G_PASS),
+                         "no depth-test result before the frame ended");
+        else
+          compare("fragments.hex", e, "pass", field_of(F_FRAGMENTS, fragments[e], G_PASS),
+                  slot_value(F_FRAGMENTS, G_PASS, obs_pass[o]));
         if (!word_ok || vector_differs) begin
           if (!word_ok) any_root = 1;
           if (address >= 0 && pixel_disturbed[address] < 0) pixel_disturbed[address] = et;
@@ -622,9 +660,23 @@ module rastersim_vectors_tb;
       $finish;
     end
     functional = $test$plusargs("functional") != 0;
-    if ($value$plusargs("dump=%s", dump_file)) begin
+    dump_from = -1;
+    dump_to = NO_CYCLE;
+    if ($value$plusargs("dump_from=%d", dump_from) && dump_from < 0) begin
+      $display("error: +dump_from=%0d: the first frame cycle dumped is 0 or more", dump_from);
+      $finish;
+    end
+    if ($value$plusargs("dump_to=%d", dump_to) && dump_to < dump_from) begin
+      $display("error: +dump_to=%0d: the last frame cycle dumped is not before +dump_from", dump_to);
+      $finish;
+    end
+    dumping = $value$plusargs("dump=%s", dump_file) != 0;
+    if (dumping) begin
       $dumpfile(dump_file);
-      $dumpvars(0, rastersim_vectors_tb);
+      if (dump_from <= 0) $dumpvars(0, rastersim_vectors_tb);
+    end else if (dump_from >= 0 || dump_to != NO_CYCLE) begin
+      $display("error: +dump_from and +dump_to need +dump=FILE");
+      $finish;
     end
     $readmemh("commands.hex", commands, 0, TRIANGLE_SLOTS - 1);
     $readmemh("triangles.hex", triangles, 0, TRIANGLE_SLOTS - 1);
@@ -679,6 +731,18 @@ module rastersim_vectors_tb;
     // Cycle 0 is the first cycle with frame_ready high (the memory clear is done).
     while (!finished) begin
       @(negedge clk);
+      // The dump window: from the middle of cycle dump_from - 1 to the middle of cycle dump_to + 1,
+      // so that every edge of cycles dump_from..dump_to is in it. The dump starts late rather than
+      // being switched off, and ends by closing the file: Verilator 5.006 ignores $dumpoff/$dumpon.
+      if (dumping && dump_from > 0 && cycle == dump_from - 1) $dumpvars(0, rastersim_vectors_tb);
+      if (dumping && dump_to != NO_CYCLE && cycle == dump_to + 1) begin
+`ifdef VERILATOR
+        $c("\n#if VM_TRACE\nvlSymsp->_traceDumpClose();\n#endif\n");
+`else
+        $dumpoff;
+`endif
+        dumping = 1'b0;
+      end
       if (cycle < 0) begin
         if (frame_ready) begin
           cycle = 0;

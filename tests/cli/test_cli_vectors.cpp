@@ -59,8 +59,8 @@ TEST(CliVectors, WritesAPackageFromEachSource) {
     EXPECT_EQ(manifest["profile"]["width"], 32);
     for (const char* file : {"commands.hex", "triangles.hex", "setup.hex", "fragments.hex", "depth.hex", "color.hex",
                              "frame.hex", "rastersim_vectors_tb.v", "rastersim_vectors_params.vh", "run_icarus.sh", "run_verilator.sh",
-                             "README.md",
-                             "rtl/rastersim_top.sv"})
+                             "README.md", "lint_waivers.vlt", "lint_verilator.sh", "rtl/rastersim_top.sv",
+                             "rtl/lint_waivers.vlt"})
       EXPECT_TRUE(fs::exists(dir.path(out) / file)) << out << "/" << file;
     EXPECT_TRUE((fs::status(dir.path(out) / "run_icarus.sh").permissions() & fs::perms::owner_exec) != fs::perms::none);
   }

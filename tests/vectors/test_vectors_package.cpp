@@ -423,18 +423,58 @@ TEST_F(IcarusPackage, PlusargsSetTheMismatchesShownAndDumpAWaveform) {
   EXPECT_NE(text.find("\n#"), std::string::npos) << "no time step in the VCD";
 }
 
+// The time steps of a VCD file (its #N lines).
+std::vector<int64_t> vcd_times(const fs::path& path) {
+  std::vector<int64_t> times;
+  for (const std::string& line : split_lines(read_text(path)))
+    if (line.size() > 1 && line[0] == '#') times.push_back(std::stoll(line.substr(1)));
+  return times;
+}
+
+// +dump_from / +dump_to cut the VCD to a window of frame cycles; a wrong plusarg is exit 2 from the
+// run scripts (not 1, which says a vector failed).
+TEST_F(IcarusPackage, ADumpWindowHoldsOnlyItsCyclesAndWrongPlusargsExitTwo) {
+  const CommandResult whole = replay("+max_shown=0 +dump=whole.vcd");
+  ASSERT_EQ(last_line(whole.output), std::to_string(vector_count()) + " passed, 0 failed") << whole.output;
+  const CommandResult window = replay("+max_shown=0 +dump=window.vcd +dump_from=20 +dump_to=29");
+  ASSERT_EQ(last_line(window.output), std::to_string(vector_count()) + " passed, 0 failed") << window.output;
+  const std::vector<int64_t> all = vcd_times(dir_ / "whole.vcd");
+  const std::vector<int64_t> cut = vcd_times(dir_ / "window.vcd");
+  ASSERT_GT(all.size(), 100u);
+  ASSERT_FALSE(cut.empty());
+  EXPECT_EQ(all.front(), 0);
+  // From the middle of cycle 19 to the middle of cycle 30 (a 10 ns clock, 1 ps steps): 11 cycles.
+  EXPECT_GT(cut.front(), 20 * 10000);
+  EXPECT_LE(cut.back() - cut.front(), 11 * 10000);
+  EXPECT_GE(cut.back() - cut.front(), 10 * 10000);
+  EXPECT_LT(cut.back(), all.back());
+
+  for (const std::string& wrong : {std::string("+max_shown=-1"), std::string("+dump=w.vcd +dump_from=9 +dump_to=8"),
+                                   std::string("+dump_from=3")}) {
+    const CommandResult r = run_command("cd '" + dir_.string() + "' && ./run_icarus.sh " + wrong);
+    EXPECT_EQ(r.status, 2) << wrong << "\n" << r.output;
+    EXPECT_NE(r.output.find("\nerror: +"), std::string::npos) << wrong << "\n" << r.output;
+    EXPECT_EQ(r.output.find(" passed, "), std::string::npos) << wrong << "\n" << r.output;
+  }
+}
+
 // A frame cut short by +cycle_bound: its first mismatch says so, whatever else differs after it.
 TEST_F(IcarusPackage, AFrameOverTheCycleBoundSaysSoFirst) {
   const std::string first = "first mismatch: frame.hex: the frame did not finish within the cycle bound";
-  int cut = 0;
+  int cut = 0, without_result = 0;
   for (const int bound : {10, 40, 80, 120, 160, 240, 320}) {  // the start, and inside triangles
     const CommandResult r = replay("+cycle_bound=" + std::to_string(bound));
     if (last_line(r.output).find(", 0 failed") != std::string::npos) continue;  // the frame fits
     ++cut;
     EXPECT_NE(r.output.find(first + " (+cycle_bound=N) [cycle " + std::to_string(bound) + "]\n"), std::string::npos)
         << "+cycle_bound=" << bound << "\n" << r.output;
+    // A fragment cut off before its depth-test result has no value to print (not all ones).
+    EXPECT_EQ(r.output.find("0xffffffffffffffff"), std::string::npos) << "+cycle_bound=" << bound << "\n" << r.output;
+    without_result += r.output.find("field pass: expected 0x1, actual: none (no depth-test result before the frame "
+                                    "ended)") != std::string::npos;
   }
   EXPECT_GE(cut, 3);
+  EXPECT_GE(without_result, 1);
 }
 
 // Mismatches come earliest first, by the cycle where they show, whatever file they are in.
