@@ -28,6 +28,14 @@ python_dir="lib/python$(/usr/bin/python3 -c 'import sys; print("%d.%d" % sys.ver
 ls "$prefix"/lib/librastersim_model.a "$prefix"/lib/librastersim_model.so "$prefix/$python_dir"/rastersim*.so > /dev/null
 /usr/bin/python3 -c "import sys; sys.exit('/usr/local/$python_dir' not in sys.path)" \
   || { echo "check-install: /usr/local/$python_dir is not on python3's sys.path"; exit 1; }
+# The module's own tests, installed, against the installed module, CLI and docs, outside the checkout.
+(cd "$work" && PYTHONPATH="$prefix/$python_dir" RASTERSIM_CLI="$prefix/bin/rastersim" \
+  RASTERSIM_DOCS_DIR="$prefix/share/doc/rastersim" /usr/bin/python3 -m pytest -q -p no:cacheprovider \
+  "$prefix/share/rastersim/python-tests" > "$work/pytest.log" 2>&1) \
+  || { cat "$work/pytest.log"; echo "check-install: the installed module's tests failed"; exit 1; }
+(cd "$work" && PYTHONPATH="$prefix/$python_dir" /usr/bin/python3 -c \
+  "import rastersim, sys; sys.exit(not rastersim.__file__.startswith('$prefix/'))") \
+  || { echo "check-install: python3 does not import the installed module"; exit 1; }
 
 # The example as a user builds it: find_package (static library).
 cmake -S "$prefix/share/doc/rastersim/examples/scoreboard" -B "$work/sb" -DCMAKE_PREFIX_PATH="$prefix" \

@@ -1,6 +1,8 @@
 """The Python module against the installed-or-built command line: same fragments, cycles and
 buffers; misuse raises rastersim.Error with a message. RASTERSIM_CLI names the rastersim
-executable, RASTERSIM_SOURCE_DIR the source tree (for docs/examples)."""
+executable, RASTERSIM_DOCS_DIR the documentation folder (docs/ of the checkout, or the installed
+share/doc/rastersim: for its examples/worked.*). The same file is installed beside the module's
+metadata (share/rastersim/python-tests) and runs there against the installed module."""
 import csv
 import json
 import os
@@ -11,7 +13,7 @@ import pytest
 
 import rastersim
 
-SOURCE = os.environ.get("RASTERSIM_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+DOCS = os.environ.get("RASTERSIM_DOCS_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "docs"))
 CLI = os.environ.get("RASTERSIM_CLI", "rastersim")
 
 
@@ -41,8 +43,8 @@ def render(tmp_path, tri, profile):
 @pytest.mark.parametrize("scene", ["worked", "default"])
 def test_fragments_cycles_and_buffers_equal_the_cli(tmp_path, scene):
     if scene == "worked":
-        tri = os.path.join(SOURCE, "docs", "examples", "worked.tri")
-        profile_path = os.path.join(SOURCE, "docs", "examples", "worked.json")
+        tri = os.path.join(DOCS, "examples", "worked.tri")
+        profile_path = os.path.join(DOCS, "examples", "worked.json")
     else:
         tri, profile_path = tmp_path / "default.tri", tmp_path / "default.json"
         profile_path.write_text("{}")
@@ -91,6 +93,13 @@ def test_setup_record_and_reset():
     assert json.loads(pipeline.profile)["width"] == 64
     assert rastersim.version().startswith("0.1.0")
     assert rastersim.version().startswith(rastersim.__version__ + " ")
+
+
+def test_installed_metadata_names_the_version_and_numpy():
+    # The dist-info folder beside the module: what pip and importlib.metadata read.
+    import importlib.metadata
+    assert importlib.metadata.version("rastersim") == rastersim.__version__
+    assert importlib.metadata.requires("rastersim") == ["numpy"]
 
 
 def test_setup_record_left_edge_planes():
