@@ -491,6 +491,7 @@ module rastersim_vectors_tb;
       else passed = passed + 1;
     end
   endtask
+  reg [8*128:1] values_text;
   // One field of the current vector: a difference is a mismatch unless it follows.
   task compare;
     input [8*16:1] file;
@@ -500,18 +501,11 @@ module rastersim_vectors_tb;
     input [63:0] actual;
     begin
       if (expected !== actual) begin
-        if (word_follows) begin
-          vector_differs = 1'b1;
-        end else begin
-          word_ok = 1'b0;
-          $sformat(text, "%0s vector %0d field %0s: expected 0x%0h, actual 0x%0h%0s", file, index, field, expected,
-                   actual, context_text);
-          report(word_key, text);
-        end
+        $sformat(values_text, "expected 0x%0h, actual 0x%0h", expected, actual);
+        field_differs(file, index, field, values_text);
       end
     end
   endtask
-
   // One field of the current vector that the pipeline never produced (`why` says so).
   task compare_absent;
     input [8*16:1] file;
@@ -520,12 +514,21 @@ module rastersim_vectors_tb;
     input [63:0] expected;
     input [8*64:1] why;
     begin
+      $sformat(values_text, "expected 0x%0h, actual: none (%0s)", expected, why);
+      field_differs(file, index, field, values_text);
+    end
+  endtask
+  task field_differs;  // a mismatch unless it follows from an earlier one
+    input [8*16:1] file;
+    input integer index;
+    input [8*24:1] field;
+    input [8*128:1] values;
+    begin
       if (word_follows) begin
         vector_differs = 1'b1;
       end else begin
         word_ok = 1'b0;
-        $sformat(text, "%0s vector %0d field %0s: expected 0x%0h, actual: none (%0s)%0s", file, index, field, expected,
-                 why, context_text);
+        $sformat(text, "%0s vector %0d field %0s: %0s%0s", file, index, field, values, context_text);
         report(word_key, text);
       end
     end
