@@ -273,12 +273,12 @@ constexpr int64_t kWaveAround = 32;
 
 // A failing frame's replay waveform at <prefix>.fst: `rerun` runs the frame again with the options
 // given and returns the cycle its numbering starts from (a design's first handshake, a unit's 0);
-// with `at` >= 0 the FST holds the cycles around `at` and <prefix>.gtkw marks it, else (a stall) the
+// with `at` >= 0 the FST holds the cycles around `at` and <prefix>.fst.gtkw marks it, else (a stall) the
 // frame up to the stall. `who` names the cycle in the message ("design", "unit").
 void add_failure_waveform(std::string& message, const std::string& prefix, int64_t at, const char* who,
                           const std::string& replay, const std::function<int64_t(const dut::DutRunOptions&)>& rerun) {
   if (!prefix.empty() && at >= 0)
-    message += std::string("; the ") + who + "'s cycle " + std::to_string(at) + ", marked in " + prefix + ".gtkw";
+    message += std::string("; the ") + who + "'s cycle " + std::to_string(at) + ", marked in " + rtl::gtkwave_save_path(prefix + ".fst");
   message += "; replay: " + replay;
   if (prefix.empty()) return;
   dut::DutRunOptions wave;
@@ -297,7 +297,7 @@ void add_failure_waveform(std::string& message, const std::string& prefix, int64
     view.start = edge - 2 * kWaveAround - 1, view.end = edge + 2 * kWaveAround;
     view.primary_marker = edge;
     view.markers = {{"window_start", view.start}, {"mismatch", edge}, {"window_end", view.end}};
-    rtl::write_design_gtkwave_save(wave.wave_path, wave.wave_path, prefix + ".gtkw", view);
+    rtl::write_design_gtkwave_save(wave.wave_path, wave.wave_path, rtl::gtkwave_save_path(wave.wave_path), view);
   }
 }
 

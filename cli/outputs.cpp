@@ -1,5 +1,7 @@
 #include "outputs.h"
 
+#include "testbench/waveform.h"
+
 #include <fcntl.h>
 #include <dirent.h>
 #include <sys/syscall.h>
@@ -101,8 +103,9 @@ void OutputFiles::protect(const std::string& input_path) {
 }
 
 void add_wave_options(CLI::App& command, WaveOptions& o, const std::string& which) {
-  command.add_option("--wave,--fst", o.path, which + "write the RTL waveform: FILE.fst or FILE.vcd, and FILE.gtkw (a GTKWave "
-                     "save file with the units' signals grouped) beside it")
+  command.add_option("--wave,--fst", o.path, which + "write the RTL waveform: FILE.fst or FILE.vcd, and a GTKWave save file "
+                     "with the units' signals grouped beside it, the waveform's name with .gtkw appended "
+                     "(FILE.fst.gtkw)")
       ->type_name("FILE");
   command.add_option("--wave-from", o.from, "first frame cycle in the waveform (default: from the start of reset)")
       ->type_name("CYCLE");
@@ -127,7 +130,7 @@ WaveFiles add_waveform(OutputFiles& outputs, const WaveOptions& o) {
     throw InputError("--wave-from " + std::to_string(o.from) + " is after --wave-to " + std::to_string(o.to));
   files.vcd = extension == ".vcd";
   if (files.vcd) files.fst_scratch = outputs.add_scratch(files.wave_temp + ".fst-part");
-  files.save_temp = outputs.add(fs::path(o.path).replace_extension(".gtkw").string(), "--wave's GTKWave save file");
+  files.save_temp = outputs.add(rtl::gtkwave_save_path(o.path), "--wave's GTKWave save file");
   return files;
 }
 
@@ -210,6 +213,20 @@ void OutputFiles::refuse_input(const std::string& final_path, const std::string&
   for (const std::string& input : protected_) {
     if (fs::equivalent(final_path, input, ec))  // false, with ec set, when either does not exist
       throw InputError(final_path, 0, "cannot write " + what + ": it is an input of this run (" + input + ")");
+  }
+}
+
+void OutputFiles::refuse_inputs_inside(const std::string& folder, const std::string& what) const {
+  std::error_code ec;
+  const fs::path inside = fs::weakly_canonical(folder, ec);
+  if (ec) return;
+  for (const std::string& input : protected_) {
+    const fs::path resolved = fs::weakly_canonical(input, ec);
+    if (ec) continue;
+    // `inside` is a prefix of `resolved`, component by component.
+    const auto [end, at] = std::mismatch(inside.begin(), inside.end(), resolved.begin(), resolved.end());
+    if (end == inside.end() && resolved != inside)
+      throw InputError(folder, 0, "cannot write " + what + " there: it holds an input of this run (" + input + ")");
   }
 }
 

@@ -49,6 +49,9 @@ class OutputFiles {
   // Throws InputError when the path resolves to an input of this run: for files a command writes
   // itself (cosim --export's replays).
   void refuse_input(const std::string& final_path, const std::string& what) const;
+  // Throws InputError when an input of this run lies inside `folder` (links resolved): for a
+  // folder a command replaces as a whole (vectors --out --force).
+  void refuse_inputs_inside(const std::string& folder, const std::string& what) const;
   // True when an output is `-`: the human summary then goes to standard error.
   bool writes_stdout() const { return writes_stdout_; }
   // Renames every temporary into place.
@@ -99,7 +102,7 @@ struct WaveOptions {
 };
 void add_wave_options(CLI::App& command, WaveOptions& options, const std::string& which);
 
-// The waveform and its GTKWave save file (the waveform's name with .gtkw) as outputs of `outputs`:
+// The waveform and its GTKWave save file (the waveform's whole name with .gtkw appended) as outputs of `outputs`:
 // the same checks as every output, written to temporaries and renamed into place with the others.
 // `-` is refused (the FST writer seeks), as are another extension and a bad window.
 struct WaveFiles {

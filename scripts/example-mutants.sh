@@ -59,7 +59,7 @@ PY
   wave="${line##*; waveform: }"
   [ -s "$wave" ] || fail "mutant $name: no waveform at $wave"
   # The GTKWave save file opens the window with the primary marker at the mismatch's cycle.
-  save="${wave%.fst}.gtkw"
+  save="$wave.gtkw"
   grep -q '^\[timestart\] [0-9]' "$save" && grep -q '^\*-[0-9.]* [0-9][0-9]* ' "$save" ||
     fail "mutant $name: no GTKWave save file with a marker at $save"
   case "$line" in *"; the design's cycle "*", marked in $save; replay: "*) ;; *) fail "mutant $name: the cycle is not named: $line" ;; esac

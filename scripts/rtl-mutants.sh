@@ -264,7 +264,7 @@ PY
       echo "mutant $m: caught, but not by the assertion ${assertion[$m]}"; status=1
     elif [ "$replayed" != "$sentence" ]; then
       echo "mutant $m: the replay gives '$replayed', not the catch's '$sentence'"; status=1
-    elif ! python3 - "$prefix.vcd" "$cycle" "$prefix.gtkw" <<'PY'
+    elif ! python3 - "$prefix.vcd" "$cycle" "$prefix.vcd.gtkw" <<'PY'
 import sys
 path, cycle, save = sys.argv[1], int(sys.argv[2]), sys.argv[3]
 ids, scope, values, time = {}, [], {}, 0

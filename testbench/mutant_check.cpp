@@ -43,7 +43,7 @@ bool caught(const CosimCase& c, uint64_t seed, const std::string& replay_dir, co
   std::tie(wave.wave_from, wave.wave_to) = divergence_window(d, model);
   wave.wave_path = prefix + ".vcd";
   wave.wave_vcd = true;
-  wave.gtkwave_save_path = prefix + ".gtkw";
+  wave.gtkwave_save_path = gtkwave_save_path(wave.wave_path);
   wave.wave_marker = d.cycle;
   detail::run_verilated<Vmutant>(c.profile, c.triangles, wave);
   std::printf("caught by %s in %s (traversal %s, memory_latency %d):\n%s\n", suite.c_str(), c.name.c_str(),

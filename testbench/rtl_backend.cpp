@@ -15,6 +15,7 @@
 #include "testbench/modules.h"
 #include "testbench/rtl_configs.h"
 #include "testbench/setup_record.h"
+#include "testbench/waveform.h"
 
 namespace rastersim::rtl {
 
@@ -398,7 +399,7 @@ CosimReport cosim(const Profile& profile, const std::vector<SnappedTriangle>& tr
     again.wave_path = replay_prefix + ".fst";
     again.wave_vcd = false;
     again.wave_fst_scratch.clear();
-    again.gtkwave_save_path = replay_prefix + ".gtkw";
+    again.gtkwave_save_path = gtkwave_save_path(again.wave_path);
     again.wave_marker = report.divergence.cycle;
     again.wave_name.clear();
     run_rtl(profile, triangles, again);

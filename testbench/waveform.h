@@ -22,6 +22,10 @@ void open_waveform(Trace& trace, const std::string& path) {
     throw std::runtime_error("cannot write the waveform " + path + (errno ? " (" + std::string(std::strerror(errno)) + ")" : ""));
 }
 
+// The GTKWave save file of the waveform at `wave_path`: its whole name with .gtkw appended
+// (w.fst.gtkw, w.vcd.gtkw), so that an FST and a VCD named alike each keep their own.
+inline std::string gtkwave_save_path(const std::string& wave_path) { return wave_path + ".gtkw"; }
+
 // Rewrites the FST at `fst_path` as a VCD at `vcd_path` (the same signals and times).
 void fst_to_vcd(const std::string& fst_path, const std::string& vcd_path);
 

@@ -237,7 +237,7 @@ TEST(CliOutputs, ANameNearTheLengthLimitIsWritten) {
   const std::string stats = std::string(245, 's') + ".json";
   std::vector<std::string> args{"render", "small.tri", "--stats", stats, "--width", "64", "--height", "48"};  // a built-in RTL profile
 #ifdef RASTERSIM_HAVE_RTL  // the waveform's writer opens its own temporary, and a VCD a scratch FST beside it
-  const std::string wave = std::string(248, 'w') + ".vcd";
+  const std::string wave = std::string(246, 'w') + ".vcd";  // its save file: 255 bytes
   for (const std::string arg : {"--backend", "rtl", "--wave", wave.c_str()}) args.push_back(arg);
 #endif
   const RunResult r = run_rastersim(dir, args);
@@ -246,7 +246,7 @@ TEST(CliOutputs, ANameNearTheLengthLimitIsWritten) {
   std::set<std::string> expected{"small.tri", stats};
 #ifdef RASTERSIM_HAVE_RTL
   EXPECT_TRUE(contains(read_text(dir.path(wave)), "$enddefinitions"));
-  expected.insert({wave, std::string(248, 'w') + ".gtkw"});
+  expected.insert({wave, wave + ".gtkw"});
 #endif
   EXPECT_EQ(dir.listing(), expected);
 }
@@ -1086,7 +1086,7 @@ TEST(CliRtl, WaveformWrongUsesAreErrorsAndAWaveformIsWrittenWhole) {
       {{"--backend", "rtl", "--wave", "w.vcd", "--wave-from", "10", "--wave-to", "5"}, "is after --wave-to 5"},
       {{"--backend", "rtl", "--wave", "w.vcd", "--wave-from", "-3"}, "0 or more"},
       {{"--backend", "rtl", "--wave", "w.vcd", "--wave-from", "100000000"}, "is past the frame's last cycle"},
-      {{"--backend", "rtl", "--wave", "w.fst", "--stats", "w.gtkw"}, "named by two outputs"},
+      {{"--backend", "rtl", "--wave", "w.fst", "--stats", "w.fst.gtkw"}, "named by two outputs"},
       {{"--backend", "rtl", "--fst", dir.path("missing/w.fst")}, "does not exist"},
       {{"--backend", "rtl", "--fst", dir.path("")}, "it is a folder"},
       {{"--backend", "rtl", "--fst", "-"}, "cannot go to standard output"},
@@ -1104,7 +1104,7 @@ TEST(CliRtl, WaveformWrongUsesAreErrorsAndAWaveformIsWrittenWhole) {
     EXPECT_EQ(read_text(dir.path(backend + ".fst")).substr(0, 1), std::string(1, '\0')) << "an FST header";
     EXPECT_GT(read_text(dir.path(backend + ".fst")).size(), 1000u);
   }
-  EXPECT_EQ(dir.listing(), (std::set<std::string>{"rtl.fst", "rtl.gtkw", "cosim.fst", "cosim.gtkw"}))
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"rtl.fst", "rtl.fst.gtkw", "cosim.fst", "cosim.fst.gtkw"}))
       << "no temporaries left";
   const RunResult cosim = run_rastersim(dir, {"cosim", "--count", "1", "--no-directed", "--no-coverage-gate", "--width",
                                               "64", "--height", "48", "--fst", "frames.fst"});
@@ -1170,7 +1170,7 @@ TEST(CliRtl, AnFstWaveformIntoAFifoIsStreamedNotReplaced) {
     EXPECT_EQ(received.substr(0, 1), std::string(1, '\0')) << "an FST header";
   }
   EXPECT_TRUE(fs::is_symlink(dir.path("link.fst")));
-  EXPECT_EQ(dir.listing(), (std::set<std::string>{"w.fifo", "w.fst", "link.fst", "w.gtkw", "link.gtkw"}));
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"w.fifo", "w.fst", "link.fst", "w.fst.gtkw", "link.fst.gtkw"}));
 }
 
 // A VCD waveform's signals by full name ("scope.scope.name[9:0]" as GTKWave spells them) and the
@@ -1222,7 +1222,7 @@ TEST(CliRtl, WaveWindowAsVcdWithAGtkwaveSaveFile) {
   const RunResult r = run_rastersim(dir, {"render", "--scene", "fan", "--width", "64", "--height", "48", "--backend", "rtl",
                                           "--wave", "w.vcd", "--wave-from", "100", "--wave-to", "120"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(dir.listing(), (std::set<std::string>{"w.vcd", "w.gtkw"})) << "no FST scratch file left";
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"w.vcd", "w.vcd.gtkw"})) << "no FST scratch file left";
   const Vcd vcd = read_vcd(dir.path("w.vcd"));
   ASSERT_FALSE(vcd.frame_cycles.empty());
   EXPECT_EQ(*std::min_element(vcd.frame_cycles.begin(), vcd.frame_cycles.end()), 100);
@@ -1230,7 +1230,7 @@ TEST(CliRtl, WaveWindowAsVcdWithAGtkwaveSaveFile) {
   // docs/debugging.md: frame cycle c's rising edge is at time 2 (4 + ceil(W H / 64) + c) + 1 and
   // shows frame_cycle c + 1 (4 reset cycles, 48 clear cycles at 64 x 48).
   EXPECT_EQ(vcd.frame_cycle_time.at(101), 2 * (4 + 48 + 100) + 1);
-  const std::string save = read_text(dir.path("w.gtkw"));
+  const std::string save = read_text(dir.path("w.vcd.gtkw"));
   EXPECT_TRUE(contains(save, "[dumpfile] \"" + fs::absolute(dir.path("w.vcd")).string() + "\"")) << save;
   int signals = 0;
   std::set<std::string> groups;
@@ -1252,6 +1252,14 @@ TEST(CliRtl, WaveWindowAsVcdWithAGtkwaveSaveFile) {
   EXPECT_TRUE(contains(save, "\n[timestart] 304\n")) << save;
   EXPECT_TRUE(contains(save, "\n*4.000000 -1 304 345 -1 ")) << save;
   EXPECT_TRUE(contains(save, "\n[markername] Awindow_start\n[markername] Bwindow_end\n")) << save;
+
+  // An FST named like the VCD gets a save file of its own; the VCD's still opens the VCD.
+  const RunResult fst = run_rastersim(dir, {"render", "--scene", "fan", "--width", "64", "--height", "48", "--backend",
+                                            "rtl", "--wave", "w.fst"});
+  ASSERT_EQ(fst.exit_code, 0) << fst.err;
+  EXPECT_EQ(dir.listing(), (std::set<std::string>{"w.vcd", "w.vcd.gtkw", "w.fst", "w.fst.gtkw"}));
+  EXPECT_EQ(read_text(dir.path("w.vcd.gtkw")), save);
+  EXPECT_TRUE(contains(read_text(dir.path("w.fst.gtkw")), "[dumpfile] \"" + fs::absolute(dir.path("w.fst")).string() + "\""));
 }
 
 // cosim --export writes any frame as replay files; the printed command (power-on seed included)

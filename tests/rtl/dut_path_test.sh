@@ -118,10 +118,10 @@ status=0
 # cycles from the first handshake, FST or VCD, each with its GTKWave save file.
 status=0
 "$exe" cosim --dut stuck --top rastersim_dut_template --wave w.fst "${flags[@]}" --count 0 --frame 0 > wave.txt 2>&1 || status=$?
-[ "$status" -eq 1 ] && [ -s w.fst ] && grep -q 'dumpfile.*/w.fst"' w.gtkw || fail "--wave of a stalled design: exit $status: $(cat wave.txt)"
+[ "$status" -eq 1 ] && [ -s w.fst ] && grep -q 'dumpfile.*/w.fst"' w.fst.gtkw || fail "--wave of a stalled design: exit $status: $(cat wave.txt)"
 "$exe" cosim "${memory[@]}" "${flags[@]}" --count 1 --wave w.vcd --wave-from 10 --wave-to 20 > vcd.txt 2>&1 ||
   fail "--wave w.vcd with --dut: $(tail -3 vcd.txt)"
-grep -q '^\$enddefinitions' w.vcd && grep -q 'mem_rd_valid' w.vcd && grep -q 'dumpfile.*/w.vcd"' w.gtkw ||
+grep -q '^\$enddefinitions' w.vcd && grep -q 'mem_rd_valid' w.vcd && grep -q 'dumpfile.*/w.vcd"' w.vcd.gtkw ||
   fail "no VCD of the design with its save file"
 # 11 cycles: 22 half-cycle times in the window.
 [ "$(grep -c '^#' w.vcd)" -le 23 ] || fail "the window 10..20 holds $(grep -c '^#' w.vcd) times"

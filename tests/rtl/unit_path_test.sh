@@ -124,7 +124,7 @@ PY
     wave="${line##*; waveform: }"
     [ -s "$wave" ] || fail "$name: no waveform at $wave"
     # The window's GTKWave save file with the primary marker at the unit's cycle the line names.
-    save="${wave%.fst}.gtkw"
+    save="$wave.gtkw"
     case "$line" in *"; the unit's cycle "*", marked in $save; replay: "*) ;; *) fail "$name: the unit's cycle is not named: $line" ;; esac
     at="${line#*"; the unit's cycle "}"
     at="${at%%,*}"
