@@ -8,6 +8,7 @@
 #include "outputs.h"
 #include "model/input_error.h"
 #include "model/pipeline.h"
+#include "frontend/scene.h"
 #ifdef RASTERSIM_HAVE_VECTORS
 #include "testbench/cosim_cases.h"
 #include "testbench/vectors/package.h"
@@ -101,7 +102,14 @@ int run_vectors(const VectorsOptions& o) {
   (void)profile;
   throw InputError("vectors needs the RTL library, which is not built in this binary (install Verilator and rebuild)");
 #else
-  // The folder is checked before the model runs, and written only when everything is computed.
+  // The folder is checked before the model runs, and written only when everything is computed. It
+  // is replaced as a whole, so no input may lie inside it.
+  OutputFiles inputs;
+  inputs.protect(o.input);
+  for (const std::string& mesh : frontend::scene_mesh_files(o.input)) inputs.protect(mesh);
+  inputs.protect(o.profile.profile_file);
+  inputs.protect(o.camera.texture);
+  inputs.refuse_inputs_inside(o.out, "the package");
   vectors::check_package_dir(o.out, o.force);
   vectors::Source source;
   std::vector<SnappedTriangle> triangles;

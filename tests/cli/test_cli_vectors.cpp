@@ -177,6 +177,30 @@ TEST(CliVectors, ForceKeepsAFolderWithFilesThatAreNotThePackages) {
   EXPECT_EQ(dir.listing(), std::set<std::string>{"pk"});
 }
 
+// --force replaces the package folder as a whole: an input inside it (a scene's mesh named like a
+// package file, the .tri itself, the profile) is refused and left as it was.
+TEST(CliVectors, AnInputInsideTheOutFolderIsRefused) {
+  ScratchDir dir;
+  ASSERT_EQ(run_rastersim(dir, {"vectors", "--scene", "fan", "--width", "16", "--height", "12", "--out", "pk"}).exit_code, 0);
+  const std::string mesh = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  dir.write("pk/README.md", mesh);  // a package file's name, holding the scene's mesh
+  dir.write("scene.json", "{\"objects\": [{\"mesh\": \"pk/README.md\"}]}\n");
+  dir.write("pk/frame.tri", "0 0 0.5 10 0 0.5 0 10 0.5\n");
+  dir.write("pk/profile.json", "{}\n");
+  const std::vector<std::vector<std::string>> runs = {
+      {"scene.json"}, {"pk/frame.tri"}, {"--random", "2", "--profile", "pk/profile.json"}};
+  for (const std::vector<std::string>& source : runs) {
+    std::vector<std::string> args = {"vectors", "--width", "16", "--height", "12", "--out", "pk", "--force"};
+    args.insert(args.end(), source.begin(), source.end());
+    const RunResult r = run_rastersim(dir, args);
+    EXPECT_EQ(r.exit_code, 2) << source[0] << ": " << r.err;
+    EXPECT_TRUE(contains(r.err, "pk: cannot write the package there: it holds an input of this run")) << r.err;
+  }
+  EXPECT_EQ(read_text(dir.path("pk/README.md")), mesh);
+  EXPECT_TRUE(fs::exists(dir.path("pk/frame.tri")));
+  EXPECT_TRUE(fs::exists(dir.path("pk/manifest.json")));
+}
+
 struct BadVectors {
   const char* name;
   std::vector<std::string> args;
