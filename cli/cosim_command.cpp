@@ -433,10 +433,23 @@ int run_cosim(const CosimOptions& o) {
   if (o.jobs < 1 || o.jobs > 256) throw InputError("--jobs " + std::to_string(o.jobs) + " is outside 1..256");
   if (unit && !o.wave.path.empty())
     throw InputError("--wave with --unit: a failing frame's waveform goes to --replay-dir");
-  std::unique_ptr<dut::Design> design;
+  modules::DutDesign files;
   if (with_dut) {
     if (const std::string problem = dut::interface_error(profile); !problem.empty()) throw InputError(problem);
-    modules::DutDesign files = dut::read_design(o.dut, o.top);
+    files = dut::read_design(o.dut, o.top);
+  }
+  // Every output is checked before anything is built: none may be an input (the profile, the
+  // design's file list or one of its sources).
+  OutputFiles outputs;
+  outputs.protect(o.profile.profile_file);
+  if (with_dut && std::filesystem::is_regular_file(o.dut)) outputs.protect(o.dut);
+  for (const std::string& source : files.files) outputs.protect(source);
+  const std::string junit_temp = o.junit_out.empty() ? "" : outputs.add(o.junit_out, "--junit");
+  const WaveFiles wave = add_waveform(outputs, o.wave);
+  const std::string coverage_temp = o.coverage_out.empty() ? "" : outputs.add(o.coverage_out, "--coverage");
+
+  std::unique_ptr<dut::Design> design;
+  if (with_dut) {
     files.parameters = unit ? dut::unit_parameters(*unit, profile, o.generics) : dut::design_parameters(profile, o.generics);
     files.unit = unit ? dut::to_string(*unit) : "";
     design = std::make_unique<dut::Design>(design_library(files), unit);
@@ -449,12 +462,6 @@ int run_cosim(const CosimOptions& o) {
     const std::string problem = rtl::configuration_error(profile);
     if (!problem.empty()) throw InputError(problem);
   }
-  OutputFiles outputs;
-  outputs.protect(o.profile.profile_file);
-  const std::string junit_temp = o.junit_out.empty() ? "" : outputs.add(o.junit_out, "--junit");
-  const WaveFiles wave = add_waveform(outputs, o.wave);
-  const std::string coverage_temp = o.coverage_out.empty() ? "" : outputs.add(o.coverage_out, "--coverage");
-
   std::set<std::string> pinned =
       o.fixed_settings ? std::set<std::string>(rtl::runtime_setting_keys().begin(), rtl::runtime_setting_keys().end())
                        : given_profile_keys(o.profile);

@@ -1135,6 +1135,30 @@ TEST(CliRtl, CosimOutputsThatAreTheProfileAreRefused) {
   }
 }
 
+// A design's file list and sources are inputs too: an output naming one is refused before anything
+// is built, and the file is left as it was.
+TEST(CliRtl, CosimOutputsThatAreTheDesignsFilesAreRefused) {
+  ScratchDir dir;
+  fs::create_directory(dir.path("design"));
+  const std::string source = "module my_design(input wire clk);\nendmodule\n";
+  dir.write("design/my_design.sv", source);
+  dir.write("design.f", "design/my_design.sv\n");
+  for (const std::string& dut : {std::string("design.f"), std::string("design")}) {
+    for (const std::vector<std::string>& outputs :
+         {std::vector<std::string>{"--junit", "design/my_design.sv"}, std::vector<std::string>{"--coverage", "design.f"},
+          std::vector<std::string>{"--coverage", "design/my_design.sv"}}) {
+      if (dut == "design" && outputs[1] == "design.f") continue;  // a folder has no file list
+      std::vector<std::string> args = {"cosim", "--count", "1", "--dut", dut, "--top", "my_design"};
+      args.insert(args.end(), outputs.begin(), outputs.end());
+      const RunResult r = run_rastersim(dir, args);
+      EXPECT_EQ(r.exit_code, 2) << dut << " " << outputs[0] << ": " << r.err;
+      EXPECT_TRUE(contains(r.err, "is an input of this run")) << r.err;
+      EXPECT_EQ(read_text(dir.path("design/my_design.sv")), source);
+      EXPECT_EQ(read_text(dir.path("design.f")), "design/my_design.sv\n");
+    }
+  }
+}
+
 // An FST waveform into a FIFO (or a link to one) is streamed into it: the FST writer, which
 // seeks, writes a temporary that is copied in. The FIFO was replaced by a regular file.
 TEST(CliRtl, AnFstWaveformIntoAFifoIsStreamedNotReplaced) {
