@@ -9,15 +9,38 @@
 # the installed `rastersim render` on the same triangles, and requires the same fragments (every
 # field and cycle), the same frame cycles, and final buffers equal to those replayed from the
 # CLI's fragment trace; on docs/examples/worked.tri and on the default scene (or on the given
-# profile and triangles). Usage: check-install.sh BUILD_DIR [PROFILE.json TRIANGLES.tri]
+# profile and triangles). The installed module's pytest runs against the installed module, and
+# `render --backend rtl` at a profile no build holds (40 x 30) is verilated from the installed
+# sources. Everything after the install runs with the checkout and the build folder hidden (an
+# empty tmpfs over each, in a private mount namespace: unshare -m), as after moving them away.
+# Usage: check-install.sh BUILD_DIR [PROFILE.json TRIANGLES.tri]
 set -euo pipefail
-root="$(cd "$(dirname "$0")/.." && pwd)"
-build="$(cd "${1:?usage: check-install.sh BUILD_DIR [PROFILE.json TRIANGLES.tri]}" && pwd)"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-prefix="$work/prefix"
-
-cmake --install "$build" --prefix "$prefix" > "$work/install.log"
+if [ -z "${RASTERSIM_INSTALLED_PREFIX:-}" ]; then
+  root="$(cd "$(dirname "$0")/.." && pwd)"
+  build="$(cd "${1:?usage: check-install.sh BUILD_DIR [PROFILE.json TRIANGLES.tri]}" && pwd)"
+  prefix="$work/prefix"
+  cmake --install "$build" --prefix "$prefix" > "$work/install.log"
+  # The rest runs on the installed tree alone, as after moving the checkout away: in a private mount
+  # namespace with an empty tmpfs over the build folder and the checkout.
+  unshare -m --propagation private true 2> /dev/null ||
+    { echo "check-install: cannot hide the checkout (unshare -m needs root or user namespaces)"; exit 1; }
+  cp "$0" "$work/check-install.sh"
+  given=()
+  if [ $# -ge 3 ]; then
+    cp "$2" "$work/given.json" && cp "$3" "$work/given.tri"
+    given=("$work/given.json" "$work/given.tri")
+  fi
+  status=0
+  # shellcheck disable=SC2016  # expanded by the inner shell
+  unshare -m --propagation private bash -c 'mount -t tmpfs none "$1" && mount -t tmpfs none "$2" && shift 2 && exec "$@"' \
+    _ "$build" "$root" env RASTERSIM_INSTALLED_PREFIX="$prefix" RASTERSIM_HIDDEN_CHECKOUT="$root" bash "$work/check-install.sh" hidden "${given[@]}" ||
+    status=$?
+  exit $status
+fi
+prefix="$RASTERSIM_INSTALLED_PREFIX"
+if [ -e "$RASTERSIM_HIDDEN_CHECKOUT/CMakeLists.txt" ]; then echo "check-install: the checkout is still in sight"; exit 1; fi
 for f in bin/rastersim include/rastersim/rastersim.h include/rastersim/model/pipeline.h \
          lib/cmake/rastersim/rastersimConfig.cmake lib/pkgconfig/rastersim.pc share/rastersim/rtl/rastersim_top.sv \
          share/doc/rastersim/library.md; do
@@ -163,14 +186,30 @@ echo "check-install: the DPI example caught the injected bug"
 # docs/library.md shows these runs: its lines must be what they print.
 for line in "$(grep -m1 'agree with the model' "$work/dpi.out")" "$(grep -m1 'MISMATCH' "$work/dpi-bug.out")" \
             "$(grep -m1 'FAILED, ' "$work/dpi-bug.out")"; do
-  grep -qxF -- "$line" "$root/docs/library.md" || { echo "check-install: docs/library.md does not show '$line'"; exit 1; }
+  grep -qxF -- "$line" "$prefix/share/doc/rastersim/library.md" || { echo "check-install: docs/library.md does not show '$line'"; exit 1; }
 done
 
 if [ $# -ge 3 ]; then
   compare "$(realpath "$2")" "$(realpath "$3")"
 else
-  compare "$root/docs/examples/worked.json" "$root/docs/examples/worked.tri"
+  compare "$prefix/share/doc/rastersim/examples/worked.json" "$prefix/share/doc/rastersim/examples/worked.tri"
   echo '{}' > "$work/default.json"
   "$prefix/bin/rastersim" render --scene default --dump-tri "$work/default.tri" > /dev/null
   compare "$work/default.json" "$work/default.tri"
 fi
+
+# The RTL backend at a profile no build holds: verilated on demand from the installed sources
+# (share/rastersim/source) into an empty module cache, and equal to the model.
+for backend in model rtl; do
+  RASTERSIM_CACHE_DIR="$work/cache" "$prefix/bin/rastersim" render --scene default --width 40 --height 30 \
+    --backend "$backend" --stats "$work/$backend-40x30.json" > "$work/$backend-40x30.out" 2>&1 ||
+    { cat "$work/$backend-40x30.out"; echo "check-install: render --backend $backend at 40x30 failed"; exit 1; }
+done
+python3 - "$work/model-40x30.json" "$work/rtl-40x30.json" <<'PY'
+import json, sys
+model, rtl = (json.load(open(p)) for p in sys.argv[1:])
+for key in ("fragments", "cycles", "depth_pass"):
+    if model.get(key) != rtl.get(key):
+        sys.exit(f"check-install: render --backend rtl at 40x30: {key} {rtl.get(key)}, the model's {model.get(key)}")
+PY
+echo "check-install: render --backend rtl at 40x30 (verilated from the installed sources) equals the model"
