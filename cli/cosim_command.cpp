@@ -455,12 +455,7 @@ int run_cosim(const CosimOptions& o) {
   const WaveFiles wave = add_waveform(outputs, o.wave);
   const std::string coverage_temp = o.coverage_out.empty() ? "" : outputs.add(o.coverage_out, "--coverage");
 
-  std::set<std::string> pinned =
-      o.fixed_settings ? std::set<std::string>(rtl::runtime_setting_keys().begin(), rtl::runtime_setting_keys().end())
-                       : given_profile_keys(o.profile);
-  if (o.fixed_settings)
-    pinned.insert({"texture_latency", "texture_stall_percent", "texture_stall_seed", "depth_bias_constant",
-                   "depth_bias_slope"});
+  std::set<std::string> pinned = rtl::pinned_settings(given_profile_keys(o.profile), o.fixed_settings);
   // A design is told only the settings on the interface's cfg_* ports; the others are the model's
   // micro-architecture, which cycle mode needs equal to the design's.
   if (with_dut) pinned.insert({"traversal", "memory_latency", "setup_fifo_depth"});

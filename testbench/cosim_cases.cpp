@@ -215,6 +215,16 @@ CosimCase random_case(const Profile& profile, uint64_t seed, int count) {
   return c;
 }
 
+std::set<std::string> pinned_settings(const std::set<std::string>& given, bool fixed_settings) {
+  std::set<std::string> pinned = given;
+  if (fixed_settings) {
+    pinned.insert(runtime_setting_keys().begin(), runtime_setting_keys().end());
+    pinned.insert({"texture_latency", "texture_stall_percent", "texture_stall_seed", "depth_bias_constant",
+                   "depth_bias_slope"});
+  }
+  return pinned;
+}
+
 const std::vector<std::string>& runtime_setting_keys() {
   static const std::vector<std::string> keys = {"depth_func", "depth_write", "depth_clear", "cull",
                                                 "front_face", "traversal",   "shading",     "memory_latency",

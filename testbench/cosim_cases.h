@@ -31,6 +31,10 @@ CosimCase random_case(const Profile& profile, uint64_t seed, int count);
 // depth_clear, cull, front_face, traversal, shading, memory_latency).
 const std::vector<std::string>& runtime_setting_keys();
 
+// The settings a `cosim` run's random frames keep: with `fixed_settings` every runtime setting (the
+// texture unit's and the depth bias's too), else the keys a flag or the profile file gave.
+std::set<std::string> pinned_settings(const std::set<std::string>& given, bool fixed_settings);
+
 // `profile` with every runtime setting that is not in `pinned` drawn from `seed`: memory latency in
 // 1..min(8, max_memory_latency), the depth clear mostly 2^N - 1, the rest uniformly; with the texture
 // unit its latency (1..8, now and then 64) and its memory's stall pattern (a third of the frames,
