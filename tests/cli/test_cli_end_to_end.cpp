@@ -705,7 +705,8 @@ TEST(CliRtl, BiasedFloatingPointDepthThroughTheRtlEqualsTheModel) {
   const RunResult c = run_rastersim(dir, cosim);
   ASSERT_EQ(c.exit_code, 0) << c.out << c.err;
   EXPECT_TRUE(contains(c.out + c.err, "Ne=3")) << c.out << c.err;
-  EXPECT_TRUE(contains(c.out + c.err, "random frames draw its constant and slope factor")) << c.out << c.err;
+  EXPECT_TRUE(contains(c.out + c.err, "random frames draw its constant and slope factor, each of either sign"))
+      << c.out << c.err;
   std::vector<std::string> vectors = {"vectors", "--suite", "depth", "--out", "package"};
   vectors.insert(vectors.end(), depth.begin(), depth.end());
   const RunResult v = run_rastersim(dir, vectors);
@@ -850,7 +851,9 @@ TEST(CliRtl, CosimCoverageTableShowsEveryReachableBinHit) {
     }
   }
   EXPECT_GE(reachable, 40);
-  EXPECT_EQ(unreachable, 3);  // never passing, always failing, and memory back-pressure on chip
+  // Never passing, always failing, memory back-pressure on chip; the depth bias's four and the
+  // texture unit's eight, which this build lacks.
+  EXPECT_EQ(unreachable, 15);
   // Per frame: the frames of the run, each with the bins it hit; the totals are their sums.
   std::map<std::string, int64_t> summed;
   for (const auto& frame : j["frames"])
