@@ -130,10 +130,10 @@ void print_coverage(std::ostream& out, const std::vector<rtl::CoverageBin>& bins
   for (size_t b = 0; b < bins.size(); ++b) {
     char line[160];
     if (bins[b].reachable)
-      std::snprintf(line, sizeof line, "  %-28s %12lld %7lld%s", bins[b].name.c_str(), (long long)hits[b],
+      std::snprintf(line, sizeof line, "  %-32s %12lld %7lld%s", bins[b].name.c_str(), (long long)hits[b],
                     (long long)frames[b], hits[b] == 0 ? "  NOT HIT" : "");
     else
-      std::snprintf(line, sizeof line, "  %-28s %12s %7s  unreachable: ", bins[b].name.c_str(), "-", "-");
+      std::snprintf(line, sizeof line, "  %-32s %12s %7s  unreachable: ", bins[b].name.c_str(), "-", "-");
     out << line << (bins[b].reachable ? "" : bins[b].unreachable) << "\n";
   }
 }

@@ -35,7 +35,10 @@ size_t bin_count(int max_latency) { return kHazardLatencyFirst + size_t(std::max
 
 std::vector<CoverageBin> coverage_bins(const Profile& p, const std::set<std::string>& pinned, int max_latency) {
   auto free = [&](const char* key) { return pinned.count(key) == 0; };
-  std::vector<CoverageBin> bins(bin_count(max_latency));
+  // Hazard bins per latency up to the built maximum, or with the latency pinned up to it (the same
+  // list whatever maximum a design behind the interface is given).
+  const int listed_latencies = free("memory_latency") ? max_latency : std::clamp(p.memory_latency, 1, max_latency);
+  std::vector<CoverageBin> bins(bin_count(listed_latencies));
   auto set = [&](size_t k, const char* name, const char* description) {
     bins[k].name = name;
     bins[k].description = description;
@@ -85,7 +88,7 @@ std::vector<CoverageBin> coverage_bins(const Profile& p, const std::set<std::str
   set(kTextureStall, "texture_memory_stall", "cycle a texture read waited for the texture memory");
   set(kTextureLatency1, "texture_latency_1", "textured fragment at texture_latency 1");
   set(kTextureLatencyMax, "texture_latency_max", "textured fragment at the largest texture_latency (64)");
-  for (int latency = 1; latency <= max_latency; ++latency) {
+  for (int latency = 1; latency <= listed_latencies; ++latency) {
     const std::string n = "zbuffer_hazard_stall_latency_" + std::to_string(latency);
     bins[hazard_latency_bin(latency)] = {n, "cycle the z-buffer's oldest held fragment waited on a read-after-write "
                                             "hazard at memory_latency " + std::to_string(latency), true, ""};
@@ -111,7 +114,7 @@ std::vector<CoverageBin> coverage_bins(const Profile& p, const std::set<std::str
   if (!free("setup_fifo_depth") && p.setup_fifo_depth == 1) unreachable(kFifoFullDeep, "setup_fifo_depth is pinned to 1");
   if (!free("memory_latency") && p.memory_latency != 1) unreachable(kLatencyMin, "memory_latency is pinned");
   if (!free("memory_latency") && p.memory_latency != max_latency) unreachable(kLatencyMax, "memory_latency is pinned");
-  for (int latency = 1; latency <= max_latency; ++latency) {
+  for (int latency = 1; latency <= listed_latencies; ++latency) {
     const size_t k = hazard_latency_bin(latency);
     if (!free("memory_latency") && p.memory_latency != latency) unreachable(k, "memory_latency is pinned");
     else if (!bins[kHazardBBox].reachable && !bins[kHazardSpan].reachable) unreachable(k, bins[kHazardSpan].unreachable);
