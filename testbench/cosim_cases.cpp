@@ -16,6 +16,9 @@ class Generator {
       : p_(p), rng_(seed), one_(int64_t(1) << p.subpixel_bits), z_max_((int64_t(1) << p.depth_plane_bits()) - 1) {}
 
   int64_t uniform(int64_t lo, int64_t hi) { return std::uniform_int_distribution<int64_t>(lo, hi)(rng_); }
+  // Pixel (px, py)'s sample point in subpixels (its centre, or its corner by the profile's pixel_center).
+  int64_t sample_x(int px) const { return px * one_ + p_.sample_offset(); }
+  int64_t sample_y(int py) const { return py * one_ + p_.sample_offset(); }
   // Guard band in subpixels: x in [-W, 2W], y in [-H, 2H] pixels.
   int64_t gx() { return uniform(-p_.width * one_, 2 * p_.width * one_); }
   int64_t gy() { return uniform(-p_.height * one_, 2 * p_.height * one_); }
@@ -39,7 +42,7 @@ class Generator {
   SnappedTriangle huge() { return triangle({gx(), gy(), gx(), gy(), gx(), gy()}); }
   // A few pixels around one pixel: back-to-back tiny triangles on the same pixel stress the hazards.
   SnappedTriangle tiny_at(int px, int py) {
-    const int64_t cx = px * one_ + one_ / 2, cy = py * one_ + one_ / 2, r = 2 * one_;
+    const int64_t cx = sample_x(px), cy = sample_y(py), r = 2 * one_;
     return triangle({cx + uniform(-r, r), cy + uniform(-r, r), cx + uniform(-r, r), cy + uniform(-r, r),
                      cx + uniform(-r, r), cy + uniform(-r, r)});
   }
@@ -102,25 +105,26 @@ class Generator {
   }
 
   // A right triangle whose last bounding-box candidate is the covered pixel (px, py) (vertical right
-  // edge and horizontal bottom edge a quarter pixel past its centre): a long walk ending on P.
+  // edge and horizontal bottom edge a quarter pixel past its sample point): a long walk ending on P.
   SnappedTriangle ending_at(int px, int py) {
-    const int64_t cx = px * one_ + one_ / 2, cy = py * one_ + one_ / 2, quarter = one_ / 4;
+    const int64_t cx = sample_x(px), cy = sample_y(py), quarter = one_ / 4;
     return triangle({cx - 20 * one_, cy + quarter, cx + quarter, cy + quarter, cx + quarter, cy - 20 * one_});
   }
   // A small right triangle whose first candidate is the covered pixel (px, py).
   SnappedTriangle starting_at(int px, int py) {
-    const int64_t cx = px * one_ + one_ / 2, cy = py * one_ + one_ / 2, quarter = one_ / 4;
+    const int64_t cx = sample_x(px), cy = sample_y(py), quarter = one_ / 4;
     return triangle({cx - quarter, cy - quarter, cx + 2 * one_, cy - quarter, cx - quarter, cy + 2 * one_});
   }
-  // A small triangle around the centre of pixel (px, py), covering it.
+  // A small triangle around the sample point of pixel (px, py), covering it.
   SnappedTriangle around(int px, int py) {
-    const int64_t cx = px * one_ + one_ / 2, cy = py * one_ + one_ / 2;
+    const int64_t cx = sample_x(px), cy = sample_y(py);
     return triangle({cx - one_, cy - one_, cx + one_, cy - one_, cx, cy + one_});
   }
-  // A triangle inside the square of half-width d around the centre of pixel (px, py): it covers that
-  // pixel alone (d < one pixel's half-width beyond S = 1; at S = 1 the neighbours' centres are 2 away).
+  // A triangle inside the square of half-width d around the sample point of pixel (px, py): it
+  // covers that pixel alone (d < one pixel's half-width beyond S = 1; at S = 1 the neighbours'
+  // sample points are 2 away).
   SnappedTriangle only(int px, int py) {
-    const int64_t cx = px * one_ + one_ / 2, cy = py * one_ + one_ / 2, d = std::max<int64_t>(1, one_ / 4);
+    const int64_t cx = sample_x(px), cy = sample_y(py), d = std::max<int64_t>(1, one_ / 4);
     return triangle({cx - d, cy - d, cx + d, cy, cx - d, cy + d});
   }
   // Constant depth equal to the clear value: the equal and gequal tests can pass on a cleared buffer.

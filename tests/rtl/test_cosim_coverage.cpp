@@ -206,18 +206,21 @@ TEST(CosimCoverage, BiasTextureAndLatencyBinsFollowTheBuild) {
 // configuration, run as the command line that selects it runs it (`--depth-bias-slope 1` for the
 // bias, `--texture-unit true` for the texture unit).
 TEST(CosimCoverage, TheDirectedFramesReachEveryReachableBin) {
-  Profile biased = small_profile(), textured = small_profile(), serial = small_profile();
+  Profile biased = small_profile(), textured = small_profile(), serial = small_profile(), corner = small_profile(48);
   biased.setup_interval = 64, biased.depth_exponent_bits = 3, biased.depth_bias_slope = 16;
   textured.texture_unit = true;
   serial.setup_interval = 0;
+  // Verilated on demand (latencies up to 64): samples at the pixels' corners, another fill rule.
+  corner.pixel_center = PixelCenter::Corner, corner.fill_rule = FillRule::BottomLeft;
   const std::pair<Profile, std::set<std::string>> runs[] = {
       {small_profile(), {"width", "height"}},
       {Profile{}, {}},
       {serial, {"width", "height", "setup_interval"}},
       {biased, {"width", "height", "setup_interval", "depth_exponent_bits", "depth_bias_slope"}},
-      {textured, {"width", "height", "texture_unit"}}};
+      {textured, {"width", "height", "texture_unit"}},
+      {corner, {"width", "height", "pixel_center", "fill_rule"}}};
   for (const auto& [p, given] : runs) {
-    const int max_latency = built_max_memory_latency(p);
+    const int max_latency = p.pixel_center == PixelCenter::Corner ? kMaxMemoryLatency : built_max_memory_latency(p);
     ASSERT_GT(max_latency, 0);
     const std::set<std::string> pinned = pinned_settings(given, false);
     const std::vector<CoverageBin> bins = coverage_bins(p, pinned, max_latency);
@@ -231,7 +234,7 @@ TEST(CosimCoverage, TheDirectedFramesReachEveryReachableBin) {
     }
     EXPECT_EQ(coverage_holes(bins, total), std::vector<std::string>{})
         << p.width << "x" << p.height << ", setup_interval " << p.setup_interval << (p.depth_biased() ? ", biased" : "")
-        << (p.texture_unit ? ", textured" : "");
+        << (p.texture_unit ? ", textured" : "") << ", pixel_center " << to_string(p.pixel_center);
   }
 }
 
