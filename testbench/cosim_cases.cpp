@@ -313,8 +313,8 @@ std::vector<CosimCase> texture_cases(const Profile& profile, const std::set<std:
   auto real = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
   auto free = [&](const char* key) { return pinned.count(key) == 0; };
   std::vector<CosimCase> cases;
-  // Textured medium triangles with u, v within three repeats either side of [0, 1) (every wrap
-  // case: negative, inside, beyond) and w spread up to 2^6, and now and then an untextured one.
+  // Textured small and medium triangles with u, v in [-3, 3] (every wrap case: negative, inside,
+  // beyond) and w spread up to 2^6, and now and then an untextured one.
   auto frame = [&](const std::string& name, TextureFilter filter, TextureWrap wrap, int log2_w, int log2_h) {
     CosimCase c{"directed texture " + name, {}, profile, {noise_texture(rng, log2_w, log2_h), filter, wrap}};
     for (int i = 0; i < 16; ++i) {

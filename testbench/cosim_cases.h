@@ -44,8 +44,8 @@ Profile random_settings(const Profile& profile, uint64_t seed, const std::set<st
                         int max_memory_latency);
 
 // The directed frames of the texture unit (profiles with texture_unit): each filter with each wrap
-// mode on u, v within three repeats either side of [0, 1), triangles at the w ratio limit 2^14, and
-// texture memory stalls at texture_latency 1 and 64. Settings in `pinned` stay the profile's.
+// mode on u, v in [-3, 3], triangles at the w ratio limit 2^14, and texture memory stalls at
+// texture_latency 1 and 64. Settings in `pinned` stay the profile's.
 std::vector<CosimCase> texture_cases(const Profile& profile, const std::set<std::string>& pinned);
 
 // The directed frames, each a few dozen triangles at most, on `profile`. Unless depth_func is in
