@@ -130,10 +130,10 @@ void print_coverage(std::ostream& out, const std::vector<rtl::CoverageBin>& bins
   for (size_t b = 0; b < bins.size(); ++b) {
     char line[160];
     if (bins[b].reachable)
-      std::snprintf(line, sizeof line, "  %-28s %12lld %7lld%s", bins[b].name.c_str(), (long long)hits[b],
+      std::snprintf(line, sizeof line, "  %-32s %12lld %7lld%s", bins[b].name.c_str(), (long long)hits[b],
                     (long long)frames[b], hits[b] == 0 ? "  NOT HIT" : "");
     else
-      std::snprintf(line, sizeof line, "  %-28s %12s %7s  unreachable: ", bins[b].name.c_str(), "-", "-");
+      std::snprintf(line, sizeof line, "  %-32s %12s %7s  unreachable: ", bins[b].name.c_str(), "-", "-");
     out << line << (bins[b].reachable ? "" : bins[b].unreachable) << "\n";
   }
 }
@@ -212,7 +212,8 @@ CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
   cmd->add_flag("--fixed-settings", o.fixed_settings,
                 "random frames keep the profile's runtime settings (by default each frame draws depth_func, "
                 "depth_write, depth_clear, cull, front_face, traversal, shading, memory_latency and setup_fifo_depth, except the keys "
-                "set by a flag or the profile file)");
+                "set by a flag or the profile file; with the texture unit also its latency and stall pattern, and with the "
+                "depth bias its constant and slope factor, given or not)");
   cmd->add_option("--shard", o.shard, "run only frames k with k mod N = K - 1 (1 <= K <= N); the union of shards 1/N .. N/N is the whole run")
       ->type_name("K/N");
   cmd->add_option("--junit", o.junit_out, "write the frames' results as JUnit XML")->type_name("FILE");
@@ -462,12 +463,7 @@ int run_cosim(const CosimOptions& o) {
     const std::string problem = rtl::configuration_error(profile);
     if (!problem.empty()) throw InputError(problem);
   }
-  std::set<std::string> pinned =
-      o.fixed_settings ? std::set<std::string>(rtl::runtime_setting_keys().begin(), rtl::runtime_setting_keys().end())
-                       : given_profile_keys(o.profile);
-  if (o.fixed_settings)
-    pinned.insert({"texture_latency", "texture_stall_percent", "texture_stall_seed", "depth_bias_constant",
-                   "depth_bias_slope"});
+  std::set<std::string> pinned = rtl::pinned_settings(given_profile_keys(o.profile), o.fixed_settings);
   // A design is told only the settings on the interface's cfg_* ports; the others are the model's
   // micro-architecture, which cycle mode needs equal to the design's.
   if (with_dut) pinned.insert({"traversal", "memory_latency", "setup_fifo_depth"});
@@ -570,7 +566,7 @@ int run_cosim(const CosimOptions& o) {
       out.message = d.message;
       out.depth_error = d.report.depth_error;
       out.color_error = d.report.color_error;
-      out.hits = rtl::frame_coverage(c.profile, c.triangles, d.model, max_latency);
+      out.hits = rtl::frame_coverage(c.profile, c.triangles, d.model, max_latency, c.texture);
       out.cycles = unit ? d.model.stats.cycles : d.design_cycles;  // --wave's window is in the design's cycles
       return out;
     }
@@ -592,7 +588,7 @@ int run_cosim(const CosimOptions& o) {
       out.color_error = functional.color_error;
     }
     // What a frame's stimulus reached, from the model's run of it.
-    out.hits = rtl::frame_coverage(c.profile, c.triangles, report.model, max_latency);
+    out.hits = rtl::frame_coverage(c.profile, c.triangles, report.model, max_latency, c.texture);
     out.cycles = report.model.stats.cycles;
     return out;
   };
@@ -693,7 +689,9 @@ int run_cosim(const CosimOptions& o) {
     info << "; with the texture unit, random frames draw textured triangles, a texture, its filter and wrap mode,"
          << " texture_latency and the texture memory's stall pattern";
   if (profile.depth_biased())
-    info << "; with the depth bias, random frames draw its constant and slope factor unless given or fixed";
+    info << (o.fixed_settings ? "; with the depth bias, its constant and slope factor stay the profile's"
+                              : "; with the depth bias, random frames draw its constant and slope factor, each of either "
+                                "sign, given or not");
   info << "\n";
   if (!holes.empty()) {
     info << "coverage: " << holes.size() << " reachable bin" << (holes.size() == 1 ? "" : "s") << " not hit:";

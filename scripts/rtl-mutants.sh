@@ -23,14 +23,17 @@ mutants=("$@")
                                      setup_credit_count setup_fifo_empty setup_edge_sign setup_offscreen_rows)
 
 # The texture unit's mutants (TEXTURE 1, pipelined setup; not in the default list: ctest
-# rtl.injected_texture_bugs_are_caught, label long, runs them by name):
+# rtl.injected_texture_bugs_are_caught, label long, runs them by name); the sampler's must be caught
+# by the directed frames alone:
 texture_mutants=(texture_capacity texture_bank_route texture_stall_ignored texture_untextured_waits
                  texture_left_slots)
+texture_sampler_mutants=(texture_clamp_below texture_blend_rounding)
 # The depth output stage's (DEPTH_EXPONENT_BITS 3, DEPTH_BIAS 1; ctest rtl.injected_depth_bugs_are_caught,
 # label long):
-depth_mutants=(depth_bias_shift depth_bias_smaller_step depth_float_mantissa)
+depth_mutants=(depth_bias_shift depth_bias_smaller_step depth_float_mantissa depth_bias_slope_unsigned)
 # name -> file, text to replace, replacement (fixed strings); params: extra verilator -G settings;
-# check: mutant_check's mode (--cosim-only: the frames of `rastersim cosim --count 100` must catch it).
+# check: mutant_check's mode (--cosim-only: the frames of `rastersim cosim --count 100` must catch it;
+# --directed-only: its directed and coverage frames).
 declare -A file from to params check
 max_latency=8
 file[bbox_coverage]=scanline_walker.sv
@@ -168,6 +171,17 @@ to[texture_untextured_waits]='wire issue = head_valid && tex_rd_ready;'  # untex
 file[texture_left_slots]=z_adder.sv
 from[texture_left_slots]='.left_start({texture_record[1 + (15 + c)*TR +: TR], texture_record[1 + (9 + c)*TR +: TR]}),'
 to[texture_left_slots]='.left_start({texture_record[1 + (9 + c)*TR +: TR], texture_record[1 + (15 + c)*TR +: TR]}),'  # S, T, Q left-edge slots swapped
+# The texture sampler's address and filter stages: the directed texture frames alone must catch them.
+for m in "${texture_sampler_mutants[@]}"; do
+  params[$m]="-GSETUP_INTERVAL=4 -GTEXTURE=1"
+  check[$m]=--directed-only
+done
+file[texture_clamp_below]=texture_address.sv
+from[texture_clamp_below]="else if (index < 0) place = 10'd0;"
+to[texture_clamp_below]="else if (index < 0) place = index[9:0] & last[9:0];"  # clamp wraps indices below 0 as repeat does
+file[texture_blend_rounding]=texture_filter.sv
+from[texture_blend_rounding]="{17'd0, upper} * {26'd0, fy} + 34'd32768;"
+to[texture_blend_rounding]="{17'd0, upper} * {26'd0, fy};"  # the bilinear mean truncated, not rounded
 # The pipelined setup unit and the record FIFO.
 for m in setup_slot_counter setup_floor_correction setup_missing_step setup_credit_count setup_fifo_empty setup_edge_sign \
          setup_offscreen_rows; do
@@ -197,6 +211,8 @@ from[depth_bias_shift]='wire signed [PB-1:0] unclamped = constant_part + (produc
 to[depth_bias_shift]='wire signed [PB-1:0] unclamped = constant_part + (product >>> 3);'  # the slope factor read as s5.3
 from[depth_bias_smaller_step]='wire [Z_REG_BITS-1:0] slope = magnitude_x > magnitude_y ? magnitude_x : magnitude_y;'
 to[depth_bias_smaller_step]='wire [Z_REG_BITS-1:0] slope = magnitude_x > magnitude_y ? magnitude_y : magnitude_x;'  # the smaller step
+from[depth_bias_slope_unsigned]="\$signed({{(PB-8){cfg_depth_bias_slope[7]}}, cfg_depth_bias_slope})"
+to[depth_bias_slope_unsigned]="\$signed({{(PB-8){1'b0}}, cfg_depth_bias_slope})"  # a negative slope factor zero-extended: a large positive one
 from[depth_float_mantissa]='if (depth_x[NM + e - 1]) word = {e[NE-1:0], depth_x[e - 1 +: NM]};'
 to[depth_float_mantissa]='if (depth_x[NM + e - 1]) word = {e[NE-1:0], depth_x[e +: NM]};'  # the mantissa one bit too high
 file[setup_fifo_empty]=setup_fifo.sv

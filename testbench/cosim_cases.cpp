@@ -16,6 +16,9 @@ class Generator {
       : p_(p), rng_(seed), one_(int64_t(1) << p.subpixel_bits), z_max_((int64_t(1) << p.depth_plane_bits()) - 1) {}
 
   int64_t uniform(int64_t lo, int64_t hi) { return std::uniform_int_distribution<int64_t>(lo, hi)(rng_); }
+  // Pixel (px, py)'s sample point in subpixels (its centre, or its corner by the profile's pixel_center).
+  int64_t sample_x(int px) const { return px * one_ + p_.sample_offset(); }
+  int64_t sample_y(int py) const { return py * one_ + p_.sample_offset(); }
   // Guard band in subpixels: x in [-W, 2W], y in [-H, 2H] pixels.
   int64_t gx() { return uniform(-p_.width * one_, 2 * p_.width * one_); }
   int64_t gy() { return uniform(-p_.height * one_, 2 * p_.height * one_); }
@@ -39,7 +42,7 @@ class Generator {
   SnappedTriangle huge() { return triangle({gx(), gy(), gx(), gy(), gx(), gy()}); }
   // A few pixels around one pixel: back-to-back tiny triangles on the same pixel stress the hazards.
   SnappedTriangle tiny_at(int px, int py) {
-    const int64_t cx = px * one_ + one_ / 2, cy = py * one_ + one_ / 2, r = 2 * one_;
+    const int64_t cx = sample_x(px), cy = sample_y(py), r = 2 * one_;
     return triangle({cx + uniform(-r, r), cy + uniform(-r, r), cx + uniform(-r, r), cy + uniform(-r, r),
                      cx + uniform(-r, r), cy + uniform(-r, r)});
   }
@@ -102,25 +105,26 @@ class Generator {
   }
 
   // A right triangle whose last bounding-box candidate is the covered pixel (px, py) (vertical right
-  // edge and horizontal bottom edge a quarter pixel past its centre): a long walk ending on P.
+  // edge and horizontal bottom edge a quarter pixel past its sample point): a long walk ending on P.
   SnappedTriangle ending_at(int px, int py) {
-    const int64_t cx = px * one_ + one_ / 2, cy = py * one_ + one_ / 2, quarter = one_ / 4;
+    const int64_t cx = sample_x(px), cy = sample_y(py), quarter = one_ / 4;
     return triangle({cx - 20 * one_, cy + quarter, cx + quarter, cy + quarter, cx + quarter, cy - 20 * one_});
   }
   // A small right triangle whose first candidate is the covered pixel (px, py).
   SnappedTriangle starting_at(int px, int py) {
-    const int64_t cx = px * one_ + one_ / 2, cy = py * one_ + one_ / 2, quarter = one_ / 4;
+    const int64_t cx = sample_x(px), cy = sample_y(py), quarter = one_ / 4;
     return triangle({cx - quarter, cy - quarter, cx + 2 * one_, cy - quarter, cx - quarter, cy + 2 * one_});
   }
-  // A small triangle around the centre of pixel (px, py), covering it.
+  // A small triangle around the sample point of pixel (px, py), covering it.
   SnappedTriangle around(int px, int py) {
-    const int64_t cx = px * one_ + one_ / 2, cy = py * one_ + one_ / 2;
+    const int64_t cx = sample_x(px), cy = sample_y(py);
     return triangle({cx - one_, cy - one_, cx + one_, cy - one_, cx, cy + one_});
   }
-  // A triangle inside the square of half-width d around the centre of pixel (px, py): it covers that
-  // pixel alone (d < one pixel's half-width beyond S = 1; at S = 1 the neighbours' centres are 2 away).
+  // A triangle inside the square of half-width d around the sample point of pixel (px, py): it
+  // covers that pixel alone (d < one pixel's half-width beyond S = 1; at S = 1 the neighbours'
+  // sample points are 2 away).
   SnappedTriangle only(int px, int py) {
-    const int64_t cx = px * one_ + one_ / 2, cy = py * one_ + one_ / 2, d = std::max<int64_t>(1, one_ / 4);
+    const int64_t cx = sample_x(px), cy = sample_y(py), d = std::max<int64_t>(1, one_ / 4);
     return triangle({cx - d, cy - d, cx + d, cy, cx - d, cy + d});
   }
   // Constant depth equal to the clear value: the equal and gequal tests can pass on a cleared buffer.
@@ -174,6 +178,26 @@ void texture_triangle(std::mt19937_64& rng, SnappedTriangle& t) {
   t.textured = true;
 }
 
+// `t` textured with u, v in [-reach, reach] and the given w per vertex (the smallest first scaled
+// to q = 2^P, as the snap does).
+void texture_with_w(std::mt19937_64& rng, SnappedTriangle& t, double reach, const double (&w)[3]) {
+  auto real = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  const double w_min = std::min({w[0], w[1], w[2]});
+  for (int k = 0; k < 3; ++k) {
+    t.v[k].q = texture_q(w_min, w[k]);
+    t.v[k].s = texture_scaled(real(-reach, reach), t.v[k].q);
+    t.v[k].t = texture_scaled(real(-reach, reach), t.v[k].q);
+  }
+  t.textured = true;
+}
+
+// A texture of noise texels, 2^log2_width x 2^log2_height: a wrong texel shows.
+std::shared_ptr<const Texture> noise_texture(std::mt19937_64& rng, int log2_width, int log2_height) {
+  std::vector<uint32_t> texels(size_t(1) << (log2_width + log2_height));
+  for (uint32_t& texel : texels) texel = uint32_t(rng()) & 0xFFFFFFu;
+  return std::make_shared<const Texture>(log2_width, log2_height, std::move(texels));
+}
+
 // A texture of random size (1 to 256 texels a side, powers of two) and texels; patterns that show
 // a wrong texel: noise, or a checkerboard of random colours.
 std::shared_ptr<const Texture> random_texture(std::mt19937_64& rng) {
@@ -213,6 +237,21 @@ CosimCase random_case(const Profile& profile, uint64_t seed, int count) {
     c.texture.wrap = rng() % 2 ? TextureWrap::Clamp : TextureWrap::Repeat;
   }
   return c;
+}
+
+std::set<std::string> pinned_settings(const std::set<std::string>& given, bool fixed_settings) {
+  std::set<std::string> pinned = given;
+  if (fixed_settings) {
+    pinned.insert(runtime_setting_keys().begin(), runtime_setting_keys().end());
+    pinned.insert({"texture_latency", "texture_stall_percent", "texture_stall_seed", "depth_bias_constant",
+                   "depth_bias_slope"});
+  } else {
+    // A non-zero bias value is how a profile selects the build with the depth bias: its runtime
+    // registers stay drawn, both signs of each.
+    pinned.erase("depth_bias_constant");
+    pinned.erase("depth_bias_slope");
+  }
+  return pinned;
 }
 
 const std::vector<std::string>& runtime_setting_keys() {
@@ -266,6 +305,56 @@ Profile random_settings(const Profile& profile, uint64_t seed, const std::set<st
     if (free("depth_bias_slope")) p.depth_bias_slope = unbiased ? 0 : bias_slope;
   }
   return p;
+}
+
+std::vector<CosimCase> texture_cases(const Profile& profile, const std::set<std::string>& pinned) {
+  Generator g(profile, 271828);
+  std::mt19937_64 rng(314159);
+  auto real = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  auto free = [&](const char* key) { return pinned.count(key) == 0; };
+  std::vector<CosimCase> cases;
+  // Textured small and medium triangles with u, v in [-3, 3] (every wrap case: negative, inside,
+  // beyond) and w spread up to 2^6, and now and then an untextured one.
+  auto frame = [&](const std::string& name, TextureFilter filter, TextureWrap wrap, int log2_w, int log2_h) {
+    CosimCase c{"directed texture " + name, {}, profile, {noise_texture(rng, log2_w, log2_h), filter, wrap}};
+    for (int i = 0; i < 16; ++i) {
+      SnappedTriangle t = i % 2 ? g.medium() : g.tiny();
+      if (i % 8 != 7) {
+        const double w[3] = {1.0, std::exp2(real(0.0, 6.0)), std::exp2(real(0.0, 6.0))};
+        texture_with_w(rng, t, 3.0, w);
+      }
+      c.triangles.push_back(t);
+    }
+    return c;
+  };
+  // Both filters with both wrap modes, on textures of different shapes.
+  cases.push_back(frame("nearest, repeat", TextureFilter::Nearest, TextureWrap::Repeat, 4, 3));
+  cases.push_back(frame("nearest, clamp", TextureFilter::Nearest, TextureWrap::Clamp, 3, 5));
+  cases.push_back(frame("bilinear, repeat", TextureFilter::Bilinear, TextureWrap::Repeat, 5, 4));
+  cases.push_back(frame("bilinear, clamp", TextureFilter::Bilinear, TextureWrap::Clamp, 2, 2));
+  // Triangles at the divide's limit: one vertex at w = 1, one at w = 2^14 (docs/arithmetic.md
+  // section 5), u, v from a fraction of a repeat to the limits +-128.
+  CosimCase ratio{"directed texture w ratio 2^14", {}, profile,
+                  {noise_texture(rng, 6, 6), TextureFilter::Bilinear, TextureWrap::Repeat}};
+  for (int i = 0; i < 12; ++i) {
+    SnappedTriangle t = g.medium();
+    double w[3] = {1.0, std::exp2(14.0), std::exp2(real(0.0, 14.0))};
+    std::swap(w[0], w[i % 3]);
+    texture_with_w(rng, t, i % 3 == 0 ? 127.0 : i % 3 == 1 ? 4.0 : 0.5, w);
+    ratio.triangles.push_back(t);
+  }
+  cases.push_back(std::move(ratio));
+  // Texture memory stalls at the smallest and the largest texture latency: a pattern that refuses
+  // reads in about half (a quarter) of the cycles.
+  for (const int latency : {1, kMaxTextureLatency}) {
+    CosimCase c = frame("stalls, texture_latency " + std::to_string(latency), TextureFilter::Bilinear,
+                        latency == 1 ? TextureWrap::Clamp : TextureWrap::Repeat, 4, 4);
+    if (free("texture_latency")) c.profile.texture_latency = latency;
+    if (free("texture_stall_percent")) c.profile.texture_stall_percent = latency == 1 ? 50 : 25;
+    if (free("texture_stall_seed")) c.profile.texture_stall_seed = 1000 + latency;
+    cases.push_back(std::move(c));
+  }
+  return cases;
 }
 
 std::vector<CosimCase> directed_cases(const Profile& profile, const std::set<std::string>& pinned) {
@@ -331,19 +420,30 @@ std::vector<CosimCase> coverage_cases(const Profile& profile, const std::set<std
     const int64_t apex_x = profile.width * one / 2;
     return reversed ? g.triangle({apex_x, y_lo, x_lo, y_hi, x_hi, y_hi}) : g.triangle({apex_x, y_lo, x_hi, y_hi, x_lo, y_hi});
   };
+  // The cover walks of the hazard frames below: long enough for the setup unit to have the next
+  // two records ready (the serial unit takes far longer for a record than the walker for a small
+  // triangle), a triangle of that many pixels or, past half the screen, whole-screen triangles,
+  // as many as that takes (with the serial setup one whole-screen walk is shorter than two setups).
+  const SetupTiming timing = setup_timing(profile);
+  const int64_t per_record = timing.interval > 0 ? timing.interval : timing.drawn_latency + 1;
+  const int64_t needed = 2 * (timing.drawn_latency + per_record) + 64;  // cover walk, cycles
+  const int64_t leg = std::min<int64_t>(std::min(profile.width, profile.height),
+                                        int64_t(std::ceil(std::sqrt(2.0 * double(needed)))));
+  const bool whole_screen = needed >= int64_t(profile.width) * profile.height / 2;
+  const int covers = whole_screen ? int(std::min<int64_t>(8, needed / (int64_t(profile.width) * profile.height) + 1)) : 1;
   // Whole-screen triangles of each winding (one is drawn whatever the cull mode; with back culling
-  // the other is culled), each followed by tiny triangles that fill the record FIFO while the
-  // walker crosses the screen.
+  // the other is culled), `covers` of each, followed by tiny triangles that fill the record FIFO
+  // while the walker crosses the screen.
   auto fill = [&](const std::string& name, const Profile& p) {
     CosimCase c{"coverage " + name, {}, p, {}};
     for (const bool reversed : {false, true}) {
-      c.triangles.push_back(screen_cover(reversed));
+      for (int i = 0; i < covers; ++i) c.triangles.push_back(screen_cover(reversed));
       for (int i = 0; i < 20; ++i) c.triangles.push_back(g.tiny());
     }
     cases.push_back(std::move(c));
   };
-  // With the FIFO depth free, depth 2 and depth 1: even the serial unit fills two records while
-  // the walker crosses a 64 x 48 screen.
+  // With the FIFO depth free, depth 2 and depth 1: the serial unit too fills two records while the
+  // walker crosses the screen `covers` times.
   Profile culling = profile;
   if (free("cull")) culling.cull = CullMode::Back;  // one of the two whole-screen triangles is culled
   if (free("setup_fifo_depth")) culling.setup_fifo_depth = 2;
@@ -353,18 +453,11 @@ std::vector<CosimCase> coverage_cases(const Profile& profile, const std::set<std
     p.setup_fifo_depth = 1;
     fill("guard band limits and a full record FIFO of depth 1", p);
   }
-  // Hazards at the smallest and the largest memory latency the RTL is built for, with each
-  // traversal the run can use: a walk ending on pixel P, then one starting on P right after it. A
-  // cover triangle walked first gives the setup unit time to have both records ready (the serial
-  // unit takes far longer for a record than the walker for a small triangle), so the second walk
-  // follows the first without a gap; a hazard then needs the latency to outlast the walker's load
-  // cycle, and with span its row cycle too.
-  const SetupTiming timing = setup_timing(profile);
-  const int64_t per_record = timing.interval > 0 ? timing.interval : timing.drawn_latency + 1;
-  const int64_t needed = 2 * (timing.drawn_latency + per_record) + 64;  // cover walk, cycles
-  const int64_t leg = std::min<int64_t>(std::min(profile.width, profile.height),
-                                        int64_t(std::ceil(std::sqrt(2.0 * double(needed)))));
-  const bool whole_screen = needed >= int64_t(profile.width) * profile.height / 2;
+  // Hazards at every memory latency the RTL is built for, with the traversals the run can use: a
+  // walk ending on pixel P, then one starting on P right after it. The cover walks first give the
+  // setup unit time to have both records ready, so the second walk follows the first without a
+  // gap; a hazard then needs the latency to outlast the walker's load cycle, and with span its row
+  // cycle too.
   const int cx = std::clamp(profile.width / 2, std::min(21, profile.width - 1), std::max(0, profile.width - 3));
   const int cy = std::clamp(profile.height / 2, std::min(21, profile.height - 1), std::max(0, profile.height - 3));
   CosimCase hazards{"", {}, profile, {}};
@@ -374,7 +467,8 @@ std::vector<CosimCase> coverage_cases(const Profile& profile, const std::set<std
   // behind it in the z-buffer's input buffer, so the third must also wait for the middle one's
   // read: docs/cycle-model.md, "Z-buffer").
   auto group = [&](int px, bool chain) {
-    hazards.triangles.push_back(whole_screen ? screen_cover(false) : g.triangle({0, 0, leg * one, 0, 0, leg * one}));
+    for (int i = 0; i < covers; ++i)
+      hazards.triangles.push_back(whole_screen ? screen_cover(false) : g.triangle({0, 0, leg * one, 0, 0, leg * one}));
     hazards.triangles.push_back(g.ending_at(px, cy));
     hazards.triangles.push_back(chain ? g.only(px, cy) : g.starting_at(px, cy));
     hazards.triangles.push_back(chain ? g.starting_at(px, cy) : g.around(px, cy));
@@ -382,12 +476,19 @@ std::vector<CosimCase> coverage_cases(const Profile& profile, const std::set<std
   for (int i = 0; i < 5; ++i) group(std::clamp(cx + i - 2, 0, profile.width - 1), false);
   for (int i = 0; i < 3; ++i) group(std::clamp(cx + i - 1, 0, profile.width - 1), true);
   if (free("setup_fifo_depth")) hazards.profile.setup_fifo_depth = std::max(2, profile.setup_fifo_depth);
+  // Every latency the RTL is built for: at 1 and at the largest with each traversal, in between
+  // with the traversals in turn.
   std::vector<int> latencies = {profile.memory_latency};
-  if (free("memory_latency")) latencies = {1, max_memory_latency};
-  std::vector<Traversal> traversals = {profile.traversal};
-  if (free("traversal")) traversals = {Traversal::BBox, Traversal::Span};
-  for (const Traversal traversal : traversals) {
-    for (const int latency : latencies) {
+  if (free("memory_latency")) {
+    latencies.clear();
+    for (int latency = 1; latency <= max_memory_latency; ++latency) latencies.push_back(latency);
+  }
+  for (const int latency : latencies) {
+    std::vector<Traversal> traversals = {profile.traversal};
+    if (free("traversal"))
+      traversals = latency == 1 || latency == max_memory_latency ? std::vector<Traversal>{Traversal::BBox, Traversal::Span}
+                   : latency % 2 ? std::vector<Traversal>{Traversal::BBox} : std::vector<Traversal>{Traversal::Span};
+    for (const Traversal traversal : traversals) {
       CosimCase c = hazards;
       c.name = std::string("coverage hazards, ") + to_string(traversal) + ", memory_latency " + std::to_string(latency);
       c.profile.traversal = traversal;
@@ -411,6 +512,20 @@ std::vector<CosimCase> coverage_cases(const Profile& profile, const std::set<std
       cases.push_back(std::move(c));
     }
   }
+  // With the depth bias: each sign of its constant and slope factor, the slope at both extremes,
+  // on triangles with depth steps.
+  if (profile.depth_biased()) {
+    const std::pair<int64_t, int> biases[] = {{-300, -128}, {300, 127}, {37, -9}};
+    for (const auto& [constant, slope] : biases) {
+      CosimCase c{"", {}, profile, {}};
+      if (free("depth_bias_constant")) c.profile.depth_bias_constant = constant;
+      if (free("depth_bias_slope")) c.profile.depth_bias_slope = slope;
+      c.name = "coverage depth bias, constant " + std::to_string(c.profile.depth_bias_constant) + ", slope " +
+               std::to_string(c.profile.depth_bias_slope) + "/16";
+      for (int i = 0; i < 16; ++i) c.triangles.push_back(i % 4 == 3 ? g.tiny() : g.medium());
+      cases.push_back(std::move(c));
+    }
+  }
   return cases;
 }
 
@@ -419,6 +534,8 @@ CosimPlan::CosimPlan(const Profile& profile, const std::set<std::string>& pinned
     : profile_(profile), pinned_(pinned), max_memory_latency_(max_memory_latency), seed_(seed), triangles_(triangles) {
   if (directed) {
     directed_ = directed_cases(profile, pinned);
+    if (profile.texture_unit)
+      for (CosimCase& c : texture_cases(profile, pinned)) directed_.push_back(std::move(c));
     for (CosimCase& c : coverage_cases(profile, pinned, max_memory_latency)) directed_.push_back(std::move(c));
   }
   for (const std::string& key : runtime_setting_keys())

@@ -1,5 +1,7 @@
 #include "testbench/cosim_coverage.h"
 
+#include <algorithm>
+
 #include "model/triangle_setup.h"
 
 namespace rastersim::rtl {
@@ -18,13 +20,25 @@ enum Fixed : size_t {
 };
 constexpr size_t kPerFunc = 4;
 size_t depth_bin(DepthFunc f, size_t which) { return kDepthFirst + size_t(f) * kPerFunc + which; }
-constexpr size_t kBinCount = kDepthFirst + 8 * kPerFunc;
+// After the depth functions: the depth bias's and the texture unit's inputs, then one hazard bin
+// per memory latency 1 .. max_latency.
+enum Inputs : size_t {
+  kBiasConstantNegative = kDepthFirst + 8 * kPerFunc, kBiasConstantPositive, kBiasSlopeNegative, kBiasSlopePositive,
+  kTextureNearest, kTextureBilinear, kTextureRepeat, kTextureClamp, kTextureWRatioLimit, kTextureStall,
+  kTextureLatency1, kTextureLatencyMax,
+  kHazardLatencyFirst
+};
+size_t hazard_latency_bin(int latency) { return kHazardLatencyFirst + size_t(latency) - 1; }
+size_t bin_count(int max_latency) { return kHazardLatencyFirst + size_t(std::max(1, max_latency)); }
 
 }  // namespace
 
 std::vector<CoverageBin> coverage_bins(const Profile& p, const std::set<std::string>& pinned, int max_latency) {
   auto free = [&](const char* key) { return pinned.count(key) == 0; };
-  std::vector<CoverageBin> bins(kBinCount);
+  // Hazard bins per latency up to the built maximum, or with the latency pinned up to it (the same
+  // list whatever maximum a design behind the interface is given).
+  const int listed_latencies = free("memory_latency") ? max_latency : std::clamp(p.memory_latency, 1, max_latency);
+  std::vector<CoverageBin> bins(bin_count(listed_latencies));
   auto set = [&](size_t k, const char* name, const char* description) {
     bins[k].name = name;
     bins[k].description = description;
@@ -60,6 +74,25 @@ std::vector<CoverageBin> coverage_bins(const Profile& p, const std::set<std::str
     bins[depth_bin(f, 2)] = {n + "_pass", "fragment that passed", true, ""};
     bins[depth_bin(f, 3)] = {n + "_fail", "fragment that failed", true, ""};
   }
+  set(kBiasConstantNegative, "depth_bias_constant_negative", "fragment of a frame with a negative depth_bias_constant");
+  set(kBiasConstantPositive, "depth_bias_constant_positive", "fragment of a frame with a positive depth_bias_constant");
+  set(kBiasSlopeNegative, "depth_bias_slope_negative",
+      "fragment of a triangle with a depth step, in a frame with a negative depth_bias_slope");
+  set(kBiasSlopePositive, "depth_bias_slope_positive",
+      "fragment of a triangle with a depth step, in a frame with a positive depth_bias_slope");
+  set(kTextureNearest, "texture_nearest", "textured fragment sampled from a texture with the nearest filter");
+  set(kTextureBilinear, "texture_bilinear", "textured fragment sampled from a texture with the bilinear filter");
+  set(kTextureRepeat, "texture_repeat_outside", "textured fragment with u or v outside [0, 1), wrap repeat");
+  set(kTextureClamp, "texture_clamp_outside", "textured fragment with u or v outside [0, 1), wrap clamp");
+  set(kTextureWRatioLimit, "texture_w_ratio_limit", "drawn textured triangle whose w ratio is the divide's limit 2^14");
+  set(kTextureStall, "texture_memory_stall", "cycle a texture read waited for the texture memory");
+  set(kTextureLatency1, "texture_latency_1", "textured fragment at texture_latency 1");
+  set(kTextureLatencyMax, "texture_latency_max", "textured fragment at the largest texture_latency (64)");
+  for (int latency = 1; latency <= listed_latencies; ++latency) {
+    const std::string n = "zbuffer_hazard_stall_latency_" + std::to_string(latency);
+    bins[hazard_latency_bin(latency)] = {n, "cycle the z-buffer's oldest held fragment waited on a read-after-write "
+                                            "hazard at memory_latency " + std::to_string(latency), true, ""};
+  }
 
   if (!free("cull") && p.cull == CullMode::None) unreachable(kCulled, "cull is pinned to none");
   if (p.subpixel_bits == 1)
@@ -81,6 +114,34 @@ std::vector<CoverageBin> coverage_bins(const Profile& p, const std::set<std::str
   if (!free("setup_fifo_depth") && p.setup_fifo_depth == 1) unreachable(kFifoFullDeep, "setup_fifo_depth is pinned to 1");
   if (!free("memory_latency") && p.memory_latency != 1) unreachable(kLatencyMin, "memory_latency is pinned");
   if (!free("memory_latency") && p.memory_latency != max_latency) unreachable(kLatencyMax, "memory_latency is pinned");
+  for (int latency = 1; latency <= listed_latencies; ++latency) {
+    const size_t k = hazard_latency_bin(latency);
+    if (!free("memory_latency") && p.memory_latency != latency) unreachable(k, "memory_latency is pinned");
+    else if (!bins[kHazardBBox].reachable && !bins[kHazardSpan].reachable) unreachable(k, bins[kHazardSpan].unreachable);
+  }
+
+  // The depth bias's runtime registers exist in a build with it (a biased profile); a pinned value
+  // has one sign.
+  const std::pair<size_t, size_t> bias_bins[] = {{kBiasConstantNegative, kBiasConstantPositive},
+                                                 {kBiasSlopeNegative, kBiasSlopePositive}};
+  const char* bias_keys[] = {"depth_bias_constant", "depth_bias_slope"};
+  const int64_t bias_values[] = {p.depth_bias_constant, p.depth_bias_slope};
+  for (int k = 0; k < 2; ++k) {
+    for (const size_t b : {bias_bins[k].first, bias_bins[k].second}) {
+      const bool negative = b == bias_bins[k].first;
+      if (!p.depth_biased()) unreachable(b, "the build has no depth bias (the profile is unbiased)");
+      else if (!free(bias_keys[k]) && (negative ? bias_values[k] >= 0 : bias_values[k] <= 0))
+        unreachable(b, std::string(bias_keys[k]) + " is pinned");
+    }
+  }
+  for (size_t k = kTextureNearest; k <= kTextureLatencyMax; ++k)
+    if (!p.texture_unit) unreachable(k, "the build has no texture unit");
+  if (p.texture_unit && !free("texture_stall_percent") && p.texture_stall_percent == 0)
+    unreachable(kTextureStall, "texture_stall_percent is pinned to 0");
+  if (p.texture_unit && !free("texture_latency") && p.texture_latency != 1)
+    unreachable(kTextureLatency1, "texture_latency is pinned");
+  if (p.texture_unit && !free("texture_latency") && p.texture_latency != kMaxTextureLatency)
+    unreachable(kTextureLatencyMax, "texture_latency is pinned");
 
   const bool clear_pinned = !free("depth_clear");
   const uint32_t clear = p.depth_clear_value();
@@ -104,8 +165,8 @@ std::vector<CoverageBin> coverage_bins(const Profile& p, const std::set<std::str
 }
 
 CoverageCounts frame_coverage(const Profile& p, const std::vector<SnappedTriangle>& triangles, const RtlResult& model,
-                              int max_latency) {
-  CoverageCounts hits(kBinCount, 0);
+                              int max_latency, const TextureBinding& texture) {
+  CoverageCounts hits(bin_count(max_latency), 0);
   const TriangleSetup setup(p);
   const int64_t one = int64_t(1) << p.subpixel_bits;
   const int64_t x_lo = -p.width * one, x_hi = 2 * p.width * one, y_lo = -p.height * one, y_hi = 2 * p.height * one;
@@ -128,6 +189,12 @@ CoverageCounts frame_coverage(const Profile& p, const std::vector<SnappedTriangl
     }
     hits[kGuardBandDrawn] += outside;
     hits[kGuardBandLimit] += at_limit;
+    if (p.texture_unit && triangles[t].textured) {
+      // q is 2^P / w scaled by the smallest w: the largest q over the smallest is the w ratio.
+      int64_t q_min = triangles[t].v[0].q, q_max = q_min;
+      for (const SnappedVertex& v : triangles[t].v) q_min = std::min(q_min, v.q), q_max = std::max(q_max, v.q);
+      hits[kTextureWRatioLimit] += q_min > 0 && q_min <= (q_max >> 14);
+    }
     if (seen_drawn && record.walker_load == record.setup_done + 1 && record.walker_load > previous_walker_end)
       ++hits[kFifoEmpty];
     seen_drawn = true;
@@ -135,6 +202,10 @@ CoverageCounts frame_coverage(const Profile& p, const std::vector<SnappedTriangl
 
     // Ties: every candidate of the box, each edge's unbiased value E + bias exactly zero.
     const SetupResult s = setup.run(triangles[t]);
+    if (s.depth.step_x != 0 || s.depth.step_y != 0) {
+      hits[kBiasSlopeNegative] += p.depth_bias_slope < 0 ? record.fragments : 0;
+      hits[kBiasSlopePositive] += p.depth_bias_slope > 0 ? record.fragments : 0;
+    }
     for (int y = s.y0; y <= s.y1; ++y) {
       for (int x = s.x0; x <= s.x1; ++x) {
         int64_t biased[3];
@@ -165,7 +236,24 @@ CoverageCounts frame_coverage(const Profile& p, const std::vector<SnappedTriangl
   // In rastersim_top the z-buffer waits only on hazards (its memory never refuses a read).
   hits[p.traversal == Traversal::BBox ? kHazardBBox : kHazardSpan] += model.stats.zbuffer.stall;
   hits[p.setup_fifo_depth == 1 ? kFifoFullDepth1 : kFifoFullDeep] += model.stats.setup.stall;
+  if (p.memory_latency >= 1 && p.memory_latency <= max_latency)
+    hits[hazard_latency_bin(p.memory_latency)] += model.stats.zbuffer.stall;
   const int64_t fragments = int64_t(model.fragments.size());
+  if (p.depth_bias_constant < 0) hits[kBiasConstantNegative] += fragments;
+  if (p.depth_bias_constant > 0) hits[kBiasConstantPositive] += fragments;
+  if (p.texture_unit) {
+    hits[kTextureStall] += model.stats.texture.stall;
+    constexpr int32_t kOne = int32_t(1) << 20;  // u, v are s8.20
+    for (const Fragment& f : model.fragments) {
+      if (!f.textured) continue;
+      hits[kTextureLatency1] += p.texture_latency == 1;
+      hits[kTextureLatencyMax] += p.texture_latency == kMaxTextureLatency;
+      if (!texture.texture) continue;  // no texture: white texels, the filter and wrap unused
+      hits[texture.filter == TextureFilter::Nearest ? kTextureNearest : kTextureBilinear] += 1;
+      const bool outside = f.uv.u < 0 || f.uv.u >= kOne || f.uv.v < 0 || f.uv.v >= kOne;
+      if (outside) ++hits[texture.wrap == TextureWrap::Repeat ? kTextureRepeat : kTextureClamp];
+    }
+  }
   if (p.memory_latency == 1) hits[kLatencyMin] += fragments;
   if (p.memory_latency == max_latency) hits[kLatencyMax] += fragments;
   hits[depth_bin(p.depth_func, p.depth_write ? 0 : 1)] += fragments;

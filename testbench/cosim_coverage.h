@@ -30,10 +30,11 @@ using CoverageCounts = std::vector<int64_t>;
 std::vector<CoverageBin> coverage_bins(const Profile& profile, const std::set<std::string>& pinned,
                                        int max_memory_latency);
 
-// The hits of one frame: `frame_profile` is the frame's own profile (its runtime settings drawn or
-// directed), `model` the model's run of `triangles` (run_model).
+// The hits of one frame, in the order of coverage_bins() (at least as many: the hazard bins of
+// every latency up to `max_memory_latency`): `frame_profile` is the frame's own profile (its runtime settings drawn or
+// directed), `model` the model's run of `triangles` (run_model) with the frame's `texture`.
 CoverageCounts frame_coverage(const Profile& frame_profile, const std::vector<SnappedTriangle>& triangles,
-                              const RtlResult& model, int max_memory_latency);
+                              const RtlResult& model, int max_memory_latency, const TextureBinding& texture = {});
 
 // The reachable bins that no frame hit, by name.
 std::vector<std::string> coverage_holes(const std::vector<CoverageBin>& bins, const CoverageCounts& hits);

@@ -2,17 +2,20 @@
 // (scripts/rtl-mutants.sh builds it as Vmutant) and reports the first divergence, as `cosim` does:
 // with a replay and a waveform window around the divergence. Exit 0 when the bug is caught, 1 when
 // every frame still agreed with the model (the harness missed it).
-// Usage: mutant_check REPLAY_DIR MAX_MEMORY_LATENCY [--cosim-only]
-//   First the frames of `rastersim cosim --count 100` on the mutant's profile (the directed and
-//   coverage frames, then 100 random ones, seed 1), then, unless --cosim-only, directed and random
-//   frames at each traversal with memory latencies 2 and 4. On a catch it writes REPLAY_DIR/
-//   mutant_replay.{tri,json} and mutant_replay.{vcd,gtkw} (frame cycles around the divergence).
+// Usage: mutant_check REPLAY_DIR MAX_MEMORY_LATENCY [--cosim-only | --directed-only]
+//   First the frames of `rastersim cosim --count 100` on the mutant's profile, as the command line
+//   that selects its build runs them (`--texture-unit true`, `--depth-bias-slope 1`: the directed
+//   and coverage frames, then 100 random ones, seed 1), then, unless --cosim-only, directed and
+//   random frames at each traversal with memory latencies 2 and 4. With --directed-only, the
+//   directed and coverage frames alone. On a catch it writes REPLAY_DIR/mutant_replay.{tri,json}
+//   and mutant_replay.{vcd,gtkw} (frame cycles around the divergence).
 // Usage: mutant_check --replay PREFIX SEED
 //   Runs the frame of PREFIX.tri with the profile PREFIX.json and the power-on seed alone and prints
 //   its first divergence (the replay of a catch; exit 0 when it diverges).
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -95,7 +98,11 @@ int main(int argc, char** argv) {
   }
   const std::string replay_dir = argv[1];
   const int max_latency = std::atoi(argv[2]);
-  const bool cosim_only = argc > 3 && std::string(argv[3]) == "--cosim-only";
+  const std::string mode = argc > 3 ? argv[3] : "";
+  if (!mode.empty() && mode != "--cosim-only" && mode != "--directed-only") {
+    std::fprintf(stderr, "mutant_check: unknown mode %s\n", mode.c_str());
+    return 2;
+  }
   using Core = detail::CoreOf<Vmutant>;
   Profile p;
   p.width = int(Core::P_WIDTH);
@@ -105,16 +112,25 @@ int main(int argc, char** argv) {
   p.setup_interval = int(Core::P_SETUP_INTERVAL);
   p.texture_unit = int(Core::P_TEXTURE) != 0;
   p.depth_exponent_bits = int(Core::P_DEPTH_EXPONENT_BITS);
-  if (int(Core::P_DEPTH_BIAS) != 0) p.depth_bias_slope = 16;  // biased: random frames draw the bias's values
+  // The keys the command line that selects this build gives (its geometry and setup too, which
+  // are no runtime settings): `--depth-bias-slope 1` for the bias.
+  std::set<std::string> given = {"width", "height", "setup_interval"};
+  if (p.texture_unit) given.insert("texture_unit");
+  if (p.depth_exponent_bits != 0) given.insert("depth_exponent_bits");
+  if (int(Core::P_DEPTH_BIAS) != 0) {
+    p.depth_bias_slope = 16;
+    given.insert("depth_bias_slope");
+  }
 
   // As `cosim`: frame k's power-on seed is seed + k, seed 1.
-  const CosimPlan plan(p, {}, max_latency, 1, 16, true);
-  for (int64_t k = 0; k < plan.directed_count() + 100; ++k)
-    if (caught(plan.frame(k), 1 + uint64_t(k), replay_dir,
-               "the frames of cosim --count 100 (frame " + std::to_string(k) + ")"))
-      return 0;
-  if (cosim_only) {
-    std::printf("NOT caught by the frames of cosim --count 100\n");
+  const CosimPlan plan(p, pinned_settings(given, false), max_latency, 1, 16, true);
+  const bool directed_only = mode == "--directed-only";
+  const int64_t frames = plan.directed_count() + (directed_only ? 0 : 100);
+  const std::string suite = directed_only ? "the directed frames of cosim" : "the frames of cosim --count 100";
+  for (int64_t k = 0; k < frames; ++k)
+    if (caught(plan.frame(k), 1 + uint64_t(k), replay_dir, suite + " (frame " + std::to_string(k) + ")")) return 0;
+  if (!mode.empty()) {
+    std::printf("NOT caught by %s\n", suite.c_str());
     return 1;
   }
   for (Traversal traversal : {Traversal::BBox, Traversal::Span}) {

@@ -705,7 +705,8 @@ TEST(CliRtl, BiasedFloatingPointDepthThroughTheRtlEqualsTheModel) {
   const RunResult c = run_rastersim(dir, cosim);
   ASSERT_EQ(c.exit_code, 0) << c.out << c.err;
   EXPECT_TRUE(contains(c.out + c.err, "Ne=3")) << c.out << c.err;
-  EXPECT_TRUE(contains(c.out + c.err, "random frames draw its constant and slope factor")) << c.out << c.err;
+  EXPECT_TRUE(contains(c.out + c.err, "random frames draw its constant and slope factor, each of either sign"))
+      << c.out << c.err;
   std::vector<std::string> vectors = {"vectors", "--suite", "depth", "--out", "package"};
   vectors.insert(vectors.end(), depth.begin(), depth.end());
   const RunResult v = run_rastersim(dir, vectors);
@@ -744,7 +745,7 @@ TEST(CliRtl, CosimEndsWithPassedLine) {
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   const std::string last = r.out.substr(r.out.rfind('\n', r.out.size() - 2) + 1);
   EXPECT_TRUE(contains(last, " passed, 0 failed")) << r.out;
-  EXPECT_FALSE(contains(last, "0 passed")) << r.out;
+  EXPECT_NE(last.rfind("0 passed", 0), 0u) << r.out;  // frames ran (the count may end in 0)
 }
 
 // The testcase names of a JUnit file, in order.
@@ -850,7 +851,9 @@ TEST(CliRtl, CosimCoverageTableShowsEveryReachableBinHit) {
     }
   }
   EXPECT_GE(reachable, 40);
-  EXPECT_EQ(unreachable, 3);  // never passing, always failing, and memory back-pressure on chip
+  // Never passing, always failing, memory back-pressure on chip; the depth bias's four and the
+  // texture unit's eight, which this build lacks.
+  EXPECT_EQ(unreachable, 15);
   // Per frame: the frames of the run, each with the bins it hit; the totals are their sums.
   std::map<std::string, int64_t> summed;
   for (const auto& frame : j["frames"])
@@ -1293,19 +1296,19 @@ TEST(CliRtl, CosimExportedFrameReplaysExactly) {
   const std::vector<std::string> run = {"cosim", "--count", "5", "--width", "64", "--height", "48", "--seed", "40"};
   std::vector<std::string> args = run;
   fs::create_directory(dir.path("frames"));
-  args.insert(args.end(), {"--frame", "32", "--export", "frames"});
+  args.insert(args.end(), {"--frame", "38", "--export", "frames"});
   RunResult r = run_rastersim(dir, args);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_TRUE(contains(r.out, "--seed 72")) << r.out;  // frame k's power-on seed is seed + k
-  EXPECT_EQ(read_text(dir.path("frames/frame-32.txt")).rfind("frame 32: random seed 72", 0), 0u);
+  EXPECT_TRUE(contains(r.out, "--seed 78")) << r.out;  // frame k's power-on seed is seed + k
+  EXPECT_EQ(read_text(dir.path("frames/frame-38.txt")).rfind("frame 38: random seed 78", 0), 0u);
   args = run;
-  args.insert(args.end(), {"--frame", "32", "--wave", "cosim.vcd"});
+  args.insert(args.end(), {"--frame", "38", "--wave", "cosim.vcd"});
   r = run_rastersim(dir, args);
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_TRUE(contains(r.out, "1 passed, 0 failed")) << r.out;
   EXPECT_TRUE(contains(r.out, "(one frame: not gated)")) << r.out;
-  r = run_rastersim(dir, {"render", "frames/frame-32.tri", "--profile", "frames/frame-32.json", "--backend", "rtl",
-                          "--seed", "72", "--wave", "replay.vcd"});
+  r = run_rastersim(dir, {"render", "frames/frame-38.tri", "--profile", "frames/frame-38.json", "--backend", "rtl",
+                          "--seed", "78", "--wave", "replay.vcd"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Vcd original = read_vcd(dir.path("cosim.vcd")), replayed = read_vcd(dir.path("replay.vcd"));
   EXPECT_GT(original.frame_cycles.size(), 10u);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <set>
 
 #include "testbench/cosim_cases.h"
 #include "testbench/cosim_coverage.h"
@@ -160,22 +161,80 @@ TEST(CosimCoverage, PinnedSettingsMakeBinsUnreachable) {
   bins = coverage_bins(p, {"setup_fifo_depth"}, 8);
   EXPECT_FALSE(reachable(bins, "zbuffer_hazard_stall_bbox"));
   EXPECT_FALSE(reachable(bins, "zbuffer_hazard_stall_span"));
+  EXPECT_FALSE(reachable(bins, "zbuffer_hazard_stall_latency_3"));
 }
 
-// The frames of `cosim` at its default count reach every reachable bin on each built geometry.
-TEST(CosimCoverage, TheDefaultRunReachesEveryReachableBin) {
-  for (const Profile& p : {small_profile(), Profile{}}) {
-    const int max_latency = built_max_memory_latency(p);
+// The depth bias's and the texture unit's bins exist in the builds with them; a pinned value has
+// one sign; a pinned latency leaves its own hazard bin alone.
+TEST(CosimCoverage, BiasTextureAndLatencyBinsFollowTheBuild) {
+  Profile p = small_profile();
+  std::vector<CoverageBin> bins = coverage_bins(p, {}, 8);
+  for (const char* name : {"depth_bias_slope_negative", "depth_bias_constant_positive", "texture_bilinear",
+                           "texture_clamp_outside", "texture_w_ratio_limit", "texture_memory_stall"})
+    EXPECT_FALSE(reachable(bins, name)) << name;
+  for (int latency = 1; latency <= 8; ++latency)
+    EXPECT_TRUE(reachable(bins, "zbuffer_hazard_stall_latency_" + std::to_string(latency))) << latency;
+  p.memory_latency = 5;
+  bins = coverage_bins(p, {"memory_latency"}, 8);
+  EXPECT_TRUE(reachable(bins, "zbuffer_hazard_stall_latency_5"));
+  EXPECT_FALSE(reachable(bins, "zbuffer_hazard_stall_latency_4"));
+
+  p.depth_bias_slope = 16;
+  bins = coverage_bins(p, pinned_settings({"depth_bias_slope"}, false), 8);
+  for (const char* name : {"depth_bias_slope_negative", "depth_bias_slope_positive", "depth_bias_constant_negative",
+                           "depth_bias_constant_positive"})
+    EXPECT_TRUE(reachable(bins, name)) << name;
+  bins = coverage_bins(p, pinned_settings({"depth_bias_slope"}, true), 8);  // --fixed-settings
+  EXPECT_FALSE(reachable(bins, "depth_bias_slope_negative"));
+  EXPECT_TRUE(reachable(bins, "depth_bias_slope_positive"));
+  EXPECT_FALSE(reachable(bins, "depth_bias_constant_positive"));
+
+  p = small_profile();
+  p.texture_unit = true;
+  bins = coverage_bins(p, {}, 8);
+  for (const char* name : {"texture_nearest", "texture_bilinear", "texture_repeat_outside", "texture_clamp_outside",
+                           "texture_w_ratio_limit", "texture_memory_stall", "texture_latency_1", "texture_latency_max"})
+    EXPECT_TRUE(reachable(bins, name)) << name;
+  p.texture_stall_percent = 0;
+  p.texture_latency = 4;
+  bins = coverage_bins(p, {"texture_stall_percent", "texture_latency"}, 8);
+  EXPECT_FALSE(reachable(bins, "texture_memory_stall"));
+  EXPECT_FALSE(reachable(bins, "texture_latency_1"));
+}
+
+// The directed and coverage frames of `cosim` alone reach every reachable bin on each built
+// configuration, run as the command line that selects it runs it (`--depth-bias-slope 1` for the
+// bias, `--texture-unit true` for the texture unit).
+TEST(CosimCoverage, TheDirectedFramesReachEveryReachableBin) {
+  Profile biased = small_profile(), textured = small_profile(), serial = small_profile(), corner = small_profile(48);
+  biased.setup_interval = 64, biased.depth_exponent_bits = 3, biased.depth_bias_slope = 16;
+  textured.texture_unit = true;
+  serial.setup_interval = 0;
+  // Verilated on demand (latencies up to 64): samples at the pixels' corners, another fill rule.
+  corner.pixel_center = PixelCenter::Corner, corner.fill_rule = FillRule::BottomLeft;
+  const std::pair<Profile, std::set<std::string>> runs[] = {
+      {small_profile(), {"width", "height"}},
+      {Profile{}, {}},
+      {serial, {"width", "height", "setup_interval"}},
+      {biased, {"width", "height", "setup_interval", "depth_exponent_bits", "depth_bias_slope"}},
+      {textured, {"width", "height", "texture_unit"}},
+      {corner, {"width", "height", "pixel_center", "fill_rule"}}};
+  for (const auto& [p, given] : runs) {
+    const int max_latency = p.pixel_center == PixelCenter::Corner ? kMaxMemoryLatency : built_max_memory_latency(p);
     ASSERT_GT(max_latency, 0);
-    const std::vector<CoverageBin> bins = coverage_bins(p, {}, max_latency);
-    const CosimPlan plan(p, {}, max_latency, 1, 16, true);
+    const std::set<std::string> pinned = pinned_settings(given, false);
+    const std::vector<CoverageBin> bins = coverage_bins(p, pinned, max_latency);
+    const CosimPlan plan(p, pinned, max_latency, 1, 16, true);
     CoverageCounts total(bins.size(), 0);
-    for (int64_t k = 0; k < plan.directed_count() + 100; ++k) {
+    for (int64_t k = 0; k < plan.directed_count(); ++k) {
       const CosimCase c = plan.frame(k);
-      const CoverageCounts hits = frame_coverage(c.profile, c.triangles, run_model(c.profile, c.triangles), max_latency);
+      const CoverageCounts hits =
+          frame_coverage(c.profile, c.triangles, run_model(c.profile, c.triangles, c.texture), max_latency, c.texture);
       for (size_t b = 0; b < bins.size(); ++b) total[b] += hits[b];
     }
-    EXPECT_EQ(coverage_holes(bins, total), std::vector<std::string>{}) << p.width << "x" << p.height;
+    EXPECT_EQ(coverage_holes(bins, total), std::vector<std::string>{})
+        << p.width << "x" << p.height << ", setup_interval " << p.setup_interval << (p.depth_biased() ? ", biased" : "")
+        << (p.texture_unit ? ", textured" : "") << ", pixel_center " << to_string(p.pixel_center);
   }
 }
 

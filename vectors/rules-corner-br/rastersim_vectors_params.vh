@@ -61,10 +61,10 @@ localparam [0:0] CFG_TEXTURE_CLAMP = 1'd0;  // repeat
 
 // The vectors.
 localparam integer TRIANGLES = 146;  // commands.hex, triangles.hex
-localparam integer DRAWN = 111;  // setup.hex
-localparam integer FRAGMENTS = 7976;  // fragments.hex
+localparam integer DRAWN = 112;  // setup.hex
+localparam integer FRAGMENTS = 8183;  // fragments.hex
 localparam integer WORDS = 1536;  // depth.hex, color.hex: WIDTH * HEIGHT
-localparam integer CYCLES = 8202;  // the frame's cycles (frame.hex)
+localparam integer CYCLES = 8447;  // the frame's cycles (frame.hex)
 localparam integer TEXELS = 1;  // texture.hex (TEXTURE 1): 2^CFG_TEXTURE_LOG2_WIDTH x 2^CFG_TEXTURE_LOG2_HEIGHT
 
 // Word layouts: each field's slot (lowest bit, slot bits), own width and signedness.
