@@ -8,8 +8,8 @@
 #   lint      Verilator -Wall with the waivers
 #   sim       Icarus (a .scr command file with the defines and include folders, the user files
 #             copied where `copyto` puts them, vvp with the plusargs): the default package, another
-#             package chosen by RASTERSIM_VECTORS_PARAMS and package (both must pass), and the two
-#             naming different packages (must be refused)
+#             package chosen by RASTERSIM_VECTORS_PARAMS and package (both must pass), the two
+#             naming different packages (must fail) and a folder without .hex files (refused)
 #   synth     yosys synth_ice40 of rastersim_top at the target's parameters: the frame memory in block
 #             RAM and the logic within an HX8K's 7,680 LUTs
 #   selftest  Icarus: the board self-test must print "selftest: PASS"
@@ -199,8 +199,11 @@ if "sim" in wanted:
         fail("sim: vectors/depth-lequal chosen by RASTERSIM_VECTORS_PARAMS and package did not run:\n" + other_log[-2000:])
     mixed_log = icarus("sim", target_folder("sim.mixed"), chosen,
                        {"package": os.path.join(root, "vectors", "depth-equal")})
-    if verdict.search(mixed_log) or "not this package's vectors" not in mixed_log:
-        fail("sim: a parameter file and .hex files of different packages were not refused:\n" + mixed_log[-2000:])
+    if verdict.search(mixed_log) or not re.search(r"^\d+ passed, [1-9]\d* failed", mixed_log, re.M):
+        fail("sim: a parameter file and .hex files of different packages did not fail:\n" + mixed_log[-2000:])
+    missing_log = icarus("sim", target_folder("sim.missing"), chosen, {"package": os.path.join(work, "no-package")})
+    if "no-package/frame.hex: no such file" not in missing_log:
+        fail("sim: a package folder without .hex files was not refused:\n" + missing_log[-2000:])
     summary.append(f"sim (scene-default {verdict.search(log).group(0)}, depth-lequal "
                    f"{verdict.search(other_log).group(0)})")
 

@@ -646,10 +646,8 @@ module rastersim_vectors_tb;
     $readmemh({package_dir, "/depth.hex"}, depth, 0, WORDS - 1);
     $readmemh({package_dir, "/color.hex"}, color, 0, WORDS - 1);
     $readmemh({package_dir, "/frame.hex"}, frame, 0, 0);
-    // The .hex files must be the parameter file's package: the frame's cycles agree.
-    if (frame[0][FRAME_BITS-1 -: 32] !== CYCLES) begin
-      $display("error: %0s/frame.hex gives %0d frame cycles where the parameter file says %0d: not this package's vectors",
-               package_dir, frame[0][FRAME_BITS-1 -: 32], CYCLES);
+    if (^frame[0] === 1'bx) begin
+      $display("error: %0s/frame.hex: no such file, or not a package's", package_dir);
       $finish;
     end
     if (TEXTURE != 0) $readmemh({package_dir, "/texture.hex"}, texels, 0, TEXELS - 1);
