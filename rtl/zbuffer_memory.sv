@@ -7,6 +7,10 @@
 // the memory zeroes one row of both bitmaps per cycle (ceil(W H / 64) cycles), then raises
 // clear_done. A word whose bit is 0 reads as cfg_depth_clear (depth) or 0 (colour); writes set
 // the bit (per-bit write enable).
+// Every read of the four memories is a plain registered read (the word, or the bitmap row and the
+// bit's index); the written-bit select and the clear-value mux come after the register, so that
+// synthesis maps the memories to synchronous block RAM (SB_RAM40_4K on an iCE40), a copy per read
+// port.
 module zbuffer_memory #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
@@ -32,8 +36,8 @@ module zbuffer_memory #(
   input  wire [23:0]       wr_rgb,
   // Read-back port for the final memories (synchronous: data in the next cycle).
   input  wire [rs_ubits32(WIDTH * HEIGHT - 1)-1:0] readback_addr,
-  output reg  [Z_BITS-1:0] readback_depth,
-  output reg  [23:0]       readback_rgb
+  output wire [Z_BITS-1:0] readback_depth,
+  output wire [23:0]       readback_rgb
 );
   // Release 5.006 of the linter reports the width functions as hiding themselves here despite the
   // file waiver in lint_waivers.vlt (which covers every other module); the names are unique.
@@ -113,18 +117,34 @@ module zbuffer_memory #(
       end
     end
   end
-  // read_q (and its written bit) is the synchronous read of the request taken in the previous cycle.
+
+  // Read port: read_q and read_row_q are the synchronous reads of the request taken in the
+  // previous cycle; read_bit_q picks the word's written bit out of its row.
   reg [Z_BITS-1:0] read_q;
-  reg              read_written_q;
-  wire [Z_BITS-1:0] read_value = read_written_q ? read_q : depth_clear_q;
+  reg [63:0]       read_row_q;
+  reg [5:0]        read_bit_q;
+  wire [Z_BITS-1:0] read_value = read_row_q[read_bit_q] ? read_q : depth_clear_q;
   always @(posedge clk) begin
     if (rd_valid) begin
       read_q <= depth_mem[rd_addr];
-      read_written_q <= depth_written[row_of(rd_addr)][bit_of(rd_addr)];
+      read_row_q <= depth_written[row_of(rd_addr)];
+      read_bit_q <= bit_of(rd_addr);
     end
-    readback_depth <= depth_written[row_of(readback_addr)][bit_of(readback_addr)] ? depth_mem[readback_addr]
-                                                                                  : depth_clear_q;
-    readback_rgb <= color_written[row_of(readback_addr)][bit_of(readback_addr)] ? color_mem[readback_addr] : 24'd0;
+  end
+
+  // Read-back port: the same, data in the next cycle.
+  reg [Z_BITS-1:0] readback_depth_q;
+  reg [23:0]       readback_rgb_q;
+  reg [63:0]       readback_depth_row_q, readback_color_row_q;
+  reg [5:0]        readback_bit_q;
+  assign readback_depth = readback_depth_row_q[readback_bit_q] ? readback_depth_q : depth_clear_q;
+  assign readback_rgb = readback_color_row_q[readback_bit_q] ? readback_rgb_q : 24'd0;
+  always @(posedge clk) begin
+    readback_depth_q <= depth_mem[readback_addr];
+    readback_rgb_q <= color_mem[readback_addr];
+    readback_depth_row_q <= depth_written[row_of(readback_addr)];
+    readback_color_row_q <= color_written[row_of(readback_addr)];
+    readback_bit_q <= bit_of(readback_addr);
   end
 
   // Delay ring for latencies above 1: the entry of age k holds the word read k cycles ago (from

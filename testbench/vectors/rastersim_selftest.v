@@ -1,8 +1,8 @@
 `timescale 1ns / 1ps
 // Board self-test of a rastersim test-vector package (docs/vectors.md): the package's frame,
-// replayed on the FPGA without a host. rastersim_core renders the commands of commands.hex (a ROM,
-// $readmemh) into a frame memory in block RAM; after the frame the depth and colour memories are
-// read word by word into two CRC-32s, which are compared with the package's expected ones
+// replayed on the FPGA without a host. rastersim_top renders the commands of commands.hex (a ROM,
+// $readmemh) into its frame memory (zbuffer_memory, block RAM); after the frame the depth and
+// colour memories are read word by word through the read-back port into two CRC-32s, which are compared with the package's expected ones
 // (selftest.hex). Two pins give the verdict: done rises when the check is over, pass with it when
 // both CRCs match. The package's rastersim_vectors_params.vh (included inside the module) gives the
 // profile and the cfg_* values; selftest.hex holds the expected CRCs:
@@ -77,7 +77,7 @@ module rastersim_selftest (
     end
   endgenerate
 
-  // ---- The core and its frame memory in block RAM ------------------------------------------------
+  // ---- The pipeline with its frame memory (rastersim_top) ---------------------------------------
   wire trace_setup_decided, trace_setup_busy, trace_setup_stall, trace_setup_done;
   wire [2:0] trace_setup_status;
   wire trace_walker_load, trace_walker_busy, trace_walker_candidate, trace_walker_last;
@@ -87,27 +87,27 @@ module rastersim_selftest (
   wire [Y_BITS-1:0] trace_frag_y;
   wire [Z_BITS-1:0] trace_frag_z;
   wire [23:0] trace_frag_rgb;
-  wire mem_clear_done, mem_rd_valid, mem_rd_ready, mem_wr_depth_en, mem_wr_color_en;
-  wire [ADDR_BITS-1:0] mem_rd_addr, mem_wr_addr;
-  wire [Z_BITS-1:0] mem_rd_depth, mem_wr_depth;
-  wire [23:0] mem_wr_rgb;
   reg [ADDR_BITS-1:0] readback_addr;
   wire [Z_BITS-1:0] readback_depth;
   wire [23:0] readback_rgb;
-
-  wire trace_walker_frag_valid, trace_walker_frag_ready, trace_texture_busy, trace_texture_stall, tex_rd_valid;
-  wire [4*18-1:0] tex_rd_addr;
-  rastersim_core #(
+  wire trace_walker_frag_valid, trace_walker_frag_ready, trace_texture_busy, trace_texture_stall;
+  rastersim_top #(
     .WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
     .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MEMORY_LATENCY),
-    .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL),
+    .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL), .TEXTURE(0), .MAX_TEXTURE_LATENCY(1),
     .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS), .DEPTH_BIAS(DEPTH_BIAS), .PIXEL_CENTER(PIXEL_CENTER),
     .FILL_RULE(FILL_RULE), .DEPTH_ROUNDING(DEPTH_ROUNDING), .COLOR_ROUNDING(COLOR_ROUNDING)
-  ) core (
+  ) top (
     .clk(clk), .rst(rst),
-    .cfg_depth_func(CFG_DEPTH_FUNC), .cfg_depth_write(CFG_DEPTH_WRITE), .cfg_cull(CFG_CULL),
-    .cfg_front_face(CFG_FRONT_FACE), .cfg_traversal(CFG_TRAVERSAL), .cfg_shading(CFG_SHADING),
+    .cfg_depth_func(CFG_DEPTH_FUNC), .cfg_depth_write(CFG_DEPTH_WRITE), .cfg_depth_clear(CFG_DEPTH_CLEAR),
+    .cfg_cull(CFG_CULL), .cfg_front_face(CFG_FRONT_FACE), .cfg_traversal(CFG_TRAVERSAL), .cfg_shading(CFG_SHADING),
     .cfg_memory_latency(CFG_MEMORY_LATENCY), .cfg_setup_fifo_depth(CFG_SETUP_FIFO_DEPTH),
+    // Built without the texture unit: its ports tied off.
+    .cfg_texture_latency(7'd1), .cfg_texture_log2_width(4'd0), .cfg_texture_log2_height(4'd0),
+    .cfg_texture_bilinear(1'b0), .cfg_texture_clamp(1'b0),
+    .cfg_depth_bias_constant(CFG_DEPTH_BIAS_CONSTANT), .cfg_depth_bias_slope(CFG_DEPTH_BIAS_SLOPE),
+    .texture_load_en(1'b0), .texture_load_x(10'd0), .texture_load_y(10'd0), .texture_load_rgb(24'd0),
+    .texture_refuse(1'b0),
     .frame_ready(frame_ready),
     .cmd_valid(cmd_valid), .cmd_ready(cmd_ready),
     .cmd_x0(command_fields[64*0 +: COORD_BITS]), .cmd_y0(command_fields[64*1 +: COORD_BITS]),
@@ -116,35 +116,18 @@ module rastersim_selftest (
     .cmd_z0(command_fields[64*6 +: DEPTH_PLANE_BITS]), .cmd_z1(command_fields[64*7 +: DEPTH_PLANE_BITS]),
     .cmd_z2(command_fields[64*8 +: DEPTH_PLANE_BITS]),
     .cmd_rgb0(command_fields[64*9 +: 24]), .cmd_rgb1(command_fields[64*10 +: 24]), .cmd_rgb2(command_fields[64*11 +: 24]),
+    .cmd_textured(1'b0), .cmd_texture0(150'd0), .cmd_texture1(150'd0), .cmd_texture2(150'd0),
     .trace_setup_decided(trace_setup_decided), .trace_setup_status(trace_setup_status),
     .trace_setup_busy(trace_setup_busy), .trace_setup_stall(trace_setup_stall), .trace_setup_done(trace_setup_done),
     .trace_walker_load(trace_walker_load), .trace_walker_busy(trace_walker_busy),
     .trace_walker_candidate(trace_walker_candidate), .trace_walker_last(trace_walker_last),
+    .trace_walker_frag_valid(trace_walker_frag_valid), .trace_walker_frag_ready(trace_walker_frag_ready),
+    .trace_texture_busy(trace_texture_busy), .trace_texture_stall(trace_texture_stall),
     .trace_frag_valid(trace_frag_valid), .trace_frag_ready(trace_frag_ready),
     .trace_frag_x(trace_frag_x), .trace_frag_y(trace_frag_y), .trace_frag_z(trace_frag_z),
     .trace_frag_rgb(trace_frag_rgb), .trace_result_valid(trace_result_valid),
     .trace_result_pass(trace_result_pass), .trace_zbuffer_busy(trace_zbuffer_busy),
     .trace_zbuffer_stall(trace_zbuffer_stall),
-    // Built without the texture unit: its ports tied off.
-    .cfg_texture_latency(7'd1), .cfg_texture_log2_width(4'd0), .cfg_texture_log2_height(4'd0),
-    .cfg_texture_bilinear(1'b0), .cfg_texture_clamp(1'b0),
-    .cfg_depth_bias_constant(CFG_DEPTH_BIAS_CONSTANT), .cfg_depth_bias_slope(CFG_DEPTH_BIAS_SLOPE),
-    .cmd_textured(1'b0), .cmd_texture0(150'd0), .cmd_texture1(150'd0), .cmd_texture2(150'd0),
-    .trace_walker_frag_valid(trace_walker_frag_valid), .trace_walker_frag_ready(trace_walker_frag_ready),
-    .trace_texture_busy(trace_texture_busy), .trace_texture_stall(trace_texture_stall),
-    .tex_rd_valid(tex_rd_valid), .tex_rd_ready(1'b0), .tex_rd_addr(tex_rd_addr), .tex_rd_texels(96'd0),
-    .mem_clear_done(mem_clear_done), .mem_rd_valid(mem_rd_valid), .mem_rd_ready(mem_rd_ready),
-    .mem_rd_addr(mem_rd_addr), .mem_rd_depth(mem_rd_depth), .mem_wr_depth_en(mem_wr_depth_en),
-    .mem_wr_color_en(mem_wr_color_en), .mem_wr_addr(mem_wr_addr), .mem_wr_depth(mem_wr_depth),
-    .mem_wr_rgb(mem_wr_rgb));
-
-  rastersim_selftest_memory #(
-    .WORDS(WIDTH * HEIGHT), .Z_BITS(Z_BITS), .ADDR_BITS(ADDR_BITS), .LATENCY(MEMORY_LATENCY)
-  ) memory (
-    .clk(clk), .rst(rst), .depth_clear(CFG_DEPTH_CLEAR), .clear_done(mem_clear_done),
-    .rd_valid(mem_rd_valid), .rd_ready(mem_rd_ready), .rd_addr(mem_rd_addr), .rd_depth(mem_rd_depth),
-    .wr_depth_en(mem_wr_depth_en), .wr_color_en(mem_wr_color_en), .wr_addr(mem_wr_addr),
-    .wr_depth(mem_wr_depth), .wr_rgb(mem_wr_rgb),
     .readback_addr(readback_addr), .readback_depth(readback_depth), .readback_rgb(readback_rgb));
 
   // ---- The end of the frame (as the package testbench sees it) ------------------------------------
@@ -232,82 +215,6 @@ module rastersim_selftest (
         end
       endcase
     end
-  end
-endmodule
-
-// The self-test's frame memory: the words in block RAM behind the core's memory port (contract in
-// rtl/zbuffer.sv), read latency LATENCY, no back-pressure. After reset it writes the clear values
-// into every word, one per cycle (WORDS cycles), then raises clear_done: a board cannot clear
-// block RAM at once, and the frame starts (cycle 0) whenever the clear is over.
-module rastersim_selftest_memory #(
-  parameter integer WORDS = 192,
-  parameter integer Z_BITS = 24,
-  parameter integer ADDR_BITS = 8,
-  parameter integer LATENCY = 1
-) (
-  input  wire clk,
-  input  wire rst,
-  input  wire [Z_BITS-1:0] depth_clear,
-  output reg  clear_done,
-  input  wire rd_valid,
-  output wire rd_ready,
-  input  wire [ADDR_BITS-1:0] rd_addr,
-  output wire [Z_BITS-1:0] rd_depth,
-  input  wire wr_depth_en,
-  input  wire wr_color_en,
-  input  wire [ADDR_BITS-1:0] wr_addr,
-  input  wire [Z_BITS-1:0] wr_depth,
-  input  wire [23:0] wr_rgb,
-  input  wire [ADDR_BITS-1:0] readback_addr,
-  output reg  [Z_BITS-1:0] readback_depth,
-  output reg  [23:0] readback_rgb
-);
-  reg [Z_BITS-1:0] depth_mem [0:WORDS-1];
-  reg [23:0] color_mem [0:WORDS-1];
-  reg [ADDR_BITS-1:0] clear_addr;
-  // verilator lint_off WIDTH
-  localparam [ADDR_BITS-1:0] LAST_WORD = WORDS - 1;
-  // verilator lint_on WIDTH
-  assign rd_ready = clear_done;
-
-  // One write port: the clear sweep, then the z-buffer's writes.
-  wire clearing = !rst && !clear_done;
-  wire [ADDR_BITS-1:0] write_addr = clearing ? clear_addr : wr_addr;
-  always @(posedge clk) begin
-    if (clearing || (clear_done && wr_depth_en)) depth_mem[write_addr] <= clearing ? depth_clear : wr_depth;
-    if (clearing || (clear_done && wr_color_en)) color_mem[write_addr] <= clearing ? 24'd0 : wr_rgb;
-  end
-  always @(posedge clk) begin
-    if (rst) begin
-      clear_done <= 1'b0;
-      clear_addr <= {ADDR_BITS{1'b0}};
-    end else if (!clear_done) begin
-      clear_addr <= clear_addr + 1'b1;
-      if (clear_addr == LAST_WORD) clear_done <= 1'b1;
-    end
-  end
-
-  // Read port: a synchronous read at the end of the request's cycle, then LATENCY - 1 registers.
-  reg [Z_BITS-1:0] read_q;
-  always @(posedge clk) if (rd_valid) read_q <= depth_mem[rd_addr];
-  generate
-    if (LATENCY > 1) begin : delay
-      reg [Z_BITS-1:0] stage_q [1:LATENCY-1];
-      integer k;
-      always @(posedge clk) begin
-        stage_q[1] <= read_q;
-        for (k = 2; k < LATENCY; k = k + 1) stage_q[k] <= stage_q[k - 1];
-      end
-      assign rd_depth = stage_q[LATENCY-1];
-    end else begin : direct
-      assign rd_depth = read_q;
-    end
-  endgenerate
-
-  // Read-back port (after the frame): synchronous, data in the next cycle.
-  always @(posedge clk) begin
-    readback_depth <= depth_mem[readback_addr];
-    readback_rgb <= color_mem[readback_addr];
   end
 endmodule
 

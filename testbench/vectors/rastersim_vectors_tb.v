@@ -16,6 +16,7 @@
 // "N passed, M failed".
 //
 // Plusargs:
+//   +package=DIR      the folder of the .hex files (default: the folder the simulation runs in)
 //   +functional       compare functionally, for a port with another micro-architecture: per triangle
 //                     the decision, the setup record and the set of fragments (any order, any cycle),
 //                     the final memories and the decision and fragment counters; cycles are
@@ -23,6 +24,7 @@
 //                     triangle's counts from its fragments, a memory word or a later depth-test
 //                     result at a pixel where a fragment differed, the frame's counters) is counted
 //                     apart, not as another failure. Default: cycle-exact, every field required.
+//                     +functional=0 is the default (FuseSoC passes a bool plusarg as =1 or =0).
 //   +max_shown=N      print the first N mismatches (default 20, 0: the summary alone, at most 1000)
 //   +dump=FILE        write a VCD of the run (reset and memory clear included)
 //   +dump_from=C      with +dump: start the VCD at frame cycle C (its rising edge and later)
@@ -30,13 +32,20 @@
 //   +cycle_bound=N    abandon the frame after N cycles (default 4 CYCLES + 1000)
 //
 // Compile-time options:
+//   RASTERSIM_VECTORS_PARAMS  the package's parameter file as a string (default
+//                       "rastersim_vectors_params.vh" on the include path); with +package, any
+//                       package runs from one build folder (rastersim.core's sim target)
 //   RS_NO_SETUP_RECORD  a port without the setup unit's record wires (RS_RECORD_PATH.rec_*):
 //                       setup.hex is skipped ("N passed, M failed, K skipped")
 //   RS_RECORD_PATH      where the record wires are (default dut.core; dut with RS_EXTERNAL_MEMORY)
 //   RS_EXTERNAL_MEMORY  the package tests rastersim_core with rastersim_memory_model.v on its memory
 //                       port instead of rastersim_top (the parameter file defines it for such packages)
 module rastersim_vectors_tb;
+`ifdef RASTERSIM_VECTORS_PARAMS
+`include `RASTERSIM_VECTORS_PARAMS
+`else
 `include "rastersim_vectors_params.vh"
+`endif
 `ifndef RS_RECORD_PATH
 `ifdef RS_EXTERNAL_MEMORY
 `define RS_RECORD_PATH dut
@@ -331,6 +340,8 @@ module rastersim_vectors_tb;
   reg [8*256:1] dump_file;
   integer dump_from, dump_to;  // +dump_from, +dump_to: frame cycles (-1, NO_CYCLE: unbounded)
   reg dumping;
+  reg [8*1024:1] package_dir;  // +package
+  integer functional_value;    // +functional=N
 
   // Vertex v's cmd_texture word of command n: {Q, T, S}, 50 bits each.
   function [149:0] texture_word;
@@ -663,6 +674,8 @@ module rastersim_vectors_tb;
       $finish;
     end
     functional = $test$plusargs("functional") != 0;
+    if ($value$plusargs("functional=%d", functional_value)) functional = functional_value != 0;
+    if (!$value$plusargs("package=%s", package_dir)) package_dir = ".";
     dump_from = -1;
     dump_to = NO_CYCLE;
     if ($value$plusargs("dump_from=%d", dump_from) && dump_from < 0) begin
@@ -681,14 +694,18 @@ module rastersim_vectors_tb;
       $display("error: +dump_from and +dump_to need +dump=FILE");
       $finish;
     end
-    $readmemh("commands.hex", commands, 0, TRIANGLE_SLOTS - 1);
-    $readmemh("triangles.hex", triangles, 0, TRIANGLE_SLOTS - 1);
-    $readmemh("setup.hex", setups, 0, DRAWN_SLOTS - 1);
-    $readmemh("fragments.hex", fragments, 0, FRAGMENT_SLOTS - 1);
-    $readmemh("depth.hex", depth, 0, WORDS - 1);
-    $readmemh("color.hex", color, 0, WORDS - 1);
-    $readmemh("frame.hex", frame, 0, 0);
-    if (TEXTURE != 0) $readmemh("texture.hex", texels, 0, TEXELS - 1);
+    $readmemh({package_dir, "/commands.hex"}, commands, 0, TRIANGLE_SLOTS - 1);
+    $readmemh({package_dir, "/triangles.hex"}, triangles, 0, TRIANGLE_SLOTS - 1);
+    $readmemh({package_dir, "/setup.hex"}, setups, 0, DRAWN_SLOTS - 1);
+    $readmemh({package_dir, "/fragments.hex"}, fragments, 0, FRAGMENT_SLOTS - 1);
+    $readmemh({package_dir, "/depth.hex"}, depth, 0, WORDS - 1);
+    $readmemh({package_dir, "/color.hex"}, color, 0, WORDS - 1);
+    $readmemh({package_dir, "/frame.hex"}, frame, 0, 0);
+    if (^frame[0] === 1'bx) begin
+      $display("error: %0s/frame.hex: no such file, or not a package's", package_dir);
+      $finish;
+    end
+    if (TEXTURE != 0) $readmemh({package_dir, "/texture.hex"}, texels, 0, TEXELS - 1);
     for (t = 0; t < TRIANGLE_SLOTS; t = t + 1) begin
       seen_status[t] = -1; seen_accept[t] = -1; seen_done[t] = -1; seen_load[t] = -1; seen_end[t] = -1;
       seen_fragments_of[t] = 0; seen_pass_of[t] = 0; seen_last_write[t] = -1;

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Runs this package's testbench (rastersim_vectors_tb.v with rastersim_vectors_params.vh) with Verilator 5 (verilator --binary).
+# Exit 0 when the last line is "N passed, 0 failed"; 1 when a vector failed; 2 when it cannot build
+# or a file differs from manifest.json.
+# RTL_DIR: the pipeline's Verilog (default ../../rtl/ beside this script); every .sv and .v
+# file in it is compiled, with it as the include folder. SIM_FLAGS: more compiler arguments
+# (e.g. -DRS_NO_SETUP_RECORD for a port without the setup record wires). Arguments go to the
+# testbench: +functional (compare functionally, not cycle for cycle), +max_shown=N (mismatches
+# printed, default 20), +dump=FILE (a VCD of the run; FILE relative to this folder, where the
+# testbench runs), +cycle_bound=N.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+rtl="${RTL_DIR:-$here/../../rtl}"
+shopt -s nullglob
+sources=("$rtl"/*.sv "$rtl"/*.v)
+if [ ${#sources[@]} -eq 0 ]; then
+  echo "$0: no .sv or .v files in $rtl" >&2
+  exit 2
+fi
+# Every file as the manifest lists it (size and CRC-32): a changed file fails here, not as
+# mismatches that its expected outputs do not explain.
+if command -v python3 > /dev/null; then
+  python3 "$here/check_manifest.py" || exit 2
+else
+  echo "$0: python3 not found: the files are not checked against manifest.json" >&2
+fi
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+testbench=("$here/../../testbench/vectors/rastersim_vectors_tb.v" "$here/../../testbench/vectors/rastersim_memory_model.v")
+# shellcheck disable=SC2086  # SIM_FLAGS is a list of words
+if ! verilator --binary --trace -j "$(nproc)" -Wno-fatal -Wno-lint -Wno-style --top-module rastersim_vectors_tb \
+    -I"$here" -I"$rtl" ${SIM_FLAGS:-} --Mdir "$work/obj" -o tb "${testbench[@]}" "${sources[@]}" \
+    > "$work/build.log" 2>&1; then
+  cat "$work/build.log" >&2
+  exit 2
+fi
+cd "$here"
+# Verilator reports $finish on a line of its own; the summary stays the last line.
+# shellcheck disable=SC2016  # a literal $finish
+"$work/obj/tb" "$@" | grep -v '^- .*: Verilog \$finish$' | tee "$work/log"
+if grep -Eq '^[0-9]+ passed, 0 failed' "$work/log"; then exit 0; fi
+exit 1
