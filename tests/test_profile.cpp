@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -146,7 +147,8 @@ TEST(ProfileSetKey, EveryKeyParsesAndBadTextIsNamed) {
 
 // Writes `text` to a fresh file in the test's temporary folder and returns its path.
 std::string write_file(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "rastersim_profile_" + std::to_string(getpid()) + "_" + name;
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "rastersim_profile_").string() + std::to_string(getpid()) + "_" + name;
   std::ofstream(path, std::ios::binary) << text;
   return path;
 }
@@ -198,7 +200,7 @@ TEST(ProfileFile, LoadsEveryKey) {
 }
 
 TEST(ProfileFile, ErrorsNameFileLineAndProblem) {
-  const std::string dir = ::testing::TempDir() + "rastersim_profile_" + std::to_string(getpid()) + "_";
+  const std::string dir = (std::filesystem::temp_directory_path() / "rastersim_profile_").string() + std::to_string(getpid()) + "_";
   const std::string deep_json =
       "{\n  \"width\": 64,\n  \"deep\": " + std::string(100000, '[') + std::string(100000, ']') + "\n}\n";
   struct Bad {
