@@ -6,6 +6,10 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -15,11 +19,53 @@
 
 namespace {
 
-void set_error(char* error, size_t error_size, const std::string& message) {
+// One line: OpenImageIO's messages can hold several, each a further detail of the first.
+void set_error(char* error, size_t error_size, std::string message) {
+  while (!message.empty() && message.back() == '\n') message.pop_back();
+  for (size_t at; (at = message.find('\n')) != std::string::npos;) message.replace(at, 1, "; ");
   if (error_size == 0) return;
   std::strncpy(error, message.c_str(), error_size - 1);
   error[error_size - 1] = '\0';
 }
+
+// OpenImageIO's PNG reader leaves libpng's default error handler in place, which prints
+// "libpng error: ..." on stderr before OpenImageIO reports the same error to us. While a file is
+// read, stderr goes to an anonymous in-memory file; what was printed there is then passed on to
+// stderr without libpng's lines.
+class LibpngLinesDropped {
+ public:
+  LibpngLinesDropped() {
+    std::fflush(stderr);
+    const int memory = memfd_create("rastersim-image-stderr", MFD_CLOEXEC);
+    if (memory < 0) return;
+    saved_ = dup(2);
+    if (saved_ < 0 || dup2(memory, 2) < 0) {
+      if (saved_ >= 0) close(saved_);
+      saved_ = -1;
+      close(memory);
+      return;
+    }
+    capture_ = fdopen(memory, "r");
+  }
+  ~LibpngLinesDropped() {
+    if (saved_ < 0) return;
+    std::fflush(stderr);
+    dup2(saved_, 2);
+    close(saved_);
+    if (!capture_) return;
+    std::rewind(capture_);
+    char line[1024];
+    while (std::fgets(line, sizeof line, capture_))
+      if (std::strncmp(line, "libpng ", 7) != 0) std::fputs(line, stderr);
+    std::fclose(capture_);
+  }
+  LibpngLinesDropped(const LibpngLinesDropped&) = delete;
+  LibpngLinesDropped& operator=(const LibpngLinesDropped&) = delete;
+
+ private:
+  int saved_ = -1;
+  FILE* capture_ = nullptr;
+};
 
 }  // namespace
 
@@ -60,6 +106,7 @@ extern "C" RASTERSIM_IMAGES_API int rastersim_image_decode_rgb8(const char* path
                                                                 size_t error_size) {
   *pixels = nullptr;
   const std::string shown(path);
+  const LibpngLinesDropped quiet;
   // The colour as stored: a PNG's colour is not multiplied by its alpha on the way in.
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);

@@ -77,6 +77,24 @@ TEST(CliMessages, ACameraTooFarOutIsSaidToBe) {
   EXPECT_FALSE(contains(r.err, "same point")) << r.err;
 }
 
+// A texture PNG cut short: one message, from rastersim, naming the file; no "libpng error:" line
+// printed by the PNG library before it (OpenImageIO's reader leaves libpng's handler in place).
+TEST(CliMessages, ACutPngTextureGivesOneMessageAndNoLibraryLines) {
+  ScratchDir dir;
+  RunResult r = run_rastersim(dir, {"render", "--scene", "fan", "--width", "16", "--height", "16", "-o", "whole.png"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string whole = read_text(dir.path("whole.png"));
+  ASSERT_GT(whole.size(), 100u);
+  dir.write("cut.png", whole.substr(0, 100));  // the header and part of the first IDAT chunk
+  r = run_rastersim(dir, {"render", "--scene", "floor", "--texture-unit", "true", "--texture", "cut.png", "--width",
+                          "32", "--height", "24", "-o", "x.png"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("rastersim: cut.png: ", 0), 0u) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+  EXPECT_FALSE(contains(r.err, "libpng")) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path("x.png")));
+}
+
 // bench's random-list options with an INPUT would be ignored: they are refused.
 TEST(CliInputs, BenchRefusesRandomListOptionsWithAnInput) {
   ScratchDir dir;
