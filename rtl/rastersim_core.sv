@@ -41,7 +41,7 @@ module rastersim_core #(
   input  wire       cfg_shading,           // RS_SHADING_*
   input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,  // 1 .. MAX_MEMORY_LATENCY
   input  wire [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] cfg_setup_fifo_depth,  // record credits, 1 .. MAX
-  input  wire [6:0] cfg_texture_latency,   // Lt, 1 .. MAX_TEXTURE_LATENCY (TEXTURE builds)
+  input  wire [RS_TEXTURE_LATENCY_BITS-1:0] cfg_texture_latency,   // Lt, 1 .. MAX_TEXTURE_LATENCY (TEXTURE builds)
   input  wire [3:0] cfg_texture_log2_width,  // the texture's size, 0..10
   input  wire [3:0] cfg_texture_log2_height,
   input  wire       cfg_texture_bilinear,  // 0: nearest
@@ -58,7 +58,7 @@ module rastersim_core #(
   // Texture coordinates (TEXTURE builds): S at [0 +: 50], T at [50 +: 50], Q at [100 +: 50] (S, T
   // s8.41, Q u1.41: RS_TEXTURE_VERTEX_BITS), used when cmd_textured.
   input  wire cmd_textured,
-  input  wire [149:0] cmd_texture0, cmd_texture1, cmd_texture2,
+  input  wire [RS_TEXTURE_COMMAND_BITS-1:0] cmd_texture0, cmd_texture1, cmd_texture2,
   // Trace: setup decision (FRONT cycle) and activity.
   output wire trace_setup_decided,
   output wire [2:0] trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen, 4 no centre
@@ -100,8 +100,8 @@ module rastersim_core #(
   // Texture memory port of the texture unit (rtl/texture_unit.sv; tied off without TEXTURE).
   output wire tex_rd_valid,
   input  wire tex_rd_ready,
-  output wire [4*18-1:0] tex_rd_addr,
-  input  wire [4*24-1:0] tex_rd_texels
+  output wire [RS_TEXTURE_BANKS*RS_TEXEL_WORD_BITS-1:0] tex_rd_addr,
+  input  wire [RS_TEXTURE_BANKS*RS_TEXEL_BITS-1:0] tex_rd_texels
 );
 `include "rastersim_widths.vh"
   `RS_REQUIRE(illegal_setup_fifo_depth, MAX_SETUP_FIFO_DEPTH >= 1, "rastersim_core: MAX_SETUP_FIFO_DEPTH must be at least 1")
@@ -179,7 +179,7 @@ module rastersim_core #(
   reg [1:0] cull_q;
   reg [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] memory_latency_q;
   reg [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] setup_fifo_depth_q;
-  reg [6:0] texture_latency_q;
+  reg [RS_TEXTURE_LATENCY_BITS-1:0] texture_latency_q;
   reg [3:0] texture_log2_width_q, texture_log2_height_q;
   reg texture_bilinear_q, texture_clamp_q;
   reg [32:0] depth_bias_constant_q;

@@ -34,7 +34,7 @@ module rastersim_top #(
   input  wire       cfg_shading,           // RS_SHADING_*
   input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,  // 1 .. MAX_MEMORY_LATENCY
   input  wire [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] cfg_setup_fifo_depth,  // record credits, 1 .. MAX
-  input  wire [6:0] cfg_texture_latency,   // as rastersim_core's (TEXTURE builds)
+  input  wire [RS_TEXTURE_LATENCY_BITS-1:0] cfg_texture_latency,   // as rastersim_core's (TEXTURE builds)
   input  wire [3:0] cfg_texture_log2_width,
   input  wire [3:0] cfg_texture_log2_height,
   input  wire       cfg_texture_bilinear,
@@ -57,7 +57,7 @@ module rastersim_top #(
   input  wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)-1:0] cmd_z0, cmd_z1, cmd_z2,
   input  wire [23:0] cmd_rgb0, cmd_rgb1, cmd_rgb2,
   input  wire cmd_textured,
-  input  wire [149:0] cmd_texture0, cmd_texture1, cmd_texture2,  // S, T, Q as rastersim_core's
+  input  wire [RS_TEXTURE_COMMAND_BITS-1:0] cmd_texture0, cmd_texture1, cmd_texture2,  // S, T, Q as rastersim_core's
   // Trace: setup decision (FRONT cycle) and activity.
   output wire trace_setup_decided,
   output wire [2:0] trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen, 4 no centre
@@ -95,8 +95,8 @@ module rastersim_top #(
   wire [Z_BITS-1:0] mem_rd_depth, mem_wr_depth;
   wire [23:0] mem_wr_rgb;
   wire tex_rd_valid, tex_rd_ready;
-  wire [4*18-1:0] tex_rd_addr;
-  wire [4*24-1:0] tex_rd_texels;
+  wire [RS_TEXTURE_BANKS*RS_TEXEL_WORD_BITS-1:0] tex_rd_addr;
+  wire [RS_TEXTURE_BANKS*RS_TEXEL_BITS-1:0] tex_rd_texels;
 
   rastersim_core #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
                    .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY),

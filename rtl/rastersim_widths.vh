@@ -165,6 +165,14 @@ endfunction
 // [(3 k + c) RS_TEXTURE_VERTEX_BITS +: RS_TEXTURE_VERTEX_BITS].
 /* verilator lint_off UNUSEDPARAM */
 localparam integer RS_TEXTURE_VERTEX_BITS = RS_TEXTURE_FRACTION_BITS + 9;
+// The texture ports: a vertex's S, T, Q on cmd_texture0..2; the texture memory's read port, a word
+// address and a texel per bank (rtl/texture_memory.sv); cfg_texture_latency holds 1 .. 64, the
+// largest MAX_TEXTURE_LATENCY, so that a core's ports do not change with the bound.
+localparam integer RS_TEXTURE_COMMAND_BITS = 3 * RS_TEXTURE_VERTEX_BITS;
+localparam integer RS_TEXTURE_BANKS = 4;      // bank 2 (j mod 2) + (i mod 2) holds texel (i, j)
+localparam integer RS_TEXEL_WORD_BITS = 18;   // {row >> 1, column >> 1} of a side of up to 1024 texels
+localparam integer RS_TEXEL_BITS = 24;        // {r, g, b}
+localparam integer RS_TEXTURE_LATENCY_BITS = 7;
 /* verilator lint_on UNUSEDPARAM */
 
 // The texture record beside the setup record (builds with TEXTURE = 1; model/triangle_setup.h

@@ -21,7 +21,7 @@ module texture_unit #(
   input  wire clk,
   input  wire rst,
   // Static configuration (registers of the core, held for the frame).
-  input  wire [6:0] cfg_texture_latency,  // Lt, 1 .. MAX_TEXTURE_LATENCY
+  input  wire [RS_TEXTURE_LATENCY_BITS-1:0] cfg_texture_latency,  // Lt, 1 .. MAX_TEXTURE_LATENCY
   input  wire [3:0] cfg_log2_width,       // texture size, 0..10
   input  wire [3:0] cfg_log2_height,
   input  wire cfg_bilinear,               // 0: nearest
@@ -48,8 +48,8 @@ module texture_unit #(
   // Texture memory read port.
   output wire tex_rd_valid,
   input  wire tex_rd_ready,
-  output wire [4*18-1:0] tex_rd_addr,
-  input  wire [4*24-1:0] tex_rd_texels,
+  output wire [RS_TEXTURE_BANKS*RS_TEXEL_WORD_BITS-1:0] tex_rd_addr,
+  input  wire [RS_TEXTURE_BANKS*RS_TEXEL_BITS-1:0] tex_rd_texels,
   output wire busy,   // holds a fragment, or takes one
   output wire stall   // a textured read waits for the memory
 );

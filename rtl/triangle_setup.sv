@@ -38,7 +38,7 @@ module triangle_setup #(
   // c (0 S, 1 T, 2 Q) at [(3k + c) 50 +: 50], S and T s8.41, Q u1.41 (50 = RS_TEXTURE_VERTEX_BITS).
   /* verilator lint_off UNUSEDSIGNAL */
   input  wire in_textured,
-  input  wire [9*50-1:0] in_texture,
+  input  wire [3*RS_TEXTURE_COMMAND_BITS-1:0] in_texture,
   /* verilator lint_on UNUSEDSIGNAL */
   // Decision, valid in the FRONT cycle: status 0 drawn, 1 degenerate, 2 culled, 3 offscreen,
   // 4 no centre (RS_STATUS_*).
