@@ -117,7 +117,8 @@ class Pipeline {
   // in which each run of n covered candidates of a row is first offered to
   // runs.run(zbuffer, address, n, adders, cycle, record); it takes them at once, in cycles `cycle`
   // on, stepping the adders past them (true), or leaves them to be taken one at a time (false).
-  // The fragments go from the walker to the z-buffer (no texture unit).
+  // The fragments go from the walker to the z-buffer (no texture unit); the span walk enters each
+  // row with ZAdder::enter_row_at (the same outputs).
   template <class Runs>
   int64_t walk_offering_runs(const SetupResult& s, int64_t load_cycle, TriangleRecord& record, Runs& runs) {
     RunSink<Runs> sink{*this, record, runs};
@@ -132,6 +133,8 @@ class Pipeline {
   int64_t walk_stepwise(const SetupResult& s, int64_t load_cycle, TriangleRecord& record);
   template <class Runs>
   struct RunSink {
+    // Rows entered with ZAdder::enter_row_at: the same outputs, fewer register updates per row.
+    static constexpr bool kEntersRowsAtOffset = true;
     Pipeline& p;
     TriangleRecord& record;
     Runs& runs;

@@ -35,6 +35,15 @@ template <class Sink>
 struct TakesRuns<Sink, std::void_t<decltype(std::declval<Sink&>().run(0, 0, int64_t(0), std::declval<ZAdder&>(),
                                                                       int64_t(0)))>> : std::true_type {};
 
+// A sink may also declare `static constexpr bool kEntersRowsAtOffset = true`: the span walk then
+// enters each row at its offset t with ZAdder::enter_row_at (a multiplier; the same outputs as the
+// left-edge slots, which it leaves unstepped) instead of as the hardware does. For the fast walks
+// (fast/), whose fragments read only the registers' outputs.
+template <class Sink, class = void>
+struct EntersRowsAtOffset : std::false_type {};
+template <class Sink>
+struct EntersRowsAtOffset<Sink, std::enable_if_t<Sink::kEntersRowsAtOffset>> : std::true_type {};
+
 class ScanlineWalker {
  public:
   ScanlineWalker(const Profile& profile, const Widths& widths)
@@ -142,7 +151,8 @@ class ScanlineWalker {
         }
       }
       if (lo <= hi) {
-        adders.enter_span_row(lo_slot);
+        if constexpr (EntersRowsAtOffset<Sink>::value) adders.enter_row_at(lo);
+        else adders.enter_span_row(lo_slot);
         cycle = emit_run(int(s.x0 + lo), y, hi - lo + 1, adders, cycle, sink, counters);
         counters.candidates += hi - lo + 1;
         counters.busy += hi - lo + 1;
@@ -161,7 +171,7 @@ class ScanlineWalker {
           if (e.slot >= 0) carry[e.slot] = true;
         }
       }
-      adders.step_left_edges(carry);
+      if constexpr (!EntersRowsAtOffset<Sink>::value) adders.step_left_edges(carry);
       adders.next_row();
     }
     counters.rows += s.y1 - s.y0 + 1;

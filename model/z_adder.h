@@ -174,6 +174,14 @@ class ZAdder {
     for (int k = 0; k < kPlanes; ++k) value_[k] = slot < 0 ? row_[k] : along_[slot][k];
     if (textured_) texture_.enter_span_row(slot);
   }
+  // The registers at offset t >= 0 from x0 on the current row, with a multiplier: equal modulo
+  // 2^reg_bits to what enter_span_row() gives at the span start t (a left-edge slot holds
+  // row + t step_x there), so every output is the same. For the fast walks (fast/), where a
+  // multiply per row costs less than stepping the slots; the hardware has no multiplier here.
+  void enter_row_at(int64_t t) {
+    for (int k = 0; k < kPlanes; ++k) value_[k] = row_[k] + uint64_t(t) * step_x_[k];
+    if (textured_) texture_.enter_row_at(t);
+  }
   // Each left-edge slot to the next row: its edge's quotient moves by span_step_quot, and by one
   // more on the DDA's carry, which moves the span start one pixel left of where `step` took it.
   // A mask, not a branch per plane: a slot's four registers are then written as one vector, which
@@ -245,6 +253,9 @@ class ZAdder {
     }
     void enter_span_row(int slot) {
       for (int k = 0; k < kCount; ++k) value[k] = slot < 0 ? row[k] : along[slot][k];
+    }
+    void enter_row_at(int64_t t) {
+      for (int k = 0; k < kCount; ++k) value[k] = row[k] + uint64_t(t) * per_x[k];
     }
     void step_left_edges(const bool carry[kLeftEdgeSlots]) {
       for (int j = 0; j < kLeftEdgeSlots; ++j)
