@@ -78,9 +78,10 @@ inline void check_signed(i128 v, int bits, const char* what) {
 
 // Reduces v modulo 2^bits into the signed range: what a two's-complement register of `bits` holds.
 // Used only for registers the hardware deliberately lets wrap (the plane registers).
+// Only v's low 64 bits reach the result (a register of 64 bits or fewer), so the shifts are 64-bit.
 inline int64_t wrap_signed(i128 v, int bits) {
-  const unsigned shift = 128u - unsigned(bits);
-  return int64_t((i128)((unsigned __int128)v << shift) >> shift);
+  const unsigned shift = bits >= 64 ? 0u : 64u - unsigned(bits);
+  return int64_t(uint64_t(v) << shift) >> shift;
 }
 
 // Floor division (rounds toward minus infinity) with a positive divisor, exactly as the setup
