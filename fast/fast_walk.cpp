@@ -41,11 +41,12 @@ struct Runs {
   }
 };
 
-// The walk with a run kernel called per run.
+// The walk with a run kernel called per run; the rest of the walk inlined (flatten).
 class KernelWalk final : public WalkRunner {
  public:
   explicit KernelWalk(const RunKernelVersion& kernel) : kernel_(kernel) {}
-  int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record) const override {
+  __attribute__((flatten)) int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle,
+                                        TriangleRecord& record) const override {
     Runs<false> runs{kernel_};
     return p.walk_offering_runs(s, load_cycle, record, runs);
   }
