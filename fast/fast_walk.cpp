@@ -9,6 +9,24 @@
 namespace rastersim {
 namespace {
 
+// Fragment i's outputs of a run from the registers at its start (ZAdder::Run: the plain depth
+// output, which fast_walk_runner requires), for the short runs taken one fragment at a time. A
+// local value, kept in machine registers: a copy of the whole ZAdder (texture and left-edge
+// registers too) cost more than the short run itself.
+struct RunOutputs {
+  ZAdder::Run planes;
+  uint32_t depth_at(int64_t i) const {
+    return uint32_t(planes.depth_format.output(planes.value[0] + uint64_t(i) * planes.step_x[0]));
+  }
+  Rgb color_at(int64_t i) const {
+    if (!planes.gouraud) return planes.flat;
+    auto channel = [&](int k) {
+      return uint8_t(planes.color_format.output(planes.value[k] + uint64_t(i) * planes.step_x[k]));
+    };
+    return Rgb{channel(1), channel(2), channel(3)};
+  }
+};
+
 // Runs offered by the walk (Pipeline::walk_offering_runs): once no hazard can stall them, taken
 // one per cycle: the z-buffer's timing at once, then each fragment's depth test and write in order.
 template <bool Avx512>
@@ -29,8 +47,7 @@ struct Runs {
     }
 #endif
     if (n < kernel.short_run_limit) {
-      const ZAdder values = adders;  // a local copy the compiler keeps in machine registers
-      passes = z.test_and_write_short_run(address, n, values);
+      passes = z.test_and_write_short_run(address, n, RunOutputs{adders.run()});
     } else {
       passes = z.test_and_write_run(address, n, adders.run(), kernel.kernel);
     }
