@@ -33,6 +33,7 @@ if [ -z "${RASTERSIM_INSTALLED_PREFIX:-}" ]; then
     given=("$work/given.json" "$work/given.tri")
   fi
   status=0
+  cd "$work"  # a working folder that stays in sight (programs that look up their folder fail otherwise)
   # shellcheck disable=SC2016  # expanded by the inner shell
   unshare -m --propagation private bash -c 'mount -t tmpfs none "$1" && mount -t tmpfs none "$2" && shift 2 && exec "$@"' \
     _ "$build" "$root" env RASTERSIM_INSTALLED_PREFIX="$prefix" RASTERSIM_HIDDEN_CHECKOUT="$root" bash "$work/check-install.sh" hidden "${given[@]}" ||
@@ -54,7 +55,7 @@ ls "$prefix"/lib/librastersim_model.a "$prefix"/lib/librastersim_model.so "$pref
 # The module's own tests, installed, against the installed module, CLI and docs, outside the checkout.
 (cd "$work" && PYTHONPATH="$prefix/$python_dir" RASTERSIM_CLI="$prefix/bin/rastersim" \
   RASTERSIM_DOCS_DIR="$prefix/share/doc/rastersim" /usr/bin/python3 -m pytest -q -p no:cacheprovider \
-  "$prefix/share/rastersim/python-tests" > "$work/pytest.log" 2>&1) \
+  --basetemp="$work/pytest" "$prefix/share/rastersim/python-tests" > "$work/pytest.log" 2>&1) \
   || { cat "$work/pytest.log"; echo "check-install: the installed module's tests failed"; exit 1; }
 (cd "$work" && PYTHONPATH="$prefix/$python_dir" /usr/bin/python3 -c \
   "import rastersim, sys; sys.exit(not rastersim.__file__.startswith('$prefix/'))") \
