@@ -36,6 +36,7 @@ void Pipeline::reset() {
   drawn_ = 0;
   setup_busy_until_ = -1;
   last_busy_ = -1;
+  external_pass_ = external_fail_ = 0;
 }
 
 // One fragment at a time, with Trace each reported to the sink: the specification's walk, which the
@@ -109,9 +110,9 @@ void Pipeline::submit(const SnappedTriangle& tri) {
 const FrameStats& Pipeline::stats() {
   const ZBufferCounters& z = zbuffer_.counters();
   stats_.candidates = walker_counters_.candidates;
-  stats_.depth_pass = z.depth_pass;
-  stats_.depth_fail = z.depth_fail;
-  stats_.fragments = z.depth_pass + z.depth_fail;
+  stats_.depth_pass = z.depth_pass + external_pass_;
+  stats_.depth_fail = z.depth_fail + external_fail_;
+  stats_.fragments = stats_.depth_pass + stats_.depth_fail;
   stats_.cycles = last_busy_ + 1;
   stats_.walker = {walker_counters_.busy, walker_counters_.stall};
   stats_.z_adder = stats_.walker;  // the adders step in lockstep with the walker

@@ -112,6 +112,17 @@ class Pipeline {
   const ZBuffer& zbuffer() const { return zbuffer_; }
   const ZAdder& z_adder() const { return adders_; }
   const SetupResult& last_setup() const { return last_setup_; }
+  std::vector<TriangleRecord>* triangle_log() const { return log_; }
+  const TextureBinding& texture() const { return texture_; }
+
+  // Timing only (no fragment sink): every fragment is taken with all its cycles and timing
+  // counters, but not coloured, tested or written; a caller that tests the same fragments in
+  // submission order (fast/threaded_render.h) gives the results back with add_depth_results().
+  // No cycle depends on a depth test's result or a buffer word, so the timing is the frame's.
+  void set_timing_only(bool on) { timing_only_ = on; }
+  void add_depth_results(int64_t passes, int64_t fails) { external_pass_ += passes, external_fail_ += fails; }
+  // The buffers, for such a caller's depth tests.
+  ZBuffer& zbuffer_words() { return zbuffer_; }
 
   // For a walk runner: the walk of a drawn triangle loaded in `load_cycle`, without a fragment sink,
   // in which each run of n covered candidates of a row is first offered to
@@ -153,15 +164,7 @@ class Pipeline {
   template <bool Trace>
   int64_t take_fragment(int x, int y, const ZAdder& adders, int64_t cycle, TriangleRecord& record) {
     const uint32_t address = uint32_t(y) * uint32_t(profile_.width) + uint32_t(x);
-    const uint32_t z = adders.depth();
-    Rgb color = adders.color();
     const bool textured = adders.textured();
-    TextureCoordinate uv;
-    if (textured) {
-      uv = adders.texture_coordinate();
-      const Texture* texture = texture_.texture.get();
-      color = modulate(texture ? texture->sample(uv.u, uv.v, texture_.filter, texture_.wrap) : Rgb{}, color);
-    }
     int64_t walker_taken = cycle, offered = cycle;
     if (profile_.texture_unit) {
       const TextureUnit::Passage passage = texture_unit_.pass(cycle, textured);
@@ -170,6 +173,18 @@ class Pipeline {
     const int64_t taken = zbuffer_.take(address, offered);
     if (profile_.texture_unit) texture_unit_.left(taken);
     else walker_taken = taken;
+    if (!Trace && timing_only_) {
+      ++record.fragments;
+      return walker_taken;
+    }
+    const uint32_t z = adders.depth();
+    Rgb color = adders.color();
+    TextureCoordinate uv;
+    if (textured) {
+      uv = adders.texture_coordinate();
+      const Texture* texture = texture_.texture.get();
+      color = modulate(texture ? texture->sample(uv.u, uv.v, texture_.filter, texture_.wrap) : Rgb{}, color);
+    }
     const bool pass = zbuffer_.test_and_write(address, z, color);
     ++record.fragments;
     record.depth_pass += pass;
@@ -203,6 +218,8 @@ class Pipeline {
   int64_t walker_free_ = -1;     // first cycle the walker can load: the last drawn triangle's walker_end
   bool walker_idle_load_ = true;  // the walker loads the current record in a cycle of its own
   int64_t last_busy_ = -1;       // last cycle any unit was busy
+  bool timing_only_ = false;
+  int64_t external_pass_ = 0, external_fail_ = 0;  // add_depth_results()
 };
 
 }  // namespace rastersim

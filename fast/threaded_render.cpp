@@ -1,0 +1,175 @@
+#include "fast/threaded_render.h"
+
+#include <atomic>
+#include <exception>
+#include <thread>
+
+#include "fast/run_kernels.h"
+#include "fast/zbuffer_runs.h"
+
+namespace rastersim {
+namespace {
+
+// The timing pass's walk: runs that no hazard can stall go through the z-buffer's timing at once
+// (ZBufferRuns::take_run); the rest, and every fragment with a texture unit (its timing is per
+// fragment), one at a time through the timing-only pipeline.
+struct TimingRuns {
+  bool texture_unit;
+  bool run(ZBuffer& zbuffer, uint32_t address, int64_t n, ZAdder&, int64_t cycle, TriangleRecord& record) {
+    if (texture_unit) return false;
+    ZBufferRuns z(zbuffer);
+    if (!z.settled(cycle)) return false;
+    z.take_run(address, cycle, n);
+    record.fragments += n;  // the adders need no stepping: timing only reads no plane
+    return true;
+  }
+};
+
+class TimingWalk final : public WalkRunner {
+ public:
+  int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record) const override {
+    TimingRuns runs{p.profile().texture_unit};
+    return p.walk_offering_runs(s, load_cycle, record, runs);
+  }
+};
+
+// What a worker needs of the pipeline, read before the threads start: the timing thread changes
+// the z-buffer's registers meanwhile, never its words.
+struct Frame {
+  uint32_t* depth;
+  uint32_t* color;
+  int width;
+  unsigned pass_mask;
+  bool depth_write;
+  bool plain_depth;
+  const TextureBinding* texture;
+  RunKernel kernel;
+};
+
+// One worker's walk of a triangle: the same fragments as the pipeline's walk (the span traversal's,
+// which are the bbox one's), of which it tests and writes those in its rows.
+struct BandSink {
+  static constexpr bool kEntersRowsAtOffset = true;
+  const Frame& f;
+  unsigned id, threads;
+  int64_t passes = 0, tested = 0;
+
+  bool mine(int y) const { return unsigned(y) / kBandRows % threads == id; }
+
+  int64_t fragment(int x, int y, const ZAdder& adders, int64_t cycle) {
+    if (!mine(y)) return cycle;
+    const size_t a = size_t(y) * size_t(f.width) + size_t(x);
+    const uint32_t z = adders.depth();
+    Rgb color = adders.color();
+    if (adders.textured()) {  // as Pipeline::take_fragment
+      const TextureCoordinate uv = adders.texture_coordinate();
+      const Texture* texture = f.texture->texture.get();
+      color = modulate(texture ? texture->sample(uv.u, uv.v, f.texture->filter, f.texture->wrap) : Rgb{}, color);
+    }
+    ++tested;
+    if (ZBuffer::depth_test(f.pass_mask, z, f.depth[a])) {
+      if (f.depth_write) f.depth[a] = z;
+      f.color[a] = ZBuffer::packed(color);
+      ++passes;
+    }
+    return cycle;
+  }
+  // Rows of other threads are skipped whole; the next row is entered afresh (enter_row_at), so
+  // the adders need not step past a run.
+  bool run(int x, int y, int64_t n, ZAdder& adders, int64_t) {
+    if (!mine(y)) return true;
+    if (!f.plain_depth || adders.textured()) return false;
+    const size_t a = size_t(y) * size_t(f.width) + size_t(x);
+    passes += f.kernel(f.depth + a, f.color + a, n, f.pass_mask, f.depth_write, adders.run());
+    tested += n;
+    return true;
+  }
+};
+
+struct Published {
+  std::vector<SetupResult> setups;  // triangle i's, once published > i
+  std::atomic<int64_t> published{0};
+  std::atomic<bool> abandoned{false};
+};
+
+bool touches_band(const SetupResult& s, unsigned id, unsigned threads) {
+  for (int64_t band = s.y0 / kBandRows; band <= s.y1 / kBandRows; ++band)
+    if (uint64_t(band) % threads == id) return true;
+  return false;
+}
+
+void work(const Pipeline& p, const Frame& f, Published& pub, unsigned id, unsigned threads,
+          std::vector<int64_t>& passes, int64_t& tested) {
+  Profile span = p.profile();
+  span.traversal = Traversal::Span;
+  const ScanlineWalker walker(span, p.widths());
+  ZAdder adders(p.widths(), p.profile());
+  WalkerCounters unused;
+  const int64_t n = int64_t(pub.setups.size());
+  for (int64_t i = 0; i < n; ++i) {
+    while (pub.published.load(std::memory_order_acquire) <= i) {
+      if (pub.abandoned.load(std::memory_order_acquire)) return;
+      std::this_thread::yield();
+    }
+    const SetupResult& s = pub.setups[size_t(i)];
+    if (s.status != SetupStatus::Drawn || !touches_band(s, id, threads)) continue;
+    BandSink sink{f, id, threads};
+    walker.walk(s, adders, 0, false, sink, unused);
+    passes[size_t(i)] = sink.passes;
+    tested += sink.tested;
+  }
+}
+
+}  // namespace
+
+void render_threaded(Pipeline& p, const std::vector<SnappedTriangle>& triangles, int threads) {
+  if (threads <= 1) {
+    for (const SnappedTriangle& t : triangles) p.submit(t);
+    return;
+  }
+  ZBufferState& z = p.zbuffer_words().state();
+  const Frame frame{z.memory_.depth_words(), z.memory_.color_words(), z.width_, z.pass_mask_, z.depth_write_,
+                    p.z_adder().plain_depth_output(), &p.texture(), selected_run_kernel_version().kernel};
+  std::vector<TriangleRecord>* log = p.triangle_log();
+  const size_t log_start = log ? log->size() : 0;
+  const unsigned count = unsigned(threads);
+  Published pub;
+  pub.setups.resize(triangles.size());
+  std::vector<std::vector<int64_t>> passes(count, std::vector<int64_t>(triangles.size(), 0));
+  std::vector<int64_t> tested(count, 0);
+  std::vector<std::thread> workers;
+  for (unsigned id = 0; id < count; ++id)
+    workers.emplace_back(work, std::cref(p), std::cref(frame), std::ref(pub), id, count, std::ref(passes[id]),
+                         std::ref(tested[id]));
+
+  p.set_walk_runner(std::make_shared<const TimingWalk>());
+  p.set_timing_only(true);
+  std::exception_ptr failure;
+  try {
+    for (size_t i = 0; i < triangles.size(); ++i) {
+      p.submit(triangles[i]);
+      pub.setups[i] = p.last_setup();
+      pub.published.store(int64_t(i + 1), std::memory_order_release);
+    }
+  } catch (...) {
+    failure = std::current_exception();
+    pub.abandoned.store(true, std::memory_order_release);
+  }
+  for (std::thread& t : workers) t.join();
+  p.set_timing_only(false);
+  const WalkRunnerChoice choice = Pipeline::walk_runner_choice();
+  p.set_walk_runner(choice ? choice(p) : nullptr);
+  if (failure) std::rethrow_exception(failure);
+
+  int64_t all_passes = 0, all_tested = 0;
+  for (unsigned id = 0; id < count; ++id) {
+    all_tested += tested[id];
+    for (size_t i = 0; i < triangles.size(); ++i) {
+      all_passes += passes[id][i];
+      if (log) (*log)[log_start + i].depth_pass += passes[id][i];
+    }
+  }
+  p.add_depth_results(all_passes, all_tested - all_passes);
+}
+
+}  // namespace rastersim

@@ -1,0 +1,29 @@
+// The frame rendered by several threads with the single-threaded model's every result: the same
+// fragments, buffer words, counters, records and cycles (tests/test_threads.cpp).
+//
+// No cycle depends on a depth test's result or a buffer word, so the frame splits in two:
+//  - the timing: the calling thread submits every triangle to the pipeline in timing-only mode
+//    (Pipeline::set_timing_only): setup, walker, texture unit and z-buffer timing, one serial chain;
+//  - the depth tests and writes: each worker thread owns the rows y with (y / kBandRows) % threads
+//    equal to its number, takes every drawn triangle in submission order as the timing publishes
+//    its setup, and tests and writes only its own rows' fragments. A pixel's fragments are tested
+//    in submission order, as in the single-threaded model; no two threads write the same word.
+#pragma once
+
+#include <vector>
+
+// Relative, as in model/: installed, these headers are reached as <rastersim/fast/...>.
+#include "../model/pipeline.h"
+
+namespace rastersim {
+
+// Rows per band: whole cache lines of words apart at widths from 16 pixels, and bands small
+// enough that a triangle's rows spread over the threads.
+constexpr int kBandRows = 8;
+
+// Submits `triangles` to `p` (no fragment sink; its texture, triangle log and buffers as for
+// p.submit()) with `threads` threads: afterwards p's stats(), zbuffer() and triangle log are
+// those of p.submit() of each triangle. threads <= 1: p.submit() of each, on this thread.
+void render_threaded(Pipeline& p, const std::vector<SnappedTriangle>& triangles, int threads);
+
+}  // namespace rastersim
