@@ -132,7 +132,8 @@ void render_threaded(Pipeline& p, const std::vector<SnappedTriangle>& triangles,
                     p.z_adder().plain_depth_output(), &p.texture(), selected_run_kernel_version().kernel};
   std::vector<TriangleRecord>* log = p.triangle_log();
   const size_t log_start = log ? log->size() : 0;
-  const unsigned count = unsigned(threads);
+  // The calling thread is one of the threads: it does the timing.
+  const unsigned count = unsigned(threads - 1);
   Published pub;
   pub.setups.resize(triangles.size());
   std::vector<std::vector<int64_t>> passes(count, std::vector<int64_t>(triangles.size(), 0));

@@ -4,10 +4,11 @@
 // No cycle depends on a depth test's result or a buffer word, so the frame splits in two:
 //  - the timing: the calling thread submits every triangle to the pipeline in timing-only mode
 //    (Pipeline::set_timing_only): setup, walker, texture unit and z-buffer timing, one serial chain;
-//  - the depth tests and writes: each worker thread owns the rows y with (y / kBandRows) % threads
-//    equal to its number, takes every drawn triangle in submission order as the timing publishes
-//    its setup, and tests and writes only its own rows' fragments. A pixel's fragments are tested
-//    in submission order, as in the single-threaded model; no two threads write the same word.
+//  - the depth tests and writes: threads - 1 worker threads; worker k owns the rows y with
+//    (y / kBandRows) % (threads - 1) == k, takes every drawn triangle in submission order as the
+//    timing publishes its setup, and tests and writes only its own rows' fragments. A pixel's
+//    fragments are tested in submission order, as in the single-threaded model; no two threads
+//    write the same word. At 2 threads one worker does every depth test beside the timing.
 #pragma once
 
 #include <vector>
@@ -23,7 +24,8 @@ constexpr int kBandRows = 8;
 
 // Submits `triangles` to `p` (no fragment sink; its texture, triangle log and buffers as for
 // p.submit()) with `threads` threads: afterwards p's stats(), zbuffer() and triangle log are
-// those of p.submit() of each triangle. threads <= 1: p.submit() of each, on this thread.
+// those of p.submit() of each triangle. threads <= 1: p.submit() of each, on this thread; else
+// this thread and threads - 1 workers.
 void render_threaded(Pipeline& p, const std::vector<SnappedTriangle>& triangles, int threads);
 
 }  // namespace rastersim
