@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "fast/threaded_render.h"
 #include "model/input_error.h"
 #ifdef RASTERSIM_HAVE_RTL
 #include <iostream>
@@ -113,9 +114,14 @@ RenderResult render_triangles(Backend backend, const Profile& profile, const std
       Pipeline pipeline(profile);
       pipeline.set_fragment_sink(sink);
       pipeline.set_texture(options.texture);
-      for (size_t i = 0; i < triangles.size(); ++i) {
-        pipeline.submit(triangles[i]);
-        if (progress) progress(i + 1);
+      if (!sink && options.threads > 1) {  // the same frame (tests/test_threads.cpp)
+        render_threaded(pipeline, triangles, options.threads);
+        if (progress) progress(triangles.size());
+      } else {
+        for (size_t i = 0; i < triangles.size(); ++i) {
+          pipeline.submit(triangles[i]);
+          if (progress) progress(i + 1);
+        }
       }
       const ZBuffer& z = pipeline.zbuffer();
       return RenderResult{pipeline.stats(), FrameBuffers{z.width(), z.height(), z.depth(), z.color()}, false, ""};

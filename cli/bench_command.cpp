@@ -10,6 +10,7 @@
 
 #include "backend.h"
 #include "builtin_scenes.h"
+#include "fast/threaded_render.h"
 #include "inputs.h"
 #include "tri_reader.h"
 #include "model/input_error.h"
@@ -69,6 +70,9 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
       ->capture_default_str();
   cmd->add_option("--repeat", o.repeat, "timed repetitions; the best is reported")->check(CLI::Range(1, 100))
       ->capture_default_str();
+  cmd->add_option("--threads", o.threads, "model: threads of the timed render (checked equal to a traced one)")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
   add_profile_options(*cmd, o.profile);
   return cmd;
 }
@@ -93,12 +97,12 @@ std::vector<SnappedTriangle> load_bench_triangles(const BenchInput& o, const Pro
   return snapped;
 }
 
-ModelRun time_model(const std::vector<SnappedTriangle>& triangles, const Profile& profile) {
+ModelRun time_model(const std::vector<SnappedTriangle>& triangles, const Profile& profile, int threads) {
   Pipeline pipeline(profile);  // allocated and cleared outside the timed region
   ModelRun run;
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = process_cpu_seconds();
-  for (const SnappedTriangle& t : triangles) pipeline.submit(t);
+  render_threaded(pipeline, triangles, threads);
   run.stats = pipeline.stats();
   run.cpu_seconds = process_cpu_seconds() - cpu_start;
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -118,12 +122,17 @@ struct RenderedFrame {
   std::vector<uint32_t> depth, color;
 };
 
-RenderedFrame render_frame(const std::vector<SnappedTriangle>& triangles, const Profile& profile, FragmentSink* sink) {
+RenderedFrame render_frame(const std::vector<SnappedTriangle>& triangles, const Profile& profile, FragmentSink* sink,
+                           int threads) {
   Pipeline pipeline(profile);
   RenderedFrame frame;
   pipeline.set_fragment_sink(sink);
   pipeline.set_triangle_log(&frame.records);
-  for (const SnappedTriangle& t : triangles) pipeline.submit(t);
+  if (sink) {
+    for (const SnappedTriangle& t : triangles) pipeline.submit(t);
+  } else {
+    render_threaded(pipeline, triangles, threads);
+  }
   frame.stats = pipeline.stats();
   frame.depth = pipeline.zbuffer().depth();
   frame.color = pipeline.zbuffer().color();
@@ -144,15 +153,16 @@ bool same_stats(const FrameStats& a, const FrameStats& b) {
          a.triangles_drawn == b.triangles_drawn && a.candidates == b.candidates && a.fragments == b.fragments &&
          a.depth_pass == b.depth_pass && a.depth_fail == b.depth_fail && a.cycles == b.cycles &&
          same_unit(a.setup, b.setup) && same_unit(a.walker, b.walker) && same_unit(a.z_adder, b.z_adder) &&
-         same_unit(a.zbuffer, b.zbuffer);
+         same_unit(a.zbuffer, b.zbuffer) && same_unit(a.texture, b.texture);
 }
 
 }  // namespace
 
-std::string untraced_differs_from_traced(const std::vector<SnappedTriangle>& triangles, const Profile& profile) {
+std::string untraced_differs_from_traced(const std::vector<SnappedTriangle>& triangles, const Profile& profile,
+                                         int threads) {
   CountingSink sink;
-  const RenderedFrame traced = render_frame(triangles, profile, &sink);
-  const RenderedFrame untraced = render_frame(triangles, profile, nullptr);
+  const RenderedFrame traced = render_frame(triangles, profile, &sink, 1);
+  const RenderedFrame untraced = render_frame(triangles, profile, nullptr, threads);
   if (sink.fragments != traced.stats.fragments) return "the traced render's sink saw a different fragment count";
   if (!same_stats(traced.stats, untraced.stats)) return "frame counters differ";
   if (traced.records.size() != untraced.records.size()) return "triangle record counts differ";
@@ -209,7 +219,7 @@ int run_bench(const BenchOptions& o) {
 
   ModelRun best;
   for (int r = 0; r < o.repeat; ++r) {
-    const ModelRun run = time_model(snapped, profile);
+    const ModelRun run = time_model(snapped, profile, o.threads);
     if (r > 0 && (run.stats.fragments != best.stats.fragments || run.stats.cycles != best.stats.cycles)) {
       std::fprintf(stderr, "rastersim: repetition %d gave different fragments or cycles: the model is not deterministic\n", r);
       return 1;
@@ -218,7 +228,7 @@ int run_bench(const BenchOptions& o) {
     if (r == 0 || run.cpu_seconds < best.cpu_seconds) best.cpu_seconds = run.cpu_seconds;
     best.stats = run.stats;
   }
-  const std::string difference = untraced_differs_from_traced(snapped, profile);
+  const std::string difference = untraced_differs_from_traced(snapped, profile, o.threads);
   if (!difference.empty()) {
     std::fprintf(stderr, "rastersim: the untraced (timed) render differs from the traced one: %s\n", difference.c_str());
     return 1;
@@ -226,11 +236,11 @@ int run_bench(const BenchOptions& o) {
 
   const FrameStats& stats = best.stats;
   const double n = double(snapped.size()), fragments = double(stats.fragments);
-  std::printf("bench: %s, %zu triangles, %dx%d, %s traversal, %s shading, best of %d\n", source.c_str(),
+  std::printf("bench: %s, %zu triangles, %dx%d, %s traversal, %s shading, %d thread%s, best of %d\n", source.c_str(),
               snapped.size(), profile.width, profile.height, to_string(profile.traversal), to_string(profile.shading),
-              o.repeat);
+              o.threads, o.threads == 1 ? "" : "s", o.repeat);
   std::printf("wall time   %.6f s (render only)\n", best.seconds);
-  std::printf("cpu time    %.6f s (render only, this process)\n", best.cpu_seconds);
+  std::printf("cpu time    %.6f s (render only, this process, every thread)\n", best.cpu_seconds);
   std::printf("triangles   %.4g per second, %.4g per cpu second\n", n / best.seconds, n / best.cpu_seconds);
   std::printf("fragments   %lld, %.4g per second, %.4g per cpu second\n", (long long)stats.fragments,
               fragments / best.seconds, fragments / best.cpu_seconds);

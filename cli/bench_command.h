@@ -27,6 +27,7 @@ struct BenchOptions {
   BenchInput what;
   std::string backend = "model";  // rtl, cosim: simulation speed (cycles per second) instead
   int repeat = 3;
+  int threads = 1;  // model: render threads
   ProfileOptions profile;
 };
 
@@ -42,12 +43,14 @@ struct ModelRun {
   double seconds = 0, cpu_seconds = 0;
   FrameStats stats;
 };
-ModelRun time_model(const std::vector<SnappedTriangle>& triangles, const Profile& profile);
+// With `threads` > 1 the threaded render (fast/threaded_render.h).
+ModelRun time_model(const std::vector<SnappedTriangle>& triangles, const Profile& profile, int threads = 1);
 
 // Renders the list untraced (as timed) and traced (every fragment through a sink, the path
 // co-simulation checks against the RTL) and compares every counter, triangle record and buffer
 // word. Returns "" when they are equal, else what differs.
-std::string untraced_differs_from_traced(const std::vector<SnappedTriangle>& triangles, const Profile& profile);
+std::string untraced_differs_from_traced(const std::vector<SnappedTriangle>& triangles, const Profile& profile,
+                                         int threads = 1);
 
 // Parses "MIN..MAX" or "SIZE" (pixels, 0 < MIN <= MAX); throws InputError.
 void parse_size_range(const std::string& text, double& min_size, double& max_size);

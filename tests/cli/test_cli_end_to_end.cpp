@@ -1414,6 +1414,38 @@ TEST(CliBench, PrintsThroughput) {
   EXPECT_TRUE(dir.listing().empty());
 }
 
+// --threads: the same image and stats at any thread count, on a built-in scene and textured.
+TEST(CliThreads, RenderGivesTheSameFrameAtAnyThreadCount) {
+  ScratchDir dir;
+  for (const std::vector<std::string>& scene : {std::vector<std::string>{"--scene", "default", "--traversal", "bbox"},
+                                                std::vector<std::string>{"--scene", "floor", "--texture-unit", "true",
+                                                                         "--memory-stall-percent", "20"}}) {
+    std::string image[2], stats[2];
+    for (int k = 0; k < 2; ++k) {
+      std::vector<std::string> args = {"render", "-o", "c.png", "--stats", "s.json", "--threads", k ? "3" : "1"};
+      args.insert(args.end(), scene.begin(), scene.end());
+      const RunResult r = run_rastersim(dir, args);
+      ASSERT_EQ(r.exit_code, 0) << r.err;
+      image[k] = read_text(dir.path("c.png"));
+      stats[k] = read_text(dir.path("s.json"));
+    }
+    EXPECT_FALSE(image[0].empty());
+    EXPECT_EQ(image[0], image[1]) << scene[1];
+    EXPECT_EQ(stats[0], stats[1]) << scene[1];
+  }
+}
+
+TEST(CliThreads, BenchChecksTheThreadedRender) {
+  ScratchDir dir;
+  const RunResult r = run_rastersim(dir, {"bench", "--scene", "shapes", "--threads", "2", "--repeat", "1"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, "2 threads")) << r.out;
+  EXPECT_TRUE(contains(r.out, "verified")) << r.out;
+  const RunResult bad = run_rastersim(dir, {"bench", "--threads", "0"});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_TRUE(dir.listing().empty());
+}
+
 // Bad input: exit 2, the message names what is wrong (file:line where there is one), and the run
 // leaves no file behind, neither outputs nor temporaries.
 struct BadRun {
