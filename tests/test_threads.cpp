@@ -1,5 +1,5 @@
 // The threaded render (fast/threaded_render.h) against the single-threaded model: at 1 to 4
-// threads, every counter, cycle, triangle record and buffer word equal to the traced
+// threads and with every run kernel, every counter, cycle, triangle record and buffer word equal to the traced
 // specification's frame, over both traversals, the serial and pipelined setup, the texture unit,
 // memory back-pressure, several latencies and depth functions.
 #include <gtest/gtest.h>
@@ -7,6 +7,7 @@
 #include <string>
 #include <tuple>
 
+#include "fast/run_kernels.h"
 #include "fast/threaded_render.h"
 #include "test_util.h"
 
@@ -150,11 +151,20 @@ TEST_P(Threads, ThreadedFrameEqualsSingleThreadedFrame) {
     if (stall_percent > 0) {
       EXPECT_GT(spec.stats.zbuffer.stall, 0);
     }
-    for (int threads = 1; threads <= 4; ++threads) {
-      SCOPED_TRACE(describe(profile) + " seed " + std::to_string(seed) + ", " + std::to_string(threads) +
-                   " threads");
-      expect_same_frame(spec, render(profile, triangles, texture, threads));
+    {
+      SCOPED_TRACE(describe(profile) + " seed " + std::to_string(seed) + ", 1 thread");
+      expect_same_frame(spec, render(profile, triangles, texture, 1));
     }
+    // Every run kernel the workers may call (the compiled ones are what ThreadSanitizer sees into).
+    for (const std::string& kernel : run_kernel_versions()) {
+      select_run_kernel(kernel);
+      for (int threads = 2; threads <= 4; ++threads) {
+        SCOPED_TRACE(describe(profile) + " seed " + std::to_string(seed) + ", " + std::to_string(threads) +
+                     " threads, run kernel " + kernel);
+        expect_same_frame(spec, render(profile, triangles, texture, threads));
+      }
+    }
+    select_run_kernel(run_kernel_versions().front());
   }
   EXPECT_GT(fails, 0) << "some fragments must fail their depth test";
 }
