@@ -1,6 +1,5 @@
 #include "fast/threaded_render.h"
 
-#include <atomic>
 #include <exception>
 #include <thread>
 
@@ -86,37 +85,36 @@ struct BandSink {
   }
 };
 
-struct Published {
-  std::vector<SetupResult> setups;  // triangle i's, once published > i
-  std::atomic<int64_t> published{0};
-  std::atomic<bool> abandoned{false};
-};
-
 bool touches_band(const SetupResult& s, unsigned id, unsigned threads) {
   for (int64_t band = s.y0 / kBandRows; band <= s.y1 / kBandRows; ++band)
     if (uint64_t(band) % threads == id) return true;
   return false;
 }
 
-void work(const Pipeline& p, const Frame& f, Published& pub, unsigned id, unsigned threads,
-          std::vector<int64_t>& passes, int64_t& tested) {
-  Profile span = p.profile();
-  span.traversal = Traversal::Span;
-  const ScanlineWalker walker(span, p.widths());
-  ZAdder adders(p.widths(), p.profile());
-  WalkerCounters unused;
-  const int64_t n = int64_t(pub.setups.size());
-  for (int64_t i = 0; i < n; ++i) {
-    while (pub.published.load(std::memory_order_acquire) <= i) {
-      if (pub.abandoned.load(std::memory_order_acquire)) return;
-      std::this_thread::yield();
+// A worker sets every triangle up itself (a pure function of the triangle and the profile): it
+// needs nothing of the timing thread, so neither waits for the other.
+void work(const Pipeline& p, const Frame& f, const std::vector<SnappedTriangle>& triangles, unsigned id,
+          unsigned threads, std::vector<int64_t>& passes, int64_t& tested, std::exception_ptr& failure) {
+  try {
+    const TriangleSetup setup(p.profile());
+    Profile span = p.profile();
+    span.traversal = Traversal::Span;
+    const ScanlineWalker walker(span, setup.widths());
+    ZAdder adders(setup.widths(), p.profile());
+    WalkerCounters unused;
+    SetupResult s;
+    int64_t count = 0;  // a local: the workers' totals share a cache line
+    for (size_t i = 0; i < triangles.size(); ++i) {
+      setup.run(triangles[i], s);
+      if (s.status != SetupStatus::Drawn || !touches_band(s, id, threads)) continue;
+      BandSink sink{f, id, threads};
+      walker.walk(s, adders, 0, false, sink, unused);
+      passes[i] = sink.passes;
+      count += sink.tested;
     }
-    const SetupResult& s = pub.setups[size_t(i)];
-    if (s.status != SetupStatus::Drawn || !touches_band(s, id, threads)) continue;
-    BandSink sink{f, id, threads};
-    walker.walk(s, adders, 0, false, sink, unused);
-    passes[size_t(i)] = sink.passes;
-    tested += sink.tested;
+    tested = count;
+  } catch (...) {
+    failure = std::current_exception();
   }
 }
 
@@ -134,33 +132,27 @@ void render_threaded(Pipeline& p, const std::vector<SnappedTriangle>& triangles,
   const size_t log_start = log ? log->size() : 0;
   // The calling thread is one of the threads: it does the timing.
   const unsigned count = unsigned(threads - 1);
-  Published pub;
-  pub.setups.resize(triangles.size());
   std::vector<std::vector<int64_t>> passes(count, std::vector<int64_t>(triangles.size(), 0));
   std::vector<int64_t> tested(count, 0);
+  std::vector<std::exception_ptr> failures(count + 1);
   std::vector<std::thread> workers;
   for (unsigned id = 0; id < count; ++id)
-    workers.emplace_back(work, std::cref(p), std::cref(frame), std::ref(pub), id, count, std::ref(passes[id]),
-                         std::ref(tested[id]));
+    workers.emplace_back(work, std::cref(p), std::cref(frame), std::cref(triangles), id, count, std::ref(passes[id]),
+                         std::ref(tested[id]), std::ref(failures[id]));
 
   p.set_walk_runner(std::make_shared<const TimingWalk>());
   p.set_timing_only(true);
-  std::exception_ptr failure;
   try {
-    for (size_t i = 0; i < triangles.size(); ++i) {
-      p.submit(triangles[i]);
-      pub.setups[i] = p.last_setup();
-      pub.published.store(int64_t(i + 1), std::memory_order_release);
-    }
+    for (const SnappedTriangle& t : triangles) p.submit(t);
   } catch (...) {
-    failure = std::current_exception();
-    pub.abandoned.store(true, std::memory_order_release);
+    failures[count] = std::current_exception();
   }
   for (std::thread& t : workers) t.join();
   p.set_timing_only(false);
   const WalkRunnerChoice choice = Pipeline::walk_runner_choice();
   p.set_walk_runner(choice ? choice(p) : nullptr);
-  if (failure) std::rethrow_exception(failure);
+  for (const std::exception_ptr& failure : failures)
+    if (failure) std::rethrow_exception(failure);
 
   int64_t all_passes = 0, all_tested = 0;
   for (unsigned id = 0; id < count; ++id) {

@@ -5,8 +5,8 @@
 //  - the timing: the calling thread submits every triangle to the pipeline in timing-only mode
 //    (Pipeline::set_timing_only): setup, walker, texture unit and z-buffer timing, one serial chain;
 //  - the depth tests and writes: threads - 1 worker threads; worker k owns the rows y with
-//    (y / kBandRows) % (threads - 1) == k, takes every drawn triangle in submission order as the
-//    timing publishes its setup, and tests and writes only its own rows' fragments. A pixel's
+//    (y / kBandRows) % (threads - 1) == k, sets up every triangle itself in submission order,
+//    and tests and writes only its own rows' fragments. A pixel's
 //    fragments are tested in submission order, as in the single-threaded model; no two threads
 //    write the same word. At 2 threads one worker does every depth test beside the timing.
 #pragma once
