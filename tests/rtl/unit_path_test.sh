@@ -6,8 +6,9 @@
 # --shard give the same frames (and the same first failure); a walker that never takes a record
 # is a stall naming rec_ready;
 # bad usage is bad input (exit 2).
-# Usage: unit_path_test.sh RASTERSIM SOURCE_DIR [PART]   (PART `interfaces`: all but the injected
-# bugs; `bugs`: the injected bugs, each a build of its own; default both)
+# Usage: unit_path_test.sh RASTERSIM SOURCE_DIR [PART]   (PART `interfaces`: rastersim's units and
+# bad input; `bugs`: the injected bugs, the setup unit at pixel corners and the stalled walker
+# template, each a build of its own; default both)
 set -euo pipefail
 exe="$1"
 src="$(cd "$2" && pwd)"
@@ -55,6 +56,11 @@ if [ "$part" != bugs ]; then
   "$exe" junit-merge shard-1.xml shard-2.xml -o merged.xml > merged.txt 2>&1 || fail "the shards do not merge: $(cat merged.txt)"
   frames="$(sed -n 's/.*: \([0-9]*\) directed and \([0-9]*\) random frames.*/\1 + \2/p' own-setup-stream.txt)"
   grep -q "^merged 2 files: $((frames)) frames, 0 failed$" merged.txt || fail "the shards' frames: $(cat merged.txt), not $((frames))"
+fi
+
+# Builds of their own, run with the injected bugs (label long).
+if [ "$part" != interfaces ]; then
+  list="$src/testbench/dut/rastersim_setup_unit.f"
   # The setup unit built with the other sample point and a fill rule (PIXEL_CENTER, FILL_RULE): it
   # passes against the profile that says so, and not against the default one.
   corner=(-G PIXEL_CENTER=1 -G FILL_RULE=3)
@@ -75,6 +81,10 @@ if [ "$part" != bugs ]; then
   grep -q "the unit stalled: rec_ready stayed low for [0-9]* cycles with the record of triangle 0 offered" stuck.txt ||
     fail "the walker's stall is not named: $(grep -m1 '^frame' stuck.txt)"
 
+fi
+
+if [ "$part" != bugs ]; then
+  list="$src/testbench/dut/rastersim_setup_unit.f"
   # Bad input: exit 2 with a sentence naming the problem.
   bad() {  # bad EXPECTED-TEXT ARGS...: cosim ARGS exits 2 printing EXPECTED-TEXT
     local expected="$1" status=0
