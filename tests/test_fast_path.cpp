@@ -16,12 +16,6 @@
 namespace rastersim::test {
 namespace {
 
-struct Frame {
-  FrameStats stats;
-  std::vector<TriangleRecord> records;
-  std::vector<uint32_t> depth, color;
-};
-
 // Traced: the specification's walk with a fragment sink; Plain: the same without one; Fast: the
 // fast walk (fast_walk_runner), which must apply.
 enum class Walk { Traced, Plain, Fast };
@@ -45,36 +39,6 @@ Frame render(const Profile& profile, const std::vector<SnappedTriangle>& triangl
     EXPECT_EQ(int64_t(log.fragments.size()), frame.stats.fragments);
   }
   return frame;
-}
-
-void expect_same_counters(const UnitCounters& a, const UnitCounters& b, const char* unit) {
-  EXPECT_EQ(a.busy, b.busy) << unit << " busy";
-  EXPECT_EQ(a.stall, b.stall) << unit << " stall";
-}
-
-void expect_same_frame(const Frame& traced, const Frame& fast) {
-  const FrameStats &a = traced.stats, &b = fast.stats;
-  EXPECT_EQ(a.triangles_drawn, b.triangles_drawn);
-  EXPECT_EQ(a.candidates, b.candidates);
-  EXPECT_EQ(a.fragments, b.fragments);
-  EXPECT_EQ(a.depth_pass, b.depth_pass);
-  EXPECT_EQ(a.depth_fail, b.depth_fail);
-  EXPECT_EQ(a.cycles, b.cycles);
-  expect_same_counters(a.setup, b.setup, "setup");
-  expect_same_counters(a.walker, b.walker, "walker");
-  expect_same_counters(a.z_adder, b.z_adder, "z_adder");
-  expect_same_counters(a.zbuffer, b.zbuffer, "zbuffer");
-  ASSERT_EQ(traced.records.size(), fast.records.size());
-  for (size_t i = 0; i < traced.records.size(); ++i) {
-    const TriangleRecord &r = traced.records[i], &f = fast.records[i];
-    EXPECT_EQ(r.walker_load, f.walker_load) << "triangle " << i;
-    EXPECT_EQ(r.walker_end, f.walker_end) << "triangle " << i;
-    EXPECT_EQ(r.fragments, f.fragments) << "triangle " << i;
-    EXPECT_EQ(r.depth_pass, f.depth_pass) << "triangle " << i;
-    EXPECT_EQ(r.last_write, f.last_write) << "triangle " << i;
-  }
-  EXPECT_TRUE(traced.depth == fast.depth) << "depth buffers differ";
-  EXPECT_TRUE(traced.color == fast.color) << "colour buffers differ";
 }
 
 using Param = std::tuple<Traversal, DepthFunc, int /*memory_latency*/, int /*memory_stall_percent*/>;

@@ -14,12 +14,6 @@
 namespace rastersim::test {
 namespace {
 
-struct Frame {
-  FrameStats stats;
-  std::vector<TriangleRecord> records;
-  std::vector<uint32_t> depth, color;
-};
-
 // threads 0: the traced specification (a fragment sink, one fragment at a time).
 Frame render(const Profile& profile, const std::vector<SnappedTriangle>& triangles, const TextureBinding& texture,
              int threads) {
@@ -38,47 +32,6 @@ Frame render(const Profile& profile, const std::vector<SnappedTriangle>& triangl
   frame.depth = pipeline.zbuffer().depth();
   frame.color = pipeline.zbuffer().color();
   return frame;
-}
-
-void expect_same_counters(const UnitCounters& a, const UnitCounters& b, const char* unit) {
-  EXPECT_EQ(a.busy, b.busy) << unit << " busy";
-  EXPECT_EQ(a.stall, b.stall) << unit << " stall";
-}
-
-void expect_same_frame(const Frame& spec, const Frame& threaded) {
-  const FrameStats &a = spec.stats, &b = threaded.stats;
-  EXPECT_EQ(a.triangles, b.triangles);
-  EXPECT_EQ(a.triangles_culled, b.triangles_culled);
-  EXPECT_EQ(a.triangles_degenerate, b.triangles_degenerate);
-  EXPECT_EQ(a.triangles_offscreen, b.triangles_offscreen);
-  EXPECT_EQ(a.triangles_no_centre, b.triangles_no_centre);
-  EXPECT_EQ(a.triangles_drawn, b.triangles_drawn);
-  EXPECT_EQ(a.candidates, b.candidates);
-  EXPECT_EQ(a.fragments, b.fragments);
-  EXPECT_EQ(a.depth_pass, b.depth_pass);
-  EXPECT_EQ(a.depth_fail, b.depth_fail);
-  EXPECT_EQ(a.cycles, b.cycles);
-  expect_same_counters(a.setup, b.setup, "setup");
-  expect_same_counters(a.walker, b.walker, "walker");
-  expect_same_counters(a.z_adder, b.z_adder, "z_adder");
-  expect_same_counters(a.zbuffer, b.zbuffer, "zbuffer");
-  expect_same_counters(a.texture, b.texture, "texture");
-  ASSERT_EQ(spec.records.size(), threaded.records.size());
-  for (size_t i = 0; i < spec.records.size(); ++i) {
-    const TriangleRecord &r = spec.records[i], &t = threaded.records[i];
-    EXPECT_EQ(r.index, t.index) << "triangle " << i;
-    EXPECT_EQ(r.status, t.status) << "triangle " << i;
-    EXPECT_EQ(r.setup_accept, t.setup_accept) << "triangle " << i;
-    EXPECT_EQ(r.setup_decided, t.setup_decided) << "triangle " << i;
-    EXPECT_EQ(r.setup_done, t.setup_done) << "triangle " << i;
-    EXPECT_EQ(r.walker_load, t.walker_load) << "triangle " << i;
-    EXPECT_EQ(r.walker_end, t.walker_end) << "triangle " << i;
-    EXPECT_EQ(r.fragments, t.fragments) << "triangle " << i;
-    EXPECT_EQ(r.depth_pass, t.depth_pass) << "triangle " << i;
-    EXPECT_EQ(r.last_write, t.last_write) << "triangle " << i;
-  }
-  EXPECT_TRUE(spec.depth == threaded.depth) << "depth buffers differ";
-  EXPECT_TRUE(spec.color == threaded.color) << "colour buffers differ";
 }
 
 // A textured triangle over the screen: u, v in [-3, 3], w in [1, 4].
