@@ -1,6 +1,10 @@
 #include "fast/threaded_render.h"
 
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
 #include <exception>
+#include <memory>
 #include <thread>
 
 #include "fast/run_kernels.h"
@@ -14,12 +18,12 @@ namespace {
 // fragment), one at a time through the timing-only pipeline.
 struct TimingRuns {
   bool texture_unit;
-  bool run(ZBuffer& zbuffer, uint32_t address, int64_t n, ZAdder&, int64_t cycle, TriangleRecord& record) {
+  bool run(ZBuffer& zbuffer, uint32_t address, int64_t n, int64_t cycle, TriangleRecord& record) {
     if (texture_unit) return false;
     ZBufferRuns z(zbuffer);
     if (!z.settled(cycle)) return false;
     z.take_run(address, cycle, n);
-    record.fragments += n;  // the adders need no stepping: timing only reads no plane
+    record.fragments += n;
     return true;
   }
 };
@@ -28,7 +32,7 @@ class TimingWalk final : public WalkRunner {
  public:
   int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record) const override {
     TimingRuns runs{p.profile().texture_unit};
-    return p.walk_offering_runs(s, load_cycle, record, runs);
+    return p.walk_timing_offering_runs(s, load_cycle, record, runs);
   }
 };
 
@@ -85,36 +89,95 @@ struct BandSink {
   }
 };
 
+// A worker's walk of one triangle, inlined whole (flatten): a call per row costs more than the row.
+__attribute__((flatten)) void walk_band(const ScanlineWalker& walker, const SetupResult& s, ZAdder& adders,
+                                        BandSink& sink) {
+  WalkerCounters unused;
+  walker.walk(s, adders, 0, false, sink, unused);
+}
+
 bool touches_band(const SetupResult& s, unsigned id, unsigned threads) {
   for (int64_t band = s.y0 / kBandRows; band <= s.y1 / kBandRows; ++band)
     if (uint64_t(band) % threads == id) return true;
   return false;
 }
 
-// A worker sets every triangle up itself (a pure function of the triangle and the profile): it
-// needs nothing of the timing thread, so neither waits for the other.
-void work(const Pipeline& p, const Frame& f, const std::vector<SnappedTriangle>& triangles, unsigned id,
-          unsigned threads, std::vector<int64_t>& passes, int64_t& tested, std::exception_ptr& failure) {
+// The drawn triangles' setup results, from the timing thread to every worker in submission order
+// (the setup is done once): a ring whose slot is written again once every worker has walked the
+// triangle in it. A waiting thread yields its core.
+class SetupRing {
+ public:
+  struct Slot {
+    size_t triangle;
+    SetupResult setup;
+  };
+
+  explicit SetupRing(unsigned readers) : readers_(readers), read_(new Counter[readers]) {}
+
+  // The timing thread: the k-th drawn triangle.
+  void push(size_t triangle, const SetupResult& s) {
+    const uint64_t k = written_.value.load(std::memory_order_relaxed);
+    while (slowest_reader() + kSlots <= k) std::this_thread::yield();
+    slots_[k % kSlots] = Slot{triangle, s};
+    written_.value.store(k + 1, std::memory_order_release);
+  }
+  // No more triangles (also after a failure).
+  void close() { closed_.value.store(1, std::memory_order_release); }
+
+  // A worker: the k-th drawn triangle, or nullptr after the last.
+  const Slot* at(uint64_t k) const {
+    for (;;) {
+      if (written_.value.load(std::memory_order_acquire) > k) return &slots_[k % kSlots];
+      if (closed_.value.load(std::memory_order_acquire))
+        return written_.value.load(std::memory_order_acquire) > k ? &slots_[k % kSlots] : nullptr;
+      std::this_thread::yield();
+    }
+  }
+  // Worker `reader` is done with the k-th (and every earlier) triangle; with k = UINT64_MAX - 1, with
+  // all of them (a worker that failed must not hold the timing thread).
+  void release(unsigned reader, uint64_t k) { read_[reader].value.store(k + 1, std::memory_order_release); }
+
+ private:
+  static constexpr uint64_t kSlots = 1024;
+  struct alignas(64) Counter {
+    std::atomic<uint64_t> value{0};
+  };
+  uint64_t slowest_reader() const {
+    uint64_t slowest = UINT64_MAX;
+    for (unsigned r = 0; r < readers_; ++r) slowest = std::min(slowest, read_[r].value.load(std::memory_order_acquire));
+    return slowest;
+  }
+  unsigned readers_;
+  std::unique_ptr<Counter[]> read_;
+  Counter written_, closed_;
+  std::unique_ptr<Slot[]> slots_{new Slot[kSlots]};
+};
+
+// A worker takes the drawn triangles from the ring in submission order and walks each that
+// touches its bands.
+void work(const Pipeline& p, const Frame& f, SetupRing& ring, unsigned id, unsigned threads,
+          std::vector<int64_t>& passes, int64_t& tested, std::exception_ptr& failure) {
   try {
-    const TriangleSetup setup(p.profile());
     Profile span = p.profile();
     span.traversal = Traversal::Span;
-    const ScanlineWalker walker(span, setup.widths());
-    ZAdder adders(setup.widths(), p.profile());
-    WalkerCounters unused;
-    SetupResult s;
+    const ScanlineWalker walker(span, p.widths());
+    ZAdder adders(p.widths(), p.profile());
     int64_t count = 0;  // a local: the workers' totals share a cache line
-    for (size_t i = 0; i < triangles.size(); ++i) {
-      setup.run(triangles[i], s);
-      if (s.status != SetupStatus::Drawn || !touches_band(s, id, threads)) continue;
-      BandSink sink{f, id, threads};
-      walker.walk(s, adders, 0, false, sink, unused);
-      passes[i] = sink.passes;
-      count += sink.tested;
+    for (uint64_t k = 0;; ++k) {
+      const SetupRing::Slot* slot = ring.at(k);
+      if (!slot) break;
+      if (touches_band(slot->setup, id, threads)) {
+        BandSink sink{f, id, threads};
+        walk_band(walker, slot->setup, adders, sink);
+        passes[slot->triangle] = sink.passes;
+        count += sink.tested;
+      }
+      ring.release(id, k);
     }
     tested = count;
   } catch (...) {
     failure = std::current_exception();
+    ring.release(id, UINT64_MAX - 1);  // the timing thread must not wait for it
   }
 }
 
@@ -130,23 +193,28 @@ void render_threaded(Pipeline& p, const std::vector<SnappedTriangle>& triangles,
                     p.z_adder().plain_depth_output(), &p.texture(), selected_run_kernel_version().kernel};
   std::vector<TriangleRecord>* log = p.triangle_log();
   const size_t log_start = log ? log->size() : 0;
-  // The calling thread is one of the threads: it does the timing.
+  // The calling thread is one of the threads: it sets up every triangle and does the timing.
   const unsigned count = unsigned(threads - 1);
+  SetupRing ring(count);
   std::vector<std::vector<int64_t>> passes(count, std::vector<int64_t>(triangles.size(), 0));
   std::vector<int64_t> tested(count, 0);
   std::vector<std::exception_ptr> failures(count + 1);
   std::vector<std::thread> workers;
   for (unsigned id = 0; id < count; ++id)
-    workers.emplace_back(work, std::cref(p), std::cref(frame), std::cref(triangles), id, count, std::ref(passes[id]),
+    workers.emplace_back(work, std::cref(p), std::cref(frame), std::ref(ring), id, count, std::ref(passes[id]),
                          std::ref(tested[id]), std::ref(failures[id]));
 
   p.set_walk_runner(std::make_shared<const TimingWalk>());
   p.set_timing_only(true);
   try {
-    for (const SnappedTriangle& t : triangles) p.submit(t);
+    for (size_t i = 0; i < triangles.size(); ++i) {
+      p.submit(triangles[i]);
+      if (p.last_setup().status == SetupStatus::Drawn) ring.push(i, p.last_setup());
+    }
   } catch (...) {
     failures[count] = std::current_exception();
   }
+  ring.close();
   for (std::thread& t : workers) t.join();
   p.set_timing_only(false);
   const WalkRunnerChoice choice = Pipeline::walk_runner_choice();

@@ -2,13 +2,14 @@
 // fragments, buffer words, counters, records and cycles (tests/test_threads.cpp).
 //
 // No cycle depends on a depth test's result or a buffer word, so the frame splits in two:
-//  - the timing: the calling thread submits every triangle to the pipeline in timing-only mode
-//    (Pipeline::set_timing_only): setup, walker, texture unit and z-buffer timing, one serial chain;
+//  - the timing: the calling thread sets up every triangle and submits it to the pipeline in
+//    timing-only mode (Pipeline::set_timing_only): walker, texture unit and z-buffer timing, one
+//    serial chain, without stepping the plane registers; it passes each drawn triangle's setup
+//    result on to the workers through a ring, in submission order;
 //  - the depth tests and writes: threads - 1 worker threads; worker k owns the rows y with
-//    (y / kBandRows) % (threads - 1) == k, sets up every triangle itself in submission order,
-//    and tests and writes only its own rows' fragments. A pixel's
-//    fragments are tested in submission order, as in the single-threaded model; no two threads
-//    write the same word. At 2 threads one worker does every depth test beside the timing.
+//    (y / kBandRows) % (threads - 1) == k, walks every drawn triangle touching them in submission
+//    order, and tests and writes only its own rows' fragments. A pixel's fragments are tested in
+//    submission order, as in the single-threaded model; no two threads write the same word.
 #pragma once
 
 #include <vector>

@@ -135,6 +135,14 @@ class Pipeline {
     RunSink<Runs> sink{*this, record, runs};
     return walker_.walk(s, adders_, load_cycle, walker_idle_load_, sink, walker_counters_);
   }
+  // The same for a timing-only pipeline: no plane register is stepped, and a run is offered as
+  // runs.run(zbuffer, address, n, cycle, record), which takes its cycles alone.
+  template <class Runs>
+  int64_t walk_timing_offering_runs(const SetupResult& s, int64_t load_cycle, TriangleRecord& record, Runs& runs) {
+    NoPlanes planes;
+    TimingRunSink<Runs> sink{*this, record, runs};
+    return walker_.walk(s, planes, load_cycle, walker_idle_load_, sink, walker_counters_);
+  }
 
  private:
   template <bool Trace>
@@ -158,13 +166,37 @@ class Pipeline {
     }
   };
 
+  // The Z adder's stepping interface without registers, for the timing-only walk: it reads only
+  // whether the triangle is textured.
+  struct NoPlanes {
+    bool textured_ = false;
+    void load(const SetupResult& s) { textured_ = s.textured; }
+    void step_x() {}
+    void next_row() {}
+    void enter_row_at(int64_t) {}
+    bool textured() const { return textured_; }
+  };
+  template <class Runs>
+  struct TimingRunSink {
+    static constexpr bool kEntersRowsAtOffset = true;
+    Pipeline& p;
+    TriangleRecord& record;
+    Runs& runs;
+    int64_t fragment(int x, int y, const NoPlanes& planes, int64_t cycle) {
+      ++record.fragments;
+      return p.take(uint32_t(y) * uint32_t(p.profile_.width) + uint32_t(x), planes.textured(), cycle).walker;
+    }
+    bool run(int x, int y, int64_t n, NoPlanes&, int64_t cycle) {
+      return runs.run(p.zbuffer_, uint32_t(y) * uint32_t(p.profile_.width) + uint32_t(x), n, cycle, record);
+    }
+  };
+
   // The walker's fragment output, wired to the z-buffer's input (through the texture unit when there
-  // is one): the cycle the walker's candidate is taken, the fragment's depth test and write; with
-  // Trace, reported to the sink.
-  template <bool Trace>
-  int64_t take_fragment(int x, int y, const ZAdder& adders, int64_t cycle, TriangleRecord& record) {
-    const uint32_t address = uint32_t(y) * uint32_t(profile_.width) + uint32_t(x);
-    const bool textured = adders.textured();
+  // is one): the cycles in which the walker's candidate and the z-buffer's input take it.
+  struct Taken {
+    int64_t walker, zbuffer;
+  };
+  Taken take(uint32_t address, bool textured, int64_t cycle) {
     int64_t walker_taken = cycle, offered = cycle;
     if (profile_.texture_unit) {
       const TextureUnit::Passage passage = texture_unit_.pass(cycle, textured);
@@ -173,9 +205,20 @@ class Pipeline {
     const int64_t taken = zbuffer_.take(address, offered);
     if (profile_.texture_unit) texture_unit_.left(taken);
     else walker_taken = taken;
+    return {walker_taken, taken};
+  }
+
+  // A fragment taken (take()), its depth test and write; with Trace, reported to the sink. Returns
+  // the cycle the walker's candidate is taken.
+  template <bool Trace>
+  int64_t take_fragment(int x, int y, const ZAdder& adders, int64_t cycle, TriangleRecord& record) {
+    const uint32_t address = uint32_t(y) * uint32_t(profile_.width) + uint32_t(x);
+    const bool textured = adders.textured();
+    const Taken cycles = take(address, textured, cycle);
+    const int64_t taken = cycles.zbuffer;
     if (!Trace && timing_only_) {
       ++record.fragments;
-      return walker_taken;
+      return cycles.walker;
     }
     const uint32_t z = adders.depth();
     Rgb color = adders.color();
@@ -191,7 +234,7 @@ class Pipeline {
     if (Trace)
       sink_->on_fragment(
           Fragment{record.index, x, y, z, color, pass, taken, textured, uv, zbuffer_.last_read() + profile_.memory_latency});
-    return walker_taken;
+    return cycles.walker;
   }
 
   Profile profile_;

@@ -29,11 +29,12 @@ struct WalkerCounters {
 // run(x, y, n, adders, cycle): take n covered candidates of row y from pixel x, presented in
 // consecutive cycles from `cycle`, at once (stepping the adders n times), when none of them can
 // stall; it returns false to have them one at a time. The pipeline offers it; observers need not.
-template <class Sink, class = void>
+template <class Sink, class Adders, class = void>
 struct TakesRuns : std::false_type {};
-template <class Sink>
-struct TakesRuns<Sink, std::void_t<decltype(std::declval<Sink&>().run(0, 0, int64_t(0), std::declval<ZAdder&>(),
-                                                                      int64_t(0)))>> : std::true_type {};
+template <class Sink, class Adders>
+struct TakesRuns<Sink, Adders,
+                 std::void_t<decltype(std::declval<Sink&>().run(0, 0, int64_t(0), std::declval<Adders&>(), int64_t(0)))>>
+    : std::true_type {};
 
 // A sink may also declare `static constexpr bool kEntersRowsAtOffset = true`: the span walk then
 // enters each row at its offset t with ZAdder::enter_row_at (a multiplier; the same outputs as the
@@ -54,8 +55,10 @@ class ScanlineWalker {
   // last candidate cycle. For each covered pixel it calls sink.fragment(x, y, adders, cycle), which
   // returns the cycle the z-buffer accepted the fragment (>= cycle; the walker holds meanwhile).
   // Returns walker_end: the cycle in which the triangle's last candidate (or empty row) moved on.
-  template <class Sink>
-  int64_t walk(const SetupResult& s, ZAdder& adders, int64_t load_cycle, bool idle_load, Sink& sink,
+  // `adders` is the Z adder (ZAdder), or anything with its stepping interface whose outputs the
+  // sink does not read (the pipeline's timing-only walk steps none).
+  template <class Sink, class Adders>
+  int64_t walk(const SetupResult& s, Adders& adders, int64_t load_cycle, bool idle_load, Sink& sink,
                WalkerCounters& counters) const {
     adders.load(s);
     if (idle_load) counters.busy += load_cycles_;
@@ -66,8 +69,8 @@ class ScanlineWalker {
   }
 
  private:
-  template <class Sink>
-  static int64_t emit(int x, int y, ZAdder& adders, int64_t cycle, Sink& sink, WalkerCounters& counters) {
+  template <class Sink, class Adders>
+  static int64_t emit(int x, int y, Adders& adders, int64_t cycle, Sink& sink, WalkerCounters& counters) {
     const int64_t accepted = sink.fragment(x, y, adders, cycle);
     counters.stall += accepted - cycle;
     return accepted + 1;
@@ -75,11 +78,11 @@ class ScanlineWalker {
 
   // n covered candidates of row y from pixel x, one per clock (each held while the z-buffer stalls
   // it); the adders step past each. Returns the cycle after the last.
-  template <class Sink>
-  static int64_t emit_run(int x, int y, int64_t n, ZAdder& adders, int64_t cycle, Sink& sink,
+  template <class Sink, class Adders>
+  static int64_t emit_run(int x, int y, int64_t n, Adders& adders, int64_t cycle, Sink& sink,
                           WalkerCounters& counters) {
     for (; n > 0; ++x, --n) {
-      if constexpr (TakesRuns<Sink>::value)
+      if constexpr (TakesRuns<Sink, Adders>::value)
         if (sink.run(x, y, n, adders, cycle)) return cycle + n;
       cycle = emit(x, y, adders, cycle, sink, counters);
       adders.step_x();
@@ -87,8 +90,8 @@ class ScanlineWalker {
     return cycle;
   }
 
-  template <class Sink>
-  int64_t walk_bbox(const SetupResult& s, ZAdder& adders, int64_t cycle, Sink& sink, WalkerCounters& counters) const {
+  template <class Sink, class Adders>
+  int64_t walk_bbox(const SetupResult& s, Adders& adders, int64_t cycle, Sink& sink, WalkerCounters& counters) const {
     int64_t row0 = s.edge[0].start, row1 = s.edge[1].start, row2 = s.edge[2].start;
     const int64_t sx0 = s.edge[0].step_x, sx1 = s.edge[1].step_x, sx2 = s.edge[2].step_x;
     const int64_t width = s.x1 - s.x0 + 1;
@@ -121,8 +124,8 @@ class ScanlineWalker {
     return cycle;
   }
 
-  template <class Sink>
-  int64_t walk_span(const SetupResult& s, ZAdder& adders, int64_t cycle, Sink& sink, WalkerCounters& counters) const {
+  template <class Sink, class Adders>
+  int64_t walk_span(const SetupResult& s, Adders& adders, int64_t cycle, Sink& sink, WalkerCounters& counters) const {
     struct EdgeState {
       int64_t row_value, quot, rem, divisor, step_x, step_y, step_quot, step_rem;
       int slot;  // left edges: the left-edge slot (the number of left edges before it), else -1
