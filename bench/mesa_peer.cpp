@@ -45,6 +45,7 @@ struct PeerOptions {
   std::string driver = "llvmpipe";
   int repeat = 3;
   int show_differences = 0;  // print the first this many differing pixels
+  int threads = 1;           // the model's render threads, and llvmpipe's (LP_NUM_THREADS) unless set
   ProfileOptions profile;
 };
 
@@ -92,7 +93,8 @@ int run(const PeerOptions& o) {
 
   // The driver is chosen when the first context is made.
   setenv("GALLIUM_DRIVER", o.driver.c_str(), 1);
-  if (!std::getenv("LP_NUM_THREADS")) setenv("LP_NUM_THREADS", "0", 1);
+  // One thread: llvmpipe rasterizes in the calling thread (0); N: N rasterizer threads.
+  if (!std::getenv("LP_NUM_THREADS")) setenv("LP_NUM_THREADS", std::to_string(o.threads > 1 ? o.threads : 0).c_str(), 1);
   OSMesaContext context = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
   if (!context) throw std::runtime_error("OSMesaCreateContextExt failed");
   // The framebuffer spans the whole guard band, [-W, 2W) x [-H, 2H), so that Mesa never clips a
@@ -169,7 +171,7 @@ int run(const PeerOptions& o) {
   double best = 0, best_cpu = 0;
   ModelRun model_best;
   for (int r = 0; r < o.repeat; ++r) {
-    const ModelRun model = time_model(snapped, profile);
+    const ModelRun model = time_model(snapped, profile, o.threads);
     if (r == 0 || model.seconds < model_best.seconds) model_best.seconds = model.seconds;
     if (r == 0 || model.cpu_seconds < model_best.cpu_seconds) model_best.cpu_seconds = model.cpu_seconds;
     model_best.stats = model.stats;
@@ -189,7 +191,7 @@ int run(const PeerOptions& o) {
   glDeleteBuffers(1, &buffer);
   OSMesaDestroyContext(context);
 
-  const std::string difference = untraced_differs_from_traced(snapped, profile);
+  const std::string difference = untraced_differs_from_traced(snapped, profile, o.threads);
   const double model_fragments = double(model_best.stats.fragments), triangles = double(snapped.size());
   std::printf("mesa_peer: %s, %zu triangles, %dx%d, subpixel_bits %d, best of %d\n", source.c_str(), snapped.size(),
               profile.width, profile.height, profile.subpixel_bits, o.repeat);
@@ -198,13 +200,16 @@ int run(const PeerOptions& o) {
   std::printf("peer fragments    %lld, %.4g per second, %.4g per cpu second\n", (long long)mesa_fragments,
               double(mesa_fragments) / best, double(mesa_fragments) / best_cpu);
   std::printf("peer triangles    %.4g per cpu second\n", triangles / best_cpu);
-  std::printf("model time        %.6f s wall, %.6f s cpu (untraced render, %s traversal)\n", model_best.seconds,
-              model_best.cpu_seconds, to_string(profile.traversal));
+  std::printf("model time        %.6f s wall, %.6f s cpu (untraced render, %s traversal, %d thread%s)\n",
+              model_best.seconds, model_best.cpu_seconds, to_string(profile.traversal), o.threads,
+              o.threads == 1 ? "" : "s");
   std::printf("model fragments   %lld, %.4g per second, %.4g per cpu second\n", (long long)model_best.stats.fragments,
               model_fragments / model_best.seconds, model_fragments / model_best.cpu_seconds);
   std::printf("model triangles   %.4g per cpu second\n", triangles / model_best.cpu_seconds);
   std::printf("model / peer      %.2f (fragments per cpu second)\n",
               (model_fragments / model_best.cpu_seconds) / (double(mesa_fragments) / best_cpu));
+  std::printf("model / peer wall %.2f (fragments per second)\n",
+              (model_fragments / model_best.seconds) / (double(mesa_fragments) / best));
   std::printf("differing pixels  %lld (count of covering triangles, modulo 256)\n", (long long)differing_pixels);
   std::printf("model verified    %s\n", difference.empty() ? "untraced render equals a traced one (counters, records, buffers)"
                                                            : ("NO: " + difference).c_str());
@@ -228,6 +233,11 @@ int main(int argc, char** argv) {
   app.add_option("--repeat", o.repeat, "timed repetitions; the best is reported")->check(CLI::Range(1, 100))
       ->capture_default_str();
   app.add_option("--show-differences", o.show_differences, "print the first N pixels whose coverage differs")
+      ->capture_default_str();
+  app.add_option("--threads", o.threads,
+                 "the model's render threads, and llvmpipe's rasterizer threads (LP_NUM_THREADS, 0 for one) "
+                 "unless LP_NUM_THREADS is set")
+      ->check(CLI::Range(1, 256))
       ->capture_default_str();
   add_profile_options(app, o.profile);
   try {

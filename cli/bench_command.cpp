@@ -70,7 +70,9 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
       ->capture_default_str();
   cmd->add_option("--repeat", o.repeat, "timed repetitions; the best is reported")->check(CLI::Range(1, 100))
       ->capture_default_str();
-  cmd->add_option("--threads", o.threads, "model: threads of the timed render (checked equal to a traced one)")
+  o.threads = machine_threads();
+  cmd->add_option("--threads", o.threads,
+                  "model: threads of the timed render (checked equal to a traced one); default: the machine's cores")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
   add_profile_options(*cmd, o.profile);

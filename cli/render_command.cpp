@@ -14,6 +14,7 @@
 
 #include "backend.h"
 #include "builtin_scenes.h"
+#include "fast/threaded_render.h"
 #include "frontend/scene.h"
 #include "inputs.h"
 #include "model/input_error.h"
@@ -85,9 +86,10 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
                   "stall pattern, in SystemC)")
       ->check(CLI::IsMember(backend_names()))
       ->type_name("NAME");
+  o.threads = machine_threads();
   cmd->add_option("--threads", o.threads,
                   "model: threads of the render, the same frame at any count (without --fragments, which "
-                  "traces on one thread)")
+                  "traces on one thread); default: the machine's cores")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
   add_texture_options(*cmd, o);

@@ -1,5 +1,6 @@
 #include "fast/fast_walk.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "fast/run_kernels.h"
@@ -58,9 +59,20 @@ struct Runs {
   }
 };
 
+// The words of a triangle's first two rows, which the walk's own prefetch (two rows below each
+// run) does not ask for: the rows of its vertices' box, before the setup.
+void prefetch_first_rows(Pipeline& p, const SnappedTriangle& t) {
+  const int S = p.profile().subpixel_bits;
+  const SnappedVertex* v = t.v;
+  const int64_t x0 = std::min({v[0].x, v[1].x, v[2].x}) >> S, x1 = std::max({v[0].x, v[1].x, v[2].x}) >> S;
+  const int64_t y0 = std::min({v[0].y, v[1].y, v[2].y}) >> S;
+  ZBufferRuns(p.zbuffer_words()).prefetch_box(x0, x1, y0, 2);
+}
+
 // The walk with a run kernel called per run; the rest of the walk inlined (flatten).
 class KernelWalk final : public WalkRunner {
  public:
+  void prefetch(Pipeline& p, const SnappedTriangle& t) const override { prefetch_first_rows(p, t); }
   explicit KernelWalk(const RunKernelVersion& kernel) : kernel_(kernel) {}
   __attribute__((flatten)) int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle,
                                         TriangleRecord& record) const override {
@@ -82,6 +94,7 @@ RASTERSIM_AVX512 __attribute__((flatten)) int64_t walk_avx512(Pipeline& p, const
 
 class Avx512Walk final : public WalkRunner {
  public:
+  void prefetch(Pipeline& p, const SnappedTriangle& t) const override { prefetch_first_rows(p, t); }
   int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record) const override {
     return walk_avx512(p, s, load_cycle, record);
   }

@@ -233,4 +233,9 @@ void render_threaded(Pipeline& p, const std::vector<SnappedTriangle>& triangles,
   p.add_depth_results(all_passes, all_tested - all_passes);
 }
 
+int machine_threads() {
+  const unsigned cores = std::thread::hardware_concurrency();
+  return cores == 0 ? 1 : int(std::min(cores, 256u));
+}
+
 }  // namespace rastersim

@@ -29,4 +29,8 @@ constexpr int kBandRows = 8;
 // this thread and threads - 1 workers.
 void render_threaded(Pipeline& p, const std::vector<SnappedTriangle>& triangles, int threads);
 
+// The machine's cores (std::thread::hardware_concurrency, 1 when unknown, at most 256): the default
+// thread count of `rastersim render` and `bench`.
+int machine_threads();
+
 }  // namespace rastersim

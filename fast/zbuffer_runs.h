@@ -79,6 +79,20 @@ class ZBufferRuns {
     return passes;
   }
 
+  // Asks the caches for the words of rows [y, y + rows) and columns [x0, x1] (clipped to the
+  // buffer). No effect on results.
+  __attribute__((always_inline)) void prefetch_box(int64_t x0, int64_t x1, int64_t y, int rows) const {
+    x0 = std::max<int64_t>(x0, 0), x1 = std::min<int64_t>(x1, z_.width_ - 1);
+    if (x0 > x1) return;
+    for (int64_t r = std::max<int64_t>(y, 0); r < std::min<int64_t>(y + rows, z_.height_); ++r) {
+      const size_t at = size_t(r) * size_t(z_.width_) + size_t(x0);
+      for (int64_t i = 0; i <= x1 - x0 + 15; i += 16) {
+        __builtin_prefetch(z_.memory_.depth().data() + at + i, 1);
+        __builtin_prefetch(z_.memory_.color().data() + at + i, 1);
+      }
+    }
+  }
+
   // Asks the caches for the words `rows` rows below a run of n: the walker most likely gets there
   // soon, and the buffers outgrow the caches (the model's main memory cost). No effect on results.
   // Always inlined: a call to it GCC finds pure (a prefetch has no effect it tracks) and deletes.

@@ -59,6 +59,7 @@ int64_t Pipeline::walk_stepwise(const SetupResult& s, int64_t load_cycle, Triang
 void Pipeline::submit(const SnappedTriangle& tri) {
   TriangleRecord record;
   record.index = next_index_++;
+  if (walk_runner_ && !sink_) walk_runner_->prefetch(*this, tri);
   setup_.run(tri, last_setup_);
   const SetupResult& s = last_setup_;
   record.status = s.status;

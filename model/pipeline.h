@@ -80,6 +80,9 @@ class WalkRunner {
  public:
   virtual ~WalkRunner() = default;
   virtual int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record) const = 0;
+  // Called with each triangle before its setup, which takes long enough for the memory to bring in
+  // the words of the triangle's first rows if asked for them here (no effect on any result).
+  virtual void prefetch(Pipeline&, const SnappedTriangle&) const {}
 };
 // Picks a new pipeline's walk runner (nullptr: the specification's walk).
 using WalkRunnerChoice = std::shared_ptr<const WalkRunner> (*)(const Pipeline& p);
