@@ -70,11 +70,10 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
       ->capture_default_str();
   cmd->add_option("--repeat", o.repeat, "timed repetitions; the best is reported")->check(CLI::Range(1, 100))
       ->capture_default_str();
-  o.threads = machine_threads();
   cmd->add_option("--threads", o.threads,
-                  "model: threads of the timed render (checked equal to a traced one); default: the machine's cores")
-      ->check(CLI::Range(1, 256))
-      ->capture_default_str();
+                  "model: threads of the timed render (checked equal to a traced one); default: the machine's cores when the "
+                  "triangles average 128 pixels or more and cover 524288 or more, else 1")
+      ->check(CLI::Range(1, 256));
   add_profile_options(*cmd, o.profile);
   return cmd;
 }
@@ -219,9 +218,10 @@ int run_bench(const BenchOptions& o) {
   const std::vector<SnappedTriangle> snapped = load_bench_triangles(o.what, profile, source);
   if (backend != Backend::Model) return run_simulation_bench(o, backend, profile, snapped, source);
 
+  const int threads = o.threads > 0 ? o.threads : default_threads(snapped, profile);
   ModelRun best;
   for (int r = 0; r < o.repeat; ++r) {
-    const ModelRun run = time_model(snapped, profile, o.threads);
+    const ModelRun run = time_model(snapped, profile, threads);
     if (r > 0 && (run.stats.fragments != best.stats.fragments || run.stats.cycles != best.stats.cycles)) {
       std::fprintf(stderr, "rastersim: repetition %d gave different fragments or cycles: the model is not deterministic\n", r);
       return 1;
@@ -230,7 +230,7 @@ int run_bench(const BenchOptions& o) {
     if (r == 0 || run.cpu_seconds < best.cpu_seconds) best.cpu_seconds = run.cpu_seconds;
     best.stats = run.stats;
   }
-  const std::string difference = untraced_differs_from_traced(snapped, profile, o.threads);
+  const std::string difference = untraced_differs_from_traced(snapped, profile, threads);
   if (!difference.empty()) {
     std::fprintf(stderr, "rastersim: the untraced (timed) render differs from the traced one: %s\n", difference.c_str());
     return 1;
@@ -240,7 +240,7 @@ int run_bench(const BenchOptions& o) {
   const double n = double(snapped.size()), fragments = double(stats.fragments);
   std::printf("bench: %s, %zu triangles, %dx%d, %s traversal, %s shading, %d thread%s, best of %d\n", source.c_str(),
               snapped.size(), profile.width, profile.height, to_string(profile.traversal), to_string(profile.shading),
-              o.threads, o.threads == 1 ? "" : "s", o.repeat);
+              threads, threads == 1 ? "" : "s", o.repeat);
   std::printf("wall time   %.6f s (render only)\n", best.seconds);
   std::printf("cpu time    %.6f s (render only, this process, every thread)\n", best.cpu_seconds);
   std::printf("triangles   %.4g per second, %.4g per cpu second\n", n / best.seconds, n / best.cpu_seconds);

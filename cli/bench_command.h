@@ -27,7 +27,7 @@ struct BenchOptions {
   BenchInput what;
   std::string backend = "model";  // rtl, cosim: simulation speed (cycles per second) instead
   int repeat = 3;
-  int threads = 1;  // model: render threads (the command's default: machine_threads())
+  int threads = 0;  // model: render threads; 0: default_threads() (fast/threaded_render.h)
   ProfileOptions profile;
 };
 

@@ -86,12 +86,11 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
                   "stall pattern, in SystemC)")
       ->check(CLI::IsMember(backend_names()))
       ->type_name("NAME");
-  o.threads = machine_threads();
   cmd->add_option("--threads", o.threads,
                   "model: threads of the render, the same frame at any count (without --fragments, which "
-                  "traces on one thread); default: the machine's cores")
-      ->check(CLI::Range(1, 256))
-      ->capture_default_str();
+                  "traces on one thread); default: the machine's cores when the "
+                  "triangles average 128 pixels or more and cover 524288 or more, else 1")
+      ->check(CLI::Range(1, 256));
   add_texture_options(*cmd, o);
   cmd->add_option("--dump-tri", o.dump_tri_out,
                   "write the screen-space triangles the input produced (before snapping) as a .tri file")
@@ -241,7 +240,7 @@ int run_render(const RenderOptions& o) {
   backend_options.wave_files = wave;
   backend_options.wave = o.wave;
   backend_options.texture = texture;
-  backend_options.threads = o.threads;
+  backend_options.threads = o.threads > 0 ? o.threads : default_threads(snapped, profile);
   backend_options.replay_prefix =
       (std::filesystem::path(o.replay_dir.empty() ? "." : o.replay_dir) / "rastersim-replay").string();
   const RenderResult result = render_triangles(

@@ -28,7 +28,7 @@ struct RenderOptions {
   bool ortho = false;
   std::string backend = "model";
   uint64_t seed = 1;          // rtl/cosim: random power-on state
-  int threads = 1;            // model without --fragments: render threads (the command's default: machine_threads())
+  int threads = 0;            // model without --fragments: render threads; 0: default_threads()
   WaveOptions wave;           // rtl/cosim: waveform
   std::string replay_dir;  // cosim: where a divergence's replay files go (empty: the working folder)
   std::string texture;         // texture image for textured triangles (the built-in scene's when empty)

@@ -238,4 +238,22 @@ int machine_threads() {
   return cores == 0 ? 1 : int(std::min(cores, 256u));
 }
 
+int default_threads(const std::vector<SnappedTriangle>& triangles, const Profile& profile) {
+  if (triangles.empty()) return 1;
+  const int S = profile.subpixel_bits;
+  int64_t pixels = 0;
+  for (const SnappedTriangle& t : triangles) {
+    const SnappedVertex* v = t.v;
+    auto clamp = [](int64_t value, int64_t limit) { return std::min(std::max<int64_t>(value, 0), limit); };
+    const int64_t x0 = clamp(std::min({v[0].x, v[1].x, v[2].x}) >> S, profile.width);
+    const int64_t x1 = clamp((std::max({v[0].x, v[1].x, v[2].x}) >> S) + 1, profile.width);
+    const int64_t y0 = clamp(std::min({v[0].y, v[1].y, v[2].y}) >> S, profile.height);
+    const int64_t y1 = clamp((std::max({v[0].y, v[1].y, v[2].y}) >> S) + 1, profile.height);
+    // The triangle's area in pixels, at most its box's on the screen.
+    const int64_t area2 = int64_t(v[1].x - v[0].x) * (v[2].y - v[0].y) - int64_t(v[2].x - v[0].x) * (v[1].y - v[0].y);
+    pixels += std::min((area2 < 0 ? -area2 : area2) >> (2 * S + 1), (x1 - x0) * (y1 - y0));
+  }
+  return pixels >= kThreadedPixels * int64_t(triangles.size()) && pixels >= kThreadedFramePixels ? machine_threads() : 1;
+}
+
 }  // namespace rastersim

@@ -29,8 +29,15 @@ constexpr int kBandRows = 8;
 // this thread and threads - 1 workers.
 void render_threaded(Pipeline& p, const std::vector<SnappedTriangle>& triangles, int threads);
 
-// The machine's cores (std::thread::hardware_concurrency, 1 when unknown, at most 256): the default
-// thread count of `rastersim render` and `bench`.
+// The machine's cores (std::thread::hardware_concurrency, 1 when unknown, at most 256).
 int machine_threads();
+
+// The thread count of `rastersim render` and `bench` without --threads: the machine's cores when
+// the triangles average at least kThreadedPixels pixels (area, at most the box's on the screen)
+// and the frame has at least kThreadedFramePixels, else 1. Passing a triangle between cores costs
+// about as much as drawing a hundred pixels, and a smaller frame is done before more threads pay
+// for their start (the crossovers measured are in docs/performance.md, "Threads").
+constexpr int64_t kThreadedPixels = 128, kThreadedFramePixels = int64_t(1) << 19;
+int default_threads(const std::vector<SnappedTriangle>& triangles, const Profile& profile);
 
 }  // namespace rastersim

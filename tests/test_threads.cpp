@@ -146,5 +146,31 @@ TEST(Threads, PipelineIsPlainAfterAThreadedFrame) {
   expect_same_frame(spec, again);
 }
 
+// The default thread count: one for small triangles or a small frame, the machine's cores for
+// triangles of kThreadedPixels and more covering kThreadedFramePixels. A right triangle with legs
+// of a pixels has a^2 / 2 pixels.
+TEST(Threads, DefaultThreadsFollowTriangleAreaAndFrameSize) {
+  const Profile profile = make_profile(1024, 1024, 4, Traversal::Span);
+  auto right_triangles = [&](int legs, int count) {
+    std::vector<SnappedTriangle> triangles(static_cast<size_t>(count));
+    for (SnappedTriangle& t : triangles) {
+      t.v[0].x = 16, t.v[0].y = 16;
+      t.v[1].x = 16 + legs * 16, t.v[1].y = 16;
+      t.v[2].x = 16, t.v[2].y = 16 + legs * 16;
+    }
+    return triangles;
+  };
+  EXPECT_EQ(default_threads({}, profile), 1);
+  EXPECT_EQ(default_threads(right_triangles(15, 100000), profile), 1);   // 112 pixels, under the bound
+  EXPECT_EQ(default_threads(right_triangles(17, 1000), profile), 1);     // 144 pixels, but a small frame
+  EXPECT_EQ(default_threads(right_triangles(17, 100000), profile), machine_threads());
+  EXPECT_EQ(default_threads(right_triangles(1000, 2), profile), machine_threads());
+  // Off the screen: the box on the screen bounds the area.
+  std::vector<SnappedTriangle> off = right_triangles(1000, 100);
+  for (SnappedTriangle& t : off)
+    for (SnappedVertex& v : t.v) v.x -= 2000 * 16;
+  EXPECT_EQ(default_threads(off, profile), 1);
+}
+
 }  // namespace
 }  // namespace rastersim::test
