@@ -2,15 +2,18 @@
 # Every figure of docs/performance.md, in one run: model speed beside Mesa (llvmpipe single-threaded,
 # softpipe) on the same triangles; hardware throughput per traversal; RTL simulation speed
 # (Verilator alone, co-simulation, Icarus on the same testbench); hardware cost on an iCE40.
-# Usage: scripts/performance.sh [BUILD_DIR] [--no-hw-cost]   (default build-perf; results in
-# BUILD_DIR/performance/). Figures on a shared machine vary with its load: the load is printed.
+# Usage: scripts/performance.sh [BUILD_DIR] [--no-hw-cost] [--model-only]   (default build-perf;
+# results in BUILD_DIR/performance/; --model-only: the model against Mesa, at 1 and N threads, and
+# nothing after). Figures on a shared machine vary with its load: the load is printed.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$root/build-perf"
 hw_cost=1
+model_only=0
 for arg in "$@"; do
   case "$arg" in
     --no-hw-cost) hw_cost=0 ;;
+    --model-only) model_only=1 ;;
     *) build="$(realpath -m "$arg")" ;;
   esac
 done
@@ -43,7 +46,7 @@ inputs=(
 )
 # The Stanford bunny from Debian's glmark2-data, when installed.
 bunny=/usr/share/glmark2/models/bunny.obj
-[ -f "$bunny" ] && inputs+=("bunny|$bunny")
+if [ -f "$bunny" ]; then inputs+=("bunny|$bunny"); else bunny=""; fi
 for entry in "${inputs[@]}"; do
   name="${entry%%|*}"
   read -r -a args <<< "${entry#*|}"
@@ -60,6 +63,27 @@ for entry in "${inputs[@]}"; do
 done
 echo "(pixels: pixels whose count of covering triangles differs between the model and llvmpipe)"
 echo
+
+# The model's threaded render against llvmpipe's rasterizer threads, wall-clock, one process each.
+threads=$(nproc)
+echo "## Model against llvmpipe at 1 and $threads threads: fragments per second (million, wall), best of 10"
+printf '%-34s %8s %10s %10s %8s\n' input threads model llvmpipe model/lp
+for entry in "random-60px-1024|--triangles 20000 --size 60 --width 1024 --height 1024 --cull none" \
+             "random-large|--triangles 4000 --size 50..300" "scene-closeup|--scene closeup" \
+             "scene-default|--scene default" ${bunny:+"bunny|$bunny"}; do
+  name="${entry%%|*}"
+  read -r -a args <<< "${entry#*|}"
+  for n in 1 "$threads"; do
+    f="$out/threads-$name-$n.txt"
+    "$peer" "${args[@]}" --driver llvmpipe --repeat 10 --threads "$n" > "$f"
+    grep -q "^model verified    untraced render equals" "$f" || { echo "performance: model check failed on $name" >&2; exit 1; }
+    printf '%-34s %8s %10.2f %10.2f %8s\n' "$name" "$n" "$(awk "BEGIN { print $(value 'model fragments' 4 "$f") / 1e6 }")" \
+      "$(awk "BEGIN { print $(value 'peer fragments' 4 "$f") / 1e6 }")" "$(value 'model / peer wall' 5 "$f")"
+  done
+done
+echo "(llvmpipe: LP_NUM_THREADS=0 for 1 thread, else N rasterizer threads; the model: rastersim --threads N)"
+echo
+[ "$model_only" = 1 ] && { echo "machine load at the end: $(uptime | sed 's/.*load/load/')"; exit 0; }
 
 echo "## Hardware throughput (model cycles, equal to the RTL's), default profile, memory latency 2"
 printf '%-16s %-5s %10s %10s %9s %9s %9s %9s %7s\n' input walk fragments cycles frag/clk "walk busy" "held" "idle" setup
