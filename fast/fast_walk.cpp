@@ -73,6 +73,7 @@ void prefetch_first_rows(Pipeline& p, const SnappedTriangle& t) {
 class KernelWalk final : public WalkRunner {
  public:
   void prefetch(Pipeline& p, const SnappedTriangle& t) const override { prefetch_first_rows(p, t); }
+  bool reads_left_edge_planes() const override { return false; }  // rows entered with enter_row_at
   explicit KernelWalk(const RunKernelVersion& kernel) : kernel_(kernel) {}
   __attribute__((flatten)) int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle,
                                         TriangleRecord& record) const override {
@@ -95,6 +96,7 @@ RASTERSIM_AVX512 __attribute__((flatten)) int64_t walk_avx512(Pipeline& p, const
 class Avx512Walk final : public WalkRunner {
  public:
   void prefetch(Pipeline& p, const SnappedTriangle& t) const override { prefetch_first_rows(p, t); }
+  bool reads_left_edge_planes() const override { return false; }  // rows entered with enter_row_at
   int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record) const override {
     return walk_avx512(p, s, load_cycle, record);
   }

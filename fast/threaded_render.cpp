@@ -30,6 +30,8 @@ struct TimingRuns {
 
 class TimingWalk final : public WalkRunner {
  public:
+  // Neither this walk nor the workers' (BandSink enters rows with enter_row_at) reads them.
+  bool reads_left_edge_planes() const override { return false; }
   int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record) const override {
     TimingRuns runs{p.profile().texture_unit};
     return p.walk_timing_offering_runs(s, load_cycle, record, runs);

@@ -59,8 +59,9 @@ int64_t Pipeline::walk_stepwise(const SetupResult& s, int64_t load_cycle, Triang
 void Pipeline::submit(const SnappedTriangle& tri) {
   TriangleRecord record;
   record.index = next_index_++;
-  if (walk_runner_ && !sink_) walk_runner_->prefetch(*this, tri);
-  setup_.run(tri, last_setup_);
+  const bool runner = walk_runner_ && !sink_;
+  if (runner) walk_runner_->prefetch(*this, tri);
+  setup_.run(tri, last_setup_, !runner || walk_runner_->reads_left_edge_planes());
   const SetupResult& s = last_setup_;
   record.status = s.status;
   // The unit accepts when it is free and one of the setup_fifo_depth record credits is: the credit

@@ -83,6 +83,9 @@ class WalkRunner {
   // Called with each triangle before its setup, which takes long enough for the memory to bring in
   // the words of the triangle's first rows if asked for them here (no effect on any result).
   virtual void prefetch(Pipeline&, const SnappedTriangle&) const {}
+  // Whether the walk enters rows through the planes along the left edges (SetupResult::left) as
+  // the hardware does; a walk that enters them with ZAdder::enter_row_at does not need them set up.
+  virtual bool reads_left_edge_planes() const { return true; }
 };
 // Picks a new pipeline's walk runner (nullptr: the specification's walk).
 using WalkRunnerChoice = std::shared_ptr<const WalkRunner> (*)(const Pipeline& p);

@@ -52,7 +52,7 @@ PlaneSetup TriangleSetup::plane(const i128 value[3], const i128 edge_at_start[3]
   return p;
 }
 
-void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
+void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r, bool left_edge_planes) const {
   const Widths& w = widths_;
   const int S = profile_.subpixel_bits;
   // Every field of a drawn triangle's record is written below (the colour planes only with Gouraud
@@ -174,6 +174,7 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r) const {
   }
 
   // Planes along the left edges (docs/cycle-model.md): slot j takes the j-th edge with step_x > 0.
+  if (!left_edge_planes) return;
   int left_edge[kLeftEdgeSlots] = {-1, -1};
   for (int k = 0, slot = 0; k < 3 && slot < kLeftEdgeSlots; ++k)
     if (r.edge[k].step_x > 0) left_edge[slot++] = k;

@@ -105,8 +105,11 @@ class TriangleSetup {
     run(tri, r);
     return r;
   }
-  // The same into `r` (the pipeline's output register), without copying the result.
-  void run(const SnappedTriangle& tri, SetupResult& r) const;
+  // The same into `r` (the pipeline's output register), without copying the result. Without
+  // `left_edge_planes` the planes along the left edges (r.left) are not set up and keep what they
+  // held: for a walk that enters each row another way (ZAdder::enter_row_at, the fast walks in
+  // fast/).
+  void run(const SnappedTriangle& tri, SetupResult& r, bool left_edge_planes = true) const;
   const Widths& widths() const { return widths_; }
 
  private:
