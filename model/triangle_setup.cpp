@@ -34,13 +34,19 @@ PlaneSetup TriangleSetup::plane(const i128 value[3], const i128 edge_at_start[3]
                                 const int64_t step_y[3], const FloorDivider& by_area2, PlaneFormatBits format,
                                 const char* what) const {
   const int F = format.guard_bits;
-  auto weighted = [&](auto edge) { return value[0] * edge(1) + value[1] * edge(2) + value[2] * edge(0); };
+  // Every factor fits in 64 bits (vertex values; edge functions and steps, edge_bits <= 63 by
+  // model/widths.h): 64 x 64 -> 128-bit products.
+  auto product = [](i128 a, i128 b) { return i128(int64_t(a)) * int64_t(b); };
+  auto weighted = [&](auto edge) {
+    return product(value[0], edge(1)) + product(value[1], edge(2)) + product(value[2], edge(0));
+  };
   const i128 start_num = weighted([&](int k) { return edge_at_start[k]; });
   const i128 step_x_num = weighted([&](int k) { return i128(step_x[k]); });
   const i128 step_y_num = weighted([&](int k) { return i128(step_y[k]); });
-  // num 2^F as a product: a left shift of a negative value is undefined behaviour in C++17.
+  // num 2^F, shifted as an unsigned value: a left shift of a negative value is undefined
+  // behaviour in C++17 (and |num 2^F| < 2^127 here: its width is checked against the divider's).
   auto quotient = [&](i128 num) {
-    const i128 dividend = num * (i128(1) << F);
+    const i128 dividend = i128((unsigned __int128)num << F);
     if (unsigned_bits(dividend < 0 ? -dividend : dividend) > format.divider_bits)
       throw WidthOverflow(std::string(what) + " dividend exceeds its divider width");
     return wrap_signed(by_area2(dividend).quotient, format.reg_bits);
