@@ -35,7 +35,7 @@ struct Runs {
   RunKernelVersion kernel;  // unused with Avx512: run_avx512_masked, inlined
   bool run(ZBuffer& zbuffer, uint32_t address, int64_t n, ZAdder& adders, int64_t cycle, TriangleRecord& record) {
     ZBufferRuns z(zbuffer);
-    if (!z.settled(cycle)) return false;
+    if (!z.can_take_run(address, n, cycle)) return false;
     z.take_run(address, cycle, n);
     int64_t passes;
     z.prefetch_rows_below(address, n, 2);

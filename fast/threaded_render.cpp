@@ -21,7 +21,7 @@ struct TimingRuns {
   bool run(ZBuffer& zbuffer, uint32_t address, int64_t n, int64_t cycle, TriangleRecord& record) {
     if (texture_unit) return false;
     ZBufferRuns z(zbuffer);
-    if (!z.settled(cycle)) return false;
+    if (!z.can_take_run(address, n, cycle)) return false;
     z.take_run(address, cycle, n);
     record.fragments += n;
     return true;

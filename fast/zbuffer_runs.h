@@ -17,17 +17,24 @@ class ZBufferRuns {
  public:
   explicit ZBufferRuns(ZBuffer& zbuffer) : z_(zbuffer.state()) {}
 
-  // True once fragments offered one per cycle from `cycle` on are each taken in the cycle offered
-  // and read in the next until the next triangle: take_run() may be used. Never with a stall
-  // pattern: the memory may refuse any read.
-  bool settled(int64_t cycle) const {
-    return z_.fresh_ >= z_.latency_ && z_.last_read_ <= cycle && !z_.memory_.has_stalls();
+  // True when n fragments at consecutive addresses from `address`, offered one per cycle from
+  // `cycle`, are each taken in the cycle offered and read in the next: take_run() may be used.
+  // That holds when none waits for a read ahead of it, no hazard can hold one (the triangle's
+  // first L fragments are checked against the fragments in flight: none of these may have an
+  // address of the run), and the memory has no stall pattern (it may refuse any read).
+  bool can_take_run(uint32_t address, int64_t n, int64_t cycle) const {
+    if (z_.last_read_ > cycle || z_.memory_.has_stalls()) return false;
+    if (z_.fresh_ >= z_.latency_) return true;
+    for (int k = 0; k < z_.latency_; ++k)
+      if (uint64_t(z_.inflight_address_[size_t(k)] - address) < uint64_t(n)) return false;
+    return true;
   }
 
   // Timing of n fragments at consecutive addresses offered in consecutive cycles from `cycle`, when
-  // settled(cycle): each is taken in the cycle it is offered and read in the next. The same state
+  // can_take_run(): each is taken in the cycle it is offered and read in the next. The same state
   // and counters as n calls of take(), without the per-fragment bookkeeping.
   void take_run(uint32_t address, int64_t cycle, int64_t n) {
+    z_.fresh_ = int(std::min<int64_t>(z_.latency_, z_.fresh_ + n));
     // Taken in cycle .. cycle + n - 1, read in cycle + 1 .. cycle + n.
     const int64_t end = cycle + n + z_.latency_;
     z_.counters_.busy += end - std::max(cycle, z_.busy_until_ + 1) + 1;
