@@ -33,7 +33,7 @@ void Pipeline::reset() {
   setup_free_ = 0;
   walker_free_ = -1;
   std::fill(credit_release_.begin(), credit_release_.end(), -1);
-  drawn_ = 0;
+  credit_slot_ = 0;
   setup_busy_until_ = -1;
   last_busy_ = -1;
   external_pass_ = external_fail_ = 0;
@@ -67,10 +67,11 @@ void Pipeline::submit(const SnappedTriangle& tri) {
   // The unit accepts when it is free and one of the setup_fifo_depth record credits is: the credit
   // of the drawn triangle setup_fifo_depth drawn triangles back returns the cycle after its load.
   // The pipelined unit accepts only in the first cycle of a slot (frame cycles kI).
-  const int64_t credit_free = credit_release_[size_t(drawn_ % int64_t(credit_release_.size()))] + 1;
+  const int64_t credit_free = credit_release_[credit_slot_] + 1;
   int64_t accept = std::max(setup_free_, credit_free);
   const int64_t interval = timing_.interval;
-  if (interval > 0) accept = (accept + interval - 1) / interval * interval;
+  // (setup_free_ is then a slot's first cycle: only a later credit needs rounding up.)
+  if (interval > 0 && accept != setup_free_) accept = (accept + interval - 1) / interval * interval;
   record.setup_accept = accept;
   stats_.setup.stall += accept - setup_free_;  // a triangle waits, the FIFO is full
   ++stats_.triangles;
@@ -96,7 +97,8 @@ void Pipeline::submit(const SnappedTriangle& tri) {
     // the previous triangle's last candidate.
     record.walker_load = std::max(record.setup_done + 1, walker_free_);
     walker_idle_load_ = record.walker_load > walker_free_;
-    credit_release_[size_t(drawn_++ % int64_t(credit_release_.size()))] = record.walker_load;
+    credit_release_[credit_slot_] = record.walker_load;
+    credit_slot_ = credit_slot_ + 1 == credit_release_.size() ? 0 : credit_slot_ + 1;
     zbuffer_.begin_triangle(record.walker_load);  // the walker presents fragments after loading
     record.walker_end = sink_          ? walk_stepwise<true>(s, record.walker_load, record)
                         : walk_runner_ ? walk_runner_->walk(*this, s, record.walker_load, record)

@@ -167,8 +167,7 @@ class Pipeline {
       return p.take_fragment<false>(x, y, adders, cycle, record);
     }
     bool run(int x, int y, int64_t n, ZAdder& adders, int64_t cycle) {
-      const uint32_t address = uint32_t(y) * uint32_t(p.profile_.width) + uint32_t(x);
-      return runs.run(p.zbuffer_, address, n, adders, cycle, record);
+      return runs.run(p.zbuffer_, p.address(x, y), n, adders, cycle, record);
     }
   };
 
@@ -190,12 +189,15 @@ class Pipeline {
     Runs& runs;
     int64_t fragment(int x, int y, const NoPlanes& planes, int64_t cycle) {
       ++record.fragments;
-      return p.take(uint32_t(y) * uint32_t(p.profile_.width) + uint32_t(x), planes.textured(), cycle).walker;
+      return p.take(p.address(x, y), planes.textured(), cycle).walker;
     }
     bool run(int x, int y, int64_t n, NoPlanes&, int64_t cycle) {
-      return runs.run(p.zbuffer_, uint32_t(y) * uint32_t(p.profile_.width) + uint32_t(x), n, cycle, record);
+      return runs.run(p.zbuffer_, p.address(x, y), n, cycle, record);
     }
   };
+
+  // A pixel's word address in the buffers.
+  uint32_t address(int x, int y) const { return uint32_t(y) * uint32_t(profile_.width) + uint32_t(x); }
 
   // The walker's fragment output, wired to the z-buffer's input (through the texture unit when there
   // is one): the cycles in which the walker's candidate and the z-buffer's input take it.
@@ -218,7 +220,7 @@ class Pipeline {
   // the cycle the walker's candidate is taken.
   template <bool Trace>
   int64_t take_fragment(int x, int y, const ZAdder& adders, int64_t cycle, TriangleRecord& record) {
-    const uint32_t address = uint32_t(y) * uint32_t(profile_.width) + uint32_t(x);
+    const uint32_t address = this->address(x, y);
     const bool textured = adders.textured();
     const Taken cycles = take(address, textured, cycle);
     const int64_t taken = cycles.zbuffer;
@@ -263,7 +265,7 @@ class Pipeline {
   // Walker load cycles of the last setup_fifo_depth drawn triangles (a ring): a drawn triangle holds
   // a record credit from its accept to its load, and the setup unit accepts only with a free credit.
   std::vector<int64_t> credit_release_;
-  int64_t drawn_ = 0;            // drawn triangles so far (ring position)
+  size_t credit_slot_ = 0;       // the ring's entry of the next drawn triangle (drawn so far, modulo its size)
   int64_t walker_free_ = -1;     // first cycle the walker can load: the last drawn triangle's walker_end
   bool walker_idle_load_ = true;  // the walker loads the current record in a cycle of its own
   int64_t last_busy_ = -1;       // last cycle any unit was busy
