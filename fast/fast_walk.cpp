@@ -42,7 +42,6 @@ struct Runs {
 #ifdef RASTERSIM_HAVE_AVX512_KERNEL
     if (Avx512) {  // every run, inlined
       record.depth_pass += z.test_and_write_run(address, n, adders.run(), run_avx512_masked);
-      adders.step_x(n);
       record.fragments += n;
       return true;
     }
@@ -52,7 +51,6 @@ struct Runs {
     } else {
       passes = z.test_and_write_run(address, n, adders.run(), kernel.kernel);
     }
-    adders.step_x(n);
     record.fragments += n;
     record.depth_pass += passes;
     return true;

@@ -133,9 +133,9 @@ class Pipeline {
   // For a walk runner: the walk of a drawn triangle loaded in `load_cycle`, without a fragment sink,
   // in which each run of n covered candidates of a row is first offered to
   // runs.run(zbuffer, address, n, adders, cycle, record); it takes them at once, in cycles `cycle`
-  // on, stepping the adders past them (true), or leaves them to be taken one at a time (false).
-  // The fragments go from the walker to the z-buffer (no texture unit); the span walk enters each
-  // row with ZAdder::enter_row_at (the same outputs).
+  // on (true; the adders need not step past them, see kEntersRowsAtOffset in scanline_walker.h), or
+  // leaves them to be taken one at a time (false). The fragments go from the walker to the z-buffer
+  // (no texture unit); the span walk enters each row with ZAdder::enter_row_at (the same outputs).
   template <class Runs>
   int64_t walk_offering_runs(const SetupResult& s, int64_t load_cycle, TriangleRecord& record, Runs& runs) {
     RunSink<Runs> sink{*this, record, runs};

@@ -39,7 +39,9 @@ struct TakesRuns<Sink, Adders,
 // A sink may also declare `static constexpr bool kEntersRowsAtOffset = true`: the span walk then
 // enters each row at its offset t with ZAdder::enter_row_at (a multiplier; the same outputs as the
 // left-edge slots, which it leaves unstepped) instead of as the hardware does. For the fast walks
-// (fast/), whose fragments read only the registers' outputs.
+// (fast/), whose fragments read only the registers' outputs. Such a sink's run() need not step the
+// adders: a row has one run of covered candidates (the triangle is convex), and no output is read
+// after it before the next row's entry (enter_row_at, or next_row in the bbox walk).
 template <class Sink, class = void>
 struct EntersRowsAtOffset : std::false_type {};
 template <class Sink>
