@@ -27,8 +27,9 @@ struct WalkerCounters {
 
 // A sink takes each covered candidate through fragment(x, y, adders, cycle). It may also offer
 // run(x, y, n, adders, cycle): take n covered candidates of row y from pixel x, presented in
-// consecutive cycles from `cycle`, at once (stepping the adders n times), when none of them can
-// stall; it returns false to have them one at a time. The pipeline offers it; observers need not.
+// consecutive cycles from `cycle`, at once (stepping the adders n times, unless the sink enters
+// rows at their offset, below), when none of them can stall; it returns false to have them one at a
+// time. The pipeline offers it; observers need not.
 template <class Sink, class Adders, class = void>
 struct TakesRuns : std::false_type {};
 template <class Sink, class Adders>
