@@ -6,11 +6,12 @@
 # which a load that drifts during the run moves least.
 # Usage: scripts/model-speed-vs.sh [--pairs N] [--work DIR] COMMIT_A COMMIT_B [-- BENCH_ARGS...]
 #   default BENCH_ARGS: the 20,000 triangles of 60 px at 1024 x 1024 (docs/performance.md);
-#   default --pairs 9; worktrees and builds go to DIR (default build-speed-vs/), kept for reruns.
+#   default --pairs 9; worktrees and builds go to DIR (default $TMPDIR/rastersim-speed-vs, outside
+#   the checkout), kept for reruns; `git worktree prune` forgets them once DIR is deleted.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 pairs=9
-work="$root/build-speed-vs"
+work="${TMPDIR:-/tmp}/rastersim-speed-vs"
 commits=()
 bench_args=(--triangles 20000 --size 60 --width 1024 --height 1024 --cull none)
 while [ $# -gt 0 ]; do
@@ -46,14 +47,18 @@ a="$(build "${commits[0]}")"
 b="$(build "${commits[1]}")"
 
 # One thread at either commit: builds that have --threads get --threads 1.
+# (The help is read whole first: grep -q would close the pipe early, and pipefail would call it absent.)
 args_for() {
-  if "$1" bench --help | grep -q -- '--threads'; then echo "--threads 1"; fi
+  local help
+  help="$("$1" bench --help)"
+  if grep -q -- '--threads' <<< "$help"; then echo "--threads 1"; fi
 }
 read -r -a a_extra <<< "$(args_for "$a")"
 read -r -a b_extra <<< "$(args_for "$b")"
 speed() { "$@" | awk '/^fragments/ { gsub(",", "", $3); print $3 }'; }
 echo "machine: $(nproc) cores; $(uptime | sed 's/.*load/load/')"
 echo "input: ${bench_args[*]}; $pairs pairs, each run the best of 11 repetitions"
+echo "${commits[0]}: bench ${a_extra[*]:-(one thread only)}; ${commits[1]}: bench ${b_extra[*]:-(one thread only)}"
 results="$work/pairs.txt"
 : > "$results"
 for _ in $(seq "$pairs"); do
