@@ -5,6 +5,7 @@
 get_filename_component(RASTERSIM_SOURCE_ROOT ${CMAKE_CURRENT_LIST_DIR}/.. ABSOLUTE)
 set(RASTERSIM_RTL_DIR ${RASTERSIM_SOURCE_ROOT}/rtl)
 set(RASTERSIM_RTL_SOURCES
+  ${RASTERSIM_RTL_DIR}/rastersim_pkg.sv  # first: the units include it too (its guard makes either work)
   ${RASTERSIM_RTL_DIR}/rastersim_top.sv
   ${RASTERSIM_RTL_DIR}/triangle_setup.sv
   ${RASTERSIM_RTL_DIR}/triangle_setup_serial.sv

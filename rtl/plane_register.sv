@@ -3,11 +3,12 @@
 // steps, and the plane along the triangle's two left-edge slots (docs/cycle-model.md). Additions
 // only: the span walker enters a row at the row start (x0) or at a left edge's span start, whose
 // plane value each slot steps from row to row.
+`include "rastersim_pkg.sv"
 module plane_register #(
   parameter integer REG_BITS = 37,    // s(OUT_BITS+1).GUARD_BITS
   parameter integer GUARD_BITS = 12,  // F
   parameter integer OUT_BITS = 24,    // output u(OUT_BITS), clamped to [0, 2^OUT_BITS - 1]
-  parameter integer ROUNDING = 0      // RS_ROUNDING_NEAREST: out adds 2^(F-1) before the shift; _TRUNCATE: not
+  parameter integer ROUNDING = 0      // rastersim_pkg::ROUNDING_NEAREST: out adds 2^(F-1) before the shift; _TRUNCATE: not
 ) (
   input  wire clk,
   input  wire load,         // take the record; value = start, or the entered slot's left_start

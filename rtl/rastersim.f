@@ -4,6 +4,7 @@
 // order: with rastersim_core after the units, Verilator 5.006's lint reports the width functions of
 // rastersim_widths.vh as hiding themselves (rtl/lint_waivers.vlt covers the order below).
 +incdir+.
+rastersim_pkg.sv
 plane_register.sv
 rastersim_core.sv
 rastersim_top.sv

@@ -13,7 +13,8 @@
 // DEPTH_EXPONENT_BITS >= 2 makes the depth word floating point, the depth plane then wider than
 // the word (DEPTH_PLANE_BITS); DEPTH_BIAS = 1 adds the depth bias of cfg_depth_bias_* (docs/
 // arithmetic.md section 6). Both only change the Z adder's output stage and the plane's width.
-module rastersim_core #(
+`include "rastersim_pkg.sv"
+module rastersim_core `RS_IMPORT #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
   parameter integer SUBPIXEL_BITS = 4,
@@ -26,22 +27,22 @@ module rastersim_core #(
   parameter integer MAX_TEXTURE_LATENCY = 64,  // cfg_texture_latency <= this
   parameter integer DEPTH_EXPONENT_BITS = 0,   // Ne: 0 (or 1) the fixed-point depth word, 2..4 floating point
   parameter integer DEPTH_BIAS = 0,            // 1: the depth bias (cfg_depth_bias_*)
-  parameter integer PIXEL_CENTER = 0,          // RS_PIXEL_CENTER_*: the sample point (profile pixel_center)
-  parameter integer FILL_RULE = 0,             // RS_FILL_*: the edges owning samples on them (profile fill_rule)
-  parameter integer DEPTH_ROUNDING = 0,        // RS_ROUNDING_*: the depth output (profile depth_rounding)
-  parameter integer COLOR_ROUNDING = 0         // RS_ROUNDING_*: the colour outputs (profile color_rounding)
+  parameter integer PIXEL_CENTER = 0,          // rastersim_pkg::PIXEL_CENTER_*: the sample point (profile pixel_center)
+  parameter integer FILL_RULE = 0,             // rastersim_pkg::FILL_*: the edges owning samples on them (profile fill_rule)
+  parameter integer DEPTH_ROUNDING = 0,        // rastersim_pkg::ROUNDING_*: the depth output (profile depth_rounding)
+  parameter integer COLOR_ROUNDING = 0         // rastersim_pkg::ROUNDING_*: the colour outputs (profile color_rounding)
 ) (
   input  wire clk,
   input  wire rst,
-  input  wire [2:0] cfg_depth_func,        // RS_DEPTH_* (rastersim_widths.vh)
+  input  wire [2:0] cfg_depth_func,        // rastersim_pkg::DEPTH_*
   input  wire       cfg_depth_write,
-  input  wire [1:0] cfg_cull,              // RS_CULL_*
-  input  wire       cfg_front_face,        // RS_FRONT_*
-  input  wire       cfg_traversal,         // RS_TRAVERSAL_*
-  input  wire       cfg_shading,           // RS_SHADING_*
+  input  wire [1:0] cfg_cull,              // rastersim_pkg::CULL_*
+  input  wire       cfg_front_face,        // rastersim_pkg::FRONT_*
+  input  wire       cfg_traversal,         // rastersim_pkg::TRAVERSAL_*
+  input  wire       cfg_shading,           // rastersim_pkg::SHADING_*
   input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,  // 1 .. MAX_MEMORY_LATENCY
   input  wire [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] cfg_setup_fifo_depth,  // record credits, 1 .. MAX
-  input  wire [RS_TEXTURE_LATENCY_BITS-1:0] cfg_texture_latency,   // Lt, 1 .. MAX_TEXTURE_LATENCY (TEXTURE builds)
+  input  wire [rastersim_pkg::TEXTURE_LATENCY_BITS-1:0] cfg_texture_latency,   // Lt, 1 .. MAX_TEXTURE_LATENCY (TEXTURE builds)
   input  wire [3:0] cfg_texture_log2_width,  // the texture's size, 0..10
   input  wire [3:0] cfg_texture_log2_height,
   input  wire       cfg_texture_bilinear,  // 0: nearest
@@ -54,11 +55,11 @@ module rastersim_core #(
   output wire cmd_ready,
   input  wire [rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] cmd_x0, cmd_y0, cmd_x1, cmd_y1, cmd_x2, cmd_y2,
   input  wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)-1:0] cmd_z0, cmd_z1, cmd_z2,
-  input  wire [23:0] cmd_rgb0, cmd_rgb1, cmd_rgb2,
+  input  `RS_TYPE(rgb_t) cmd_rgb0, cmd_rgb1, cmd_rgb2,
   // Texture coordinates (TEXTURE builds): S at [0 +: 50], T at [50 +: 50], Q at [100 +: 50] (S, T
-  // s8.41, Q u1.41: RS_TEXTURE_VERTEX_BITS), used when cmd_textured.
+  // s8.41, Q u1.41: rastersim_pkg::TEXTURE_VERTEX_BITS), used when cmd_textured.
   input  wire cmd_textured,
-  input  wire [RS_TEXTURE_COMMAND_BITS-1:0] cmd_texture0, cmd_texture1, cmd_texture2,
+  input  `RS_TYPE(texture_vertex_t) cmd_texture0, cmd_texture1, cmd_texture2,
   // Trace: setup decision (FRONT cycle) and activity.
   output wire trace_setup_decided,
   output wire [2:0] trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen, 4 no centre
@@ -81,7 +82,7 @@ module rastersim_core #(
   output wire [rs_ubits32(WIDTH - 1)-1:0]  trace_frag_x,
   output wire [rs_ubits32(HEIGHT - 1)-1:0] trace_frag_y,
   output wire [Z_BITS-1:0] trace_frag_z,
-  output wire [23:0]       trace_frag_rgb,
+  output `RS_TYPE(rgb_t)   trace_frag_rgb,
   output wire trace_result_valid,
   output wire trace_result_pass,
   output wire trace_zbuffer_busy,
@@ -96,12 +97,12 @@ module rastersim_core #(
   output wire mem_wr_color_en,
   output wire [rs_ubits32(WIDTH * HEIGHT - 1)-1:0] mem_wr_addr,
   output wire [Z_BITS-1:0] mem_wr_depth,
-  output wire [23:0]       mem_wr_rgb,
+  output `RS_TYPE(rgb_t)   mem_wr_rgb,
   // Texture memory port of the texture unit (rtl/texture_unit.sv; tied off without TEXTURE).
   output wire tex_rd_valid,
   input  wire tex_rd_ready,
-  output wire [RS_TEXTURE_BANKS*RS_TEXEL_WORD_BITS-1:0] tex_rd_addr,
-  input  wire [RS_TEXTURE_BANKS*RS_TEXEL_BITS-1:0] tex_rd_texels
+  output wire [rastersim_pkg::TEXTURE_BANKS*rastersim_pkg::TEXEL_WORD_BITS-1:0] tex_rd_addr,
+  input  wire [rastersim_pkg::TEXTURE_BANKS*rastersim_pkg::TEXEL_BITS-1:0] tex_rd_texels
 );
 `include "rastersim_widths.vh"
   `RS_REQUIRE(illegal_setup_fifo_depth, MAX_SETUP_FIFO_DEPTH >= 1, "rastersim_core: MAX_SETUP_FIFO_DEPTH must be at least 1")
@@ -139,19 +140,19 @@ module rastersim_core #(
   localparam integer SETUP_REJECTED_LATENCY /*verilator public*/ =
       rs_setup_rejected_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, SETUP_INTERVAL);
   localparam integer WALKER_LOAD_CYCLES /*verilator public*/ = 1;
-  // The encodings of rastersim_widths.vh in one word, from bit 0: RS_DEPTH_NEVER .. RS_DEPTH_ALWAYS
-  // (3 bits each), RS_CULL_NONE, _BACK, _FRONT (2), RS_FRONT_CCW, _CW, RS_TRAVERSAL_BBOX, _SPAN,
-  // RS_SHADING_FLAT, _GOURAUD (1), RS_STATUS_DRAWN .. RS_STATUS_NO_CENTRE (3), RS_PIXEL_CENTER_HALF,
-  // _CORNER (1), RS_FILL_TOP_LEFT .. RS_FILL_BOTTOM_RIGHT (2), RS_ROUNDING_NEAREST, _TRUNCATE (1).
+  // The encodings of rastersim_widths.vh in one word, from bit 0: rastersim_pkg::DEPTH_NEVER .. rastersim_pkg::DEPTH_ALWAYS
+  // (3 bits each), rastersim_pkg::CULL_NONE, _BACK, _FRONT (2), rastersim_pkg::FRONT_CCW, _CW, rastersim_pkg::TRAVERSAL_BBOX, _SPAN,
+  // rastersim_pkg::SHADING_FLAT, _GOURAUD (1), rastersim_pkg::STATUS_DRAWN .. rastersim_pkg::STATUS_NO_CENTRE (3), rastersim_pkg::PIXEL_CENTER_HALF,
+  // _CORNER (1), rastersim_pkg::FILL_TOP_LEFT .. rastersim_pkg::FILL_BOTTOM_RIGHT (2), rastersim_pkg::ROUNDING_NEAREST, _TRUNCATE (1).
   localparam [62:0] ENCODINGS /*verilator public*/ = {
-      1'(RS_ROUNDING_TRUNCATE), 1'(RS_ROUNDING_NEAREST),
-      2'(RS_FILL_BOTTOM_RIGHT), 2'(RS_FILL_BOTTOM_LEFT), 2'(RS_FILL_TOP_RIGHT), 2'(RS_FILL_TOP_LEFT),
-      1'(RS_PIXEL_CENTER_CORNER), 1'(RS_PIXEL_CENTER_HALF),
-      RS_STATUS_NO_CENTRE, RS_STATUS_OFFSCREEN, RS_STATUS_CULLED, RS_STATUS_DEGENERATE, RS_STATUS_DRAWN,
-      RS_SHADING_GOURAUD, RS_SHADING_FLAT, RS_TRAVERSAL_SPAN, RS_TRAVERSAL_BBOX, RS_FRONT_CW, RS_FRONT_CCW,
-      RS_CULL_FRONT, RS_CULL_BACK, RS_CULL_NONE,
-      RS_DEPTH_ALWAYS, RS_DEPTH_GEQUAL, RS_DEPTH_NOTEQUAL, RS_DEPTH_GREATER, RS_DEPTH_LEQUAL, RS_DEPTH_EQUAL,
-      RS_DEPTH_LESS, RS_DEPTH_NEVER};
+      1'(rastersim_pkg::ROUNDING_TRUNCATE), 1'(rastersim_pkg::ROUNDING_NEAREST),
+      2'(rastersim_pkg::FILL_BOTTOM_RIGHT), 2'(rastersim_pkg::FILL_BOTTOM_LEFT), 2'(rastersim_pkg::FILL_TOP_RIGHT), 2'(rastersim_pkg::FILL_TOP_LEFT),
+      1'(rastersim_pkg::PIXEL_CENTER_CORNER), 1'(rastersim_pkg::PIXEL_CENTER_HALF),
+      rastersim_pkg::STATUS_NO_CENTRE, rastersim_pkg::STATUS_OFFSCREEN, rastersim_pkg::STATUS_CULLED, rastersim_pkg::STATUS_DEGENERATE, rastersim_pkg::STATUS_DRAWN,
+      rastersim_pkg::SHADING_GOURAUD, rastersim_pkg::SHADING_FLAT, rastersim_pkg::TRAVERSAL_SPAN, rastersim_pkg::TRAVERSAL_BBOX, rastersim_pkg::FRONT_CW, rastersim_pkg::FRONT_CCW,
+      rastersim_pkg::CULL_FRONT, rastersim_pkg::CULL_BACK, rastersim_pkg::CULL_NONE,
+      rastersim_pkg::DEPTH_ALWAYS, rastersim_pkg::DEPTH_GEQUAL, rastersim_pkg::DEPTH_NOTEQUAL, rastersim_pkg::DEPTH_GREATER, rastersim_pkg::DEPTH_LEQUAL, rastersim_pkg::DEPTH_EQUAL,
+      rastersim_pkg::DEPTH_LESS, rastersim_pkg::DEPTH_NEVER};
   // The profile parameters themselves, for the harness.
   localparam integer P_WIDTH /*verilator public*/ = WIDTH;
   localparam integer P_HEIGHT /*verilator public*/ = HEIGHT;
@@ -179,7 +180,7 @@ module rastersim_core #(
   reg [1:0] cull_q;
   reg [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] memory_latency_q;
   reg [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] setup_fifo_depth_q;
-  reg [RS_TEXTURE_LATENCY_BITS-1:0] texture_latency_q;
+  reg [rastersim_pkg::TEXTURE_LATENCY_BITS-1:0] texture_latency_q;
   reg [3:0] texture_log2_width_q, texture_log2_height_q;
   reg texture_bilinear_q, texture_clamp_q;
   reg [32:0] depth_bias_constant_q;
@@ -223,7 +224,7 @@ module rastersim_core #(
   reg [CREDIT_BITS-1:0] credits_held_q;
   wire credit_free = credits_held_q < setup_fifo_depth_q;
   wire accept = cmd_valid && cmd_ready;
-  wire rejected = trace_setup_decided && trace_setup_status != RS_STATUS_DRAWN;
+  wire rejected = trace_setup_decided && trace_setup_status != rastersim_pkg::STATUS_DRAWN;
   always @(posedge clk) begin
     if (rst) credits_held_q <= {CREDIT_BITS{1'b0}};
     else credits_held_q <= credits_held_q + {{(CREDIT_BITS-1){1'b0}}, accept}

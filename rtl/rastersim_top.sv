@@ -5,7 +5,8 @@
 // Cycle 0 of a frame is the first cycle with frame_ready high (the memory clear has finished).
 // With TEXTURE = 1 the texture memory (texture_memory) sits behind the texture unit's port, loaded
 // through the texture_load_* port before the frame.
-module rastersim_top #(
+`include "rastersim_pkg.sv"
+module rastersim_top `RS_IMPORT #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
   parameter integer SUBPIXEL_BITS = 4,
@@ -25,16 +26,16 @@ module rastersim_top #(
 ) (
   input  wire clk,
   input  wire rst,
-  input  wire [2:0] cfg_depth_func,        // RS_DEPTH_* (rastersim_widths.vh)
+  input  wire [2:0] cfg_depth_func,        // rastersim_pkg::DEPTH_*
   input  wire       cfg_depth_write,
   input  wire [Z_BITS-1:0] cfg_depth_clear,
-  input  wire [1:0] cfg_cull,              // RS_CULL_*
-  input  wire       cfg_front_face,        // RS_FRONT_*
-  input  wire       cfg_traversal,         // RS_TRAVERSAL_*
-  input  wire       cfg_shading,           // RS_SHADING_*
+  input  wire [1:0] cfg_cull,              // rastersim_pkg::CULL_*
+  input  wire       cfg_front_face,        // rastersim_pkg::FRONT_*
+  input  wire       cfg_traversal,         // rastersim_pkg::TRAVERSAL_*
+  input  wire       cfg_shading,           // rastersim_pkg::SHADING_*
   input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,  // 1 .. MAX_MEMORY_LATENCY
   input  wire [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] cfg_setup_fifo_depth,  // record credits, 1 .. MAX
-  input  wire [RS_TEXTURE_LATENCY_BITS-1:0] cfg_texture_latency,   // as rastersim_core's (TEXTURE builds)
+  input  wire [rastersim_pkg::TEXTURE_LATENCY_BITS-1:0] cfg_texture_latency,   // as rastersim_core's (TEXTURE builds)
   input  wire [3:0] cfg_texture_log2_width,
   input  wire [3:0] cfg_texture_log2_height,
   input  wire       cfg_texture_bilinear,
@@ -45,7 +46,7 @@ module rastersim_top #(
   input  wire texture_load_en,
   input  wire [9:0] texture_load_x,
   input  wire [9:0] texture_load_y,
-  input  wire [23:0] texture_load_rgb,
+  input  `RS_TYPE(rgb_t) texture_load_rgb,
   // The texture memory refuses read requests in this cycle: a verification hook (the co-simulation
   // drives the profile's stall pattern on it); tie it to 0.
   input  wire texture_refuse,
@@ -55,9 +56,9 @@ module rastersim_top #(
   output wire cmd_ready,
   input  wire [rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] cmd_x0, cmd_y0, cmd_x1, cmd_y1, cmd_x2, cmd_y2,
   input  wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)-1:0] cmd_z0, cmd_z1, cmd_z2,
-  input  wire [23:0] cmd_rgb0, cmd_rgb1, cmd_rgb2,
+  input  `RS_TYPE(rgb_t) cmd_rgb0, cmd_rgb1, cmd_rgb2,
   input  wire cmd_textured,
-  input  wire [RS_TEXTURE_COMMAND_BITS-1:0] cmd_texture0, cmd_texture1, cmd_texture2,  // S, T, Q as rastersim_core's
+  input  `RS_TYPE(texture_vertex_t) cmd_texture0, cmd_texture1, cmd_texture2,  // S, T, Q as rastersim_core's
   // Trace: setup decision (FRONT cycle) and activity.
   output wire trace_setup_decided,
   output wire [2:0] trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen, 4 no centre
@@ -78,7 +79,7 @@ module rastersim_top #(
   output wire [rs_ubits32(WIDTH - 1)-1:0]  trace_frag_x,
   output wire [rs_ubits32(HEIGHT - 1)-1:0] trace_frag_y,
   output wire [Z_BITS-1:0] trace_frag_z,
-  output wire [23:0]       trace_frag_rgb,
+  output `RS_TYPE(rgb_t)   trace_frag_rgb,
   output wire trace_result_valid,
   output wire trace_result_pass,
   output wire trace_zbuffer_busy,
@@ -86,17 +87,17 @@ module rastersim_top #(
   // Final memories, read back after the frame.
   input  wire [rs_ubits32(WIDTH * HEIGHT - 1)-1:0] readback_addr,
   output wire [Z_BITS-1:0] readback_depth,
-  output wire [23:0]       readback_rgb
+  output `RS_TYPE(rgb_t)   readback_rgb
 );
 `include "rastersim_widths.vh"
 
   wire mem_clear_done, mem_rd_valid, mem_rd_ready, mem_wr_depth_en, mem_wr_color_en;
   wire [rs_ubits32(WIDTH * HEIGHT - 1)-1:0] mem_rd_addr, mem_wr_addr;
   wire [Z_BITS-1:0] mem_rd_depth, mem_wr_depth;
-  wire [23:0] mem_wr_rgb;
+  `RS_TYPE(rgb_t) mem_wr_rgb;
   wire tex_rd_valid, tex_rd_ready;
-  wire [RS_TEXTURE_BANKS*RS_TEXEL_WORD_BITS-1:0] tex_rd_addr;
-  wire [RS_TEXTURE_BANKS*RS_TEXEL_BITS-1:0] tex_rd_texels;
+  wire [rastersim_pkg::TEXTURE_BANKS*rastersim_pkg::TEXEL_WORD_BITS-1:0] tex_rd_addr;
+  wire [rastersim_pkg::TEXTURE_BANKS*rastersim_pkg::TEXEL_BITS-1:0] tex_rd_texels;
 
   rastersim_core #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
                    .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY),

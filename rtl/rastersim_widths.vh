@@ -152,28 +152,12 @@ endfunction
 // registers s9.(P + Ft) with Ft the derived guard bits whatever Z_GUARD_BITS, u and v s8.20, and
 // the perspective divide's stages (docs/cycle-model.md, "Texture unit").
 /* verilator lint_off UNUSEDPARAM */
-localparam integer RS_TEXTURE_FRACTION_BITS = 41;
 localparam integer RS_UV_BITS = 28, RS_UV_FRAC_BITS = 20;
 localparam integer RS_TEXTURE_DIVIDE_STAGES = 29;
 /* verilator lint_on UNUSEDPARAM */
 function automatic integer rs_texture_reg_bits(input integer w, input integer h);
-  rs_texture_reg_bits = RS_TEXTURE_FRACTION_BITS + rs_guard_bits(w, h, 0) + 9;
+  rs_texture_reg_bits = rastersim_pkg::TEXTURE_FRACTION_BITS + rs_guard_bits(w, h, 0) + 9;
 endfunction
-
-// A vertex's S, T, Q (model/triangle.h SnappedVertex): m_t = P + 9 bits each, S and T s8.P, Q u1.P
-// with leading zeros. The setup's texture input holds vertex k's coordinate c (0 S, 1 T, 2 Q) at
-// [(3 k + c) RS_TEXTURE_VERTEX_BITS +: RS_TEXTURE_VERTEX_BITS].
-/* verilator lint_off UNUSEDPARAM */
-localparam integer RS_TEXTURE_VERTEX_BITS = RS_TEXTURE_FRACTION_BITS + 9;
-// The texture ports: a vertex's S, T, Q on cmd_texture0..2; the texture memory's read port, a word
-// address and a texel per bank (rtl/texture_memory.sv); cfg_texture_latency holds 1 .. 64, the
-// largest MAX_TEXTURE_LATENCY, so that a core's ports do not change with the bound.
-localparam integer RS_TEXTURE_COMMAND_BITS = 3 * RS_TEXTURE_VERTEX_BITS;
-localparam integer RS_TEXTURE_BANKS = 4;      // bank 2 (j mod 2) + (i mod 2) holds texel (i, j)
-localparam integer RS_TEXEL_WORD_BITS = 18;   // {row >> 1, column >> 1} of a side of up to 1024 texels
-localparam integer RS_TEXEL_BITS = 24;        // {r, g, b}
-localparam integer RS_TEXTURE_LATENCY_BITS = 7;
-/* verilator lint_on UNUSEDPARAM */
 
 // The texture record beside the setup record (builds with TEXTURE = 1; model/triangle_setup.h
 // SetupResult::textured, texture, left[j].texture): bit 0 the textured flag, then 21 registers of
@@ -253,7 +237,7 @@ endfunction
 // the texture unit"; model/widths.h): the S, T, Q dividends' width 36 2^(P+7) W H M^2 2^Ft, PBt,
 // and what a textured triangle adds to the serial program.
 function automatic integer rs_texture_divider_bits(input integer w, input integer h, input integer s);
-  rs_texture_divider_bits = rs_ubits(((128'd36 << (RS_TEXTURE_FRACTION_BITS + 7)) * rs_area_unit(w, h, s))
+  rs_texture_divider_bits = rs_ubits(((128'd36 << (rastersim_pkg::TEXTURE_FRACTION_BITS + 7)) * rs_area_unit(w, h, s))
                                      << rs_guard_bits(w, h, 0));
 endfunction
 
@@ -266,7 +250,7 @@ function automatic integer rs_setup_serial_texture_cycles(input integer w, input
   integer hb, m, ft;
   begin
     hb = rs_setup_serial_bits(w, h, s);
-    m = RS_TEXTURE_VERTEX_BITS;
+    m = rastersim_pkg::TEXTURE_VERTEX_BITS;
     ft = rs_guard_bits(w, h, 0);
     rs_setup_serial_texture_cycles = 3 * (3 * (1 + 3 * m) + (1 + hb + m + ft) + 2 * (1 + hb + m + ft + s))
                                      + 12 * (rs_setup_texture_product_bits(w, h, s) + 2);
@@ -283,7 +267,7 @@ function automatic integer rs_setup_texture_drawn_latency(input integer w, input
                                                           input integer textured);
   integer numer_bits, divide_bits, product_bits;
   begin
-    numer_bits = z_bits > RS_TEXTURE_VERTEX_BITS ? z_bits : RS_TEXTURE_VERTEX_BITS;
+    numer_bits = z_bits > rastersim_pkg::TEXTURE_VERTEX_BITS ? z_bits : rastersim_pkg::TEXTURE_VERTEX_BITS;
     divide_bits = rs_divider_bits(w, h, s, z_bits, z_guard_bits) > rs_texture_divider_bits(w, h, s)
                   ? rs_divider_bits(w, h, s, z_bits, z_guard_bits) : rs_texture_divider_bits(w, h, s);
     product_bits = rs_setup_product_bits(w, h, s, z_bits, z_guard_bits) > rs_setup_texture_product_bits(w, h, s)
@@ -299,30 +283,6 @@ function automatic integer rs_setup_texture_drawn_latency(input integer w, input
                                                    + rs_setup_product_stages(product_bits, interval));
   end
 endfunction
-
-// Encodings of the run-time settings, of the setup decision and of the conventions, numbered as
-// the C++ enums of model/profile.h (DepthFunc, CullMode, FrontFace, Traversal, Shading,
-// PixelCenter, FillRule, Rounding) and model/triangle_setup.h (SetupStatus). rastersim_core publishes them in one word (ENCODINGS), which the C++ build
-// static_asserts against the enums (testbench/rtl_configuration.h).
-/* verilator lint_off UNUSEDPARAM */
-localparam [2:0] RS_DEPTH_NEVER = 3'd0, RS_DEPTH_LESS = 3'd1,
-                 RS_DEPTH_EQUAL = 3'd2, RS_DEPTH_LEQUAL = 3'd3,
-                 RS_DEPTH_GREATER = 3'd4, RS_DEPTH_NOTEQUAL = 3'd5,
-                 RS_DEPTH_GEQUAL = 3'd6, RS_DEPTH_ALWAYS = 3'd7;
-localparam [1:0] RS_CULL_NONE = 2'd0, RS_CULL_BACK = 2'd1,
-                 RS_CULL_FRONT = 2'd2;
-localparam [0:0] RS_FRONT_CCW = 1'b0, RS_FRONT_CW = 1'b1;
-localparam [0:0] RS_TRAVERSAL_BBOX = 1'b0, RS_TRAVERSAL_SPAN = 1'b1;
-localparam [0:0] RS_SHADING_FLAT = 1'b0, RS_SHADING_GOURAUD = 1'b1;
-localparam [2:0] RS_STATUS_DRAWN = 3'd0, RS_STATUS_DEGENERATE = 3'd1, RS_STATUS_CULLED = 3'd2,
-                 RS_STATUS_OFFSCREEN = 3'd3, RS_STATUS_NO_CENTRE = 3'd4;
-// The conventions, build parameters (PIXEL_CENTER, FILL_RULE, DEPTH_ROUNDING, COLOR_ROUNDING):
-// PixelCenter, FillRule, Rounding.
-localparam integer RS_PIXEL_CENTER_HALF = 0, RS_PIXEL_CENTER_CORNER = 1;
-localparam integer RS_ROUNDING_NEAREST = 0, RS_ROUNDING_TRUNCATE = 1;
-localparam integer RS_FILL_TOP_LEFT = 0, RS_FILL_TOP_RIGHT = 1, RS_FILL_BOTTOM_LEFT = 2,
-                   RS_FILL_BOTTOM_RIGHT = 3;
-/* verilator lint_on UNUSEDPARAM */
 
 // The setup record as one packed vector (the model's SetupResult; the C++ side's field table is
 // testbench/setup_record.h). Fields from the least significant bit up, by number:

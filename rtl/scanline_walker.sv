@@ -15,6 +15,7 @@
 // Cycles (docs/cycle-model.md): the entry is taken in walker_load (in_valid & in_ready), which is
 // the cycle of the previous triangle's last candidate when the entry is there by then; the first
 // candidate follows in walker_load + 1; `last` marks walker_end.
+`include "rastersim_pkg.sv"
 module scanline_walker #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
@@ -22,7 +23,7 @@ module scanline_walker #(
 ) (
   input  wire clk,
   input  wire rst,
-  input  wire cfg_traversal,  // RS_TRAVERSAL_* (rastersim_widths.vh)
+  input  wire cfg_traversal,  // rastersim_pkg::TRAVERSAL_*
   // The walker's entry (scanline_walker_entry, through the record FIFO).
   input  wire in_valid,
   output wire in_ready,
@@ -99,7 +100,7 @@ module scanline_walker #(
     end
   endgenerate
 
-  wire span_traversal = cfg_traversal == RS_TRAVERSAL_SPAN;
+  wire span_traversal = cfg_traversal == rastersim_pkg::TRAVERSAL_SPAN;
   reg walking_q;  // a triangle is loaded and not finished
 
   reg [X_BITS-1:0] x0_q, x1_q, x_end_q, last_offset_q;

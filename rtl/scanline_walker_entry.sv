@@ -4,6 +4,7 @@
 // row enters and the slots' carries. Combinational: rastersim_core forms the entry as the record
 // is pushed into the record FIFO, whose entry register holds it, so that the walker's load takes
 // registers only and the walker computes every later row from its own registers.
+`include "rastersim_pkg.sv"
 module scanline_walker_entry #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,

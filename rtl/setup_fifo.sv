@@ -2,6 +2,7 @@
 // ENTRIES records of RECORD_BITS bits; a record pushed in cycle c is at the head from c+1 when it is the
 // oldest. Push and pop may happen in the same cycle. The core's record credits guarantee that a
 // push never meets a full FIFO, so there is no full flag.
+`include "rastersim_pkg.sv"
 module setup_fifo #(
   parameter integer RECORD_BITS = 8,
   parameter integer ENTRIES = 2

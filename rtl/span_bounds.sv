@@ -14,6 +14,7 @@
 // the quotients' high bits), and all compares are side by side (none waits for another): the span
 // start and end are one-hot selects, and the row is empty when some lower bound exceeds some upper
 // one.
+`include "rastersim_pkg.sv"
 module span_bounds #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,

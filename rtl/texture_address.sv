@@ -5,6 +5,7 @@
 // nearest reads floor(c 2^-T); bilinear the two texels around c - 2^(T-1), the second's weight the
 // top 8 of its T fraction bits; repeat keeps an index's low log2-size bits, clamp limits it to
 // [0, size - 1]. Nearest reads one texel: second == first, weight 0.
+`include "rastersim_pkg.sv"
 module texture_address (
   input  wire clk,
   input  wire [27:0] u,              // s8.20

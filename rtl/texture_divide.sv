@@ -5,6 +5,7 @@
 // "Texture unit": taken in t, u and v registered at the end of t + 29). Stage 0 takes the
 // magnitudes and the clamp tests, stages 1..27 one quotient bit each (restoring; q's pipeline
 // serves u and v), stage 28 the sign (floor for a negative dividend) and the clamp.
+`include "rastersim_pkg.sv"
 module texture_divide #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480

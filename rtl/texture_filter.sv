@@ -5,6 +5,7 @@
 // unit's blend and modulate cycles, docs/cycle-model.md: inputs of a cycle are in `rgb_q` after
 // two rising edges). The shade travels beside the blend. Nearest lookups come with weights 0: the
 // blend is the first texel.
+`include "rastersim_pkg.sv"
 module texture_filter (
   input  wire clk,
   input  wire [23:0] texel00,  // {r, g, b}: the lower row's first and second column, the upper row's

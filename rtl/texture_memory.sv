@@ -6,19 +6,20 @@
 // and back-pressure only when `refuse` asks for it (rd_ready = !refuse: a verification hook through
 // which a harness applies the profile's stall pattern; tie it to 0). Textures up to 2^MAX_LOG2_SIZE
 // texels a side; the load port writes one texel per cycle before the frame.
+`include "rastersim_pkg.sv"
 module texture_memory #(
   parameter integer MAX_TEXTURE_LATENCY = 64,
   parameter integer MAX_LOG2_SIZE = 10
 ) (
   input  wire clk,
   input  wire rst,
-  input  wire [RS_TEXTURE_LATENCY_BITS-1:0] cfg_texture_latency,  // sampled while rst is high
+  input  wire [rastersim_pkg::TEXTURE_LATENCY_BITS-1:0] cfg_texture_latency,  // sampled while rst is high
   input  wire refuse,                     // refuse read requests in this cycle (rd_ready low)
   // Read port: bank b's word address at [18 b +: 18], {row >> 1, column >> 1} of a 1024-texel side.
   input  wire rd_valid,
   output wire rd_ready,
-  input  wire [RS_TEXTURE_BANKS*RS_TEXEL_WORD_BITS-1:0] rd_addr,
-  output wire [RS_TEXTURE_BANKS*RS_TEXEL_BITS-1:0] rd_texels,   // bank b's texel {r, g, b} at [24 b +: 24], in c + Lt
+  input  wire [rastersim_pkg::TEXTURE_BANKS*rastersim_pkg::TEXEL_WORD_BITS-1:0] rd_addr,
+  output wire [rastersim_pkg::TEXTURE_BANKS*rastersim_pkg::TEXEL_BITS-1:0] rd_texels,   // bank b's texel {r, g, b} at [24 b +: 24], in c + Lt
   // Load port: texel (column load_x, row load_y), written at the end of the cycle.
   input  wire load_en,
   input  wire [9:0] load_x,
@@ -43,7 +44,7 @@ module texture_memory #(
   localparam integer WORD_BITS = 2 * HALF;
   localparam integer WORDS = 1 << (2 * HALF);
 
-  reg [RS_TEXTURE_LATENCY_BITS-1:0] latency_q;
+  reg [rastersim_pkg::TEXTURE_LATENCY_BITS-1:0] latency_q;
   always @(posedge clk) if (rst) latency_q <= cfg_texture_latency;
   assign rd_ready = !refuse;
 

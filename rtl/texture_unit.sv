@@ -12,6 +12,7 @@
 // Memory port contract (rtl/texture_memory.sv): a read taken in c (rd_valid & rd_ready) returns
 // bank b's texel on rd_texels[24 b +: 24] in c + Lt; bank 2 (j mod 2) + (i mod 2) holds column i,
 // row j at {j >> 1, i >> 1}.
+`include "rastersim_pkg.sv"
 module texture_unit #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
@@ -21,7 +22,7 @@ module texture_unit #(
   input  wire clk,
   input  wire rst,
   // Static configuration (registers of the core, held for the frame).
-  input  wire [RS_TEXTURE_LATENCY_BITS-1:0] cfg_texture_latency,  // Lt, 1 .. MAX_TEXTURE_LATENCY
+  input  wire [rastersim_pkg::TEXTURE_LATENCY_BITS-1:0] cfg_texture_latency,  // Lt, 1 .. MAX_TEXTURE_LATENCY
   input  wire [3:0] cfg_log2_width,       // texture size, 0..10
   input  wire [3:0] cfg_log2_height,
   input  wire cfg_bilinear,               // 0: nearest
@@ -48,8 +49,8 @@ module texture_unit #(
   // Texture memory read port.
   output wire tex_rd_valid,
   input  wire tex_rd_ready,
-  output wire [RS_TEXTURE_BANKS*RS_TEXEL_WORD_BITS-1:0] tex_rd_addr,
-  input  wire [RS_TEXTURE_BANKS*RS_TEXEL_BITS-1:0] tex_rd_texels,
+  output wire [rastersim_pkg::TEXTURE_BANKS*rastersim_pkg::TEXEL_WORD_BITS-1:0] tex_rd_addr,
+  input  wire [rastersim_pkg::TEXTURE_BANKS*rastersim_pkg::TEXEL_BITS-1:0] tex_rd_texels,
   output wire busy,   // holds a fragment, or takes one
   output wire stall   // a textured read waits for the memory
 );

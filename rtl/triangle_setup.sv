@@ -10,6 +10,7 @@
 // - I = 2..64: triangle_setup_pipelined, slots of I cycles, one triangle accepted per slot.
 // TEXTURE = 1 adds the S, T, Q planes (docs/cycle-model.md, "The setup units with the texture
 // unit"): the texture coordinates are registered here beside the vertices.
+`include "rastersim_pkg.sv"
 module triangle_setup #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
@@ -18,15 +19,15 @@ module triangle_setup #(
   parameter integer Z_GUARD_BITS = 0,
   parameter integer SETUP_INTERVAL = 0,  // 0: serial (one shared datapath); 2..64: pipelined, initiation interval
   parameter integer TEXTURE = 0,         // 1: the S, T, Q planes (profile texture_unit)
-  parameter integer PIXEL_CENTER = 0,    // RS_PIXEL_CENTER_*: the sample point, half or corner (profile pixel_center)
-  parameter integer FILL_RULE = 0        // RS_FILL_*: the edges that own samples on them (profile fill_rule)
+  parameter integer PIXEL_CENTER = 0,    // rastersim_pkg::PIXEL_CENTER_*: the sample point, half or corner (profile pixel_center)
+  parameter integer FILL_RULE = 0        // rastersim_pkg::FILL_*: the edges that own samples on them (profile fill_rule)
 ) (
   input  wire clk,
   input  wire rst,
   input  wire run,                   // the frame runs (cycle 0 is its first cycle): slots count
   output wire free,                  // no triangle accepted in this slot yet (0: parallel, busy)
-  input  wire [1:0] cfg_cull,        // RS_CULL_* (rastersim_widths.vh)
-  input  wire       cfg_front_face,  // RS_FRONT_*
+  input  wire [1:0] cfg_cull,        // rastersim_pkg::CULL_*
+  input  wire       cfg_front_face,  // rastersim_pkg::FRONT_*
   // Command input: vertex k at [k*B +: B]; x, y s(COORD_BITS-S).S subpixels; z uN; rgb {r,g,b} u8.
   input  wire in_valid,
   output wire in_ready,
@@ -35,13 +36,13 @@ module triangle_setup #(
   input  wire [3*Z_BITS-1:0] in_z,
   input  wire [3*24-1:0]     in_rgb,
   // Texture coordinates (TEXTURE = 1; unused otherwise): the triangle is textured, and vertex k's
-  // c (0 S, 1 T, 2 Q) at [(3k + c) 50 +: 50], S and T s8.41, Q u1.41 (50 = RS_TEXTURE_VERTEX_BITS).
+  // c (0 S, 1 T, 2 Q) at [(3k + c) 50 +: 50], S and T s8.41, Q u1.41 (50 = rastersim_pkg::TEXTURE_VERTEX_BITS).
   /* verilator lint_off UNUSEDSIGNAL */
   input  wire in_textured,
-  input  wire [3*RS_TEXTURE_COMMAND_BITS-1:0] in_texture,
+  input  wire [3*rastersim_pkg::TEXTURE_COMMAND_BITS-1:0] in_texture,
   /* verilator lint_on UNUSEDSIGNAL */
   // Decision, valid in the FRONT cycle: status 0 drawn, 1 degenerate, 2 culled, 3 offscreen,
-  // 4 no centre (RS_STATUS_*).
+  // 4 no centre (rastersim_pkg::STATUS_*).
   output wire        decided,
   output wire [2:0]  decided_status,
   output wire        decided_front_facing,
@@ -70,7 +71,7 @@ module triangle_setup #(
   localparam integer AREA_BITS = rs_area_bits(WIDTH, HEIGHT, S);
   localparam integer BB = COORD_BITS + 2;           // bounding-box arithmetic, signed pixels
   // The sample point within a pixel, subpixels: half a pixel, or 0 at the corner (arithmetic.md 7).
-  localparam integer SAMPLE = PIXEL_CENTER == RS_PIXEL_CENTER_CORNER ? 0 : 1 << (S - 1);
+  localparam integer SAMPLE = PIXEL_CENTER == rastersim_pkg::PIXEL_CENTER_CORNER ? 0 : 1 << (S - 1);
   localparam integer ONE_LESS = (1 << S) - 1;  // one pixel less one subpixel
   localparam integer X_LAST = WIDTH - 1;
   localparam integer Y_LAST = HEIGHT - 1;
@@ -82,7 +83,7 @@ module triangle_setup #(
 
   // The texture coordinates (TEXTURE = 1): vertex values m_t = 50 bits (S, T s8.41, Q u1.41).
   localparam integer TEX = TEXTURE != 0 ? 1 : 0;
-  localparam integer MT = RS_TEXTURE_VERTEX_BITS;
+  localparam integer MT = rastersim_pkg::TEXTURE_VERTEX_BITS;
   `RS_REQUIRE(texture_port_width, MT == 50, "triangle_setup: in_texture is written for 50-bit values")
 
   // The record (rastersim_widths.vh): both schedules give fields 0..17 packed in out_base and the
@@ -137,8 +138,8 @@ module triangle_setup #(
   // FRONT cycle, the AREA operation's result in the serial unit's DECIDE cycle.
   wire signed [AREA_BITS-1:0] area2;
   // y points down: area2 > 0 is clockwise as the viewer sees the screen.
-  wire front_facing = cfg_front_face == RS_FRONT_CCW ? area2[AREA_BITS-1] : (area2 != 0 && !area2[AREA_BITS-1]);
-  wire culled = (cfg_cull == RS_CULL_BACK && !front_facing) || (cfg_cull == RS_CULL_FRONT && front_facing);
+  wire front_facing = cfg_front_face == rastersim_pkg::FRONT_CCW ? area2[AREA_BITS-1] : (area2 != 0 && !area2[AREA_BITS-1]);
+  wire culled = (cfg_cull == rastersim_pkg::CULL_BACK && !front_facing) || (cfg_cull == rastersim_pkg::CULL_FRONT && front_facing);
 
   // The least of three from its three pairwise compares side by side (none waits for another);
   // the greatest is the least of the negated order (`greatest` set).
@@ -189,8 +190,8 @@ module triangle_setup #(
   // record's x0, x1, y0, y1 in their low bits; signed pixels, in 0 .. WIDTH-1 (HEIGHT-1) when drawn.
   wire signed [BB-1:0] box_x0, box_x1, box_y0, box_y1;
 
-  wire [2:0] status = area2 == 0 ? RS_STATUS_DEGENERATE : culled ? RS_STATUS_CULLED
-                    : box_offscreen ? RS_STATUS_OFFSCREEN : box_no_centre ? RS_STATUS_NO_CENTRE : RS_STATUS_DRAWN;
+  wire [2:0] status = area2 == 0 ? rastersim_pkg::STATUS_DEGENERATE : culled ? rastersim_pkg::STATUS_CULLED
+                    : box_offscreen ? rastersim_pkg::STATUS_OFFSCREEN : box_no_centre ? rastersim_pkg::STATUS_NO_CENTRE : rastersim_pkg::STATUS_DRAWN;
   assign decided_status = status;
   assign decided_front_facing = area2 != 0 && front_facing;
   assign decided_area2 = area2;

@@ -6,6 +6,7 @@
 // With TEXTURE = 1 the slots are sized for the S, T, Q planes for every triangle.
 // triangle_setup holds the vertex registers (never swapped here: FRONT orders the vertices through
 // multiplexers), the box and the decision's status, and packs the record.
+`include "rastersim_pkg.sv"
 module triangle_setup_pipelined #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
@@ -14,8 +15,8 @@ module triangle_setup_pipelined #(
   parameter integer Z_GUARD_BITS = 0,
   parameter integer SETUP_INTERVAL = 2,  // the initiation interval I, 2..64
   parameter integer TEXTURE = 0,         // 1: the S, T, Q planes (profile texture_unit)
-  parameter integer PIXEL_CENTER = 0,    // RS_PIXEL_CENTER_*: the sample point, half or corner
-  parameter integer FILL_RULE = 0        // RS_FILL_*: the edges that own samples on them
+  parameter integer PIXEL_CENTER = 0,    // rastersim_pkg::PIXEL_CENTER_*: the sample point, half or corner
+  parameter integer FILL_RULE = 0        // rastersim_pkg::FILL_*: the edges that own samples on them
 ) (
   input  wire clk,
   input  wire rst,
@@ -46,7 +47,7 @@ module triangle_setup_pipelined #(
   input  wire signed [rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)+1:0] box_y1,
   /* verilator lint_on UNUSEDSIGNAL */
   // The decision in the FRONT cycle: twice the signed area of the vertices as accepted (s.2S), and
-  // the status triangle_setup forms from it (RS_STATUS_*).
+  // the status triangle_setup forms from it (rastersim_pkg::STATUS_*).
   output wire signed [rs_area_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] area2,
   input  wire [2:0] status,
   output wire decided,               // the FRONT cycle
@@ -75,13 +76,13 @@ module triangle_setup_pipelined #(
   localparam integer Y_BITS = rs_ubits32(HEIGHT - 1);
   localparam integer BB = COORD_BITS + 2;           // bounding-box arithmetic, signed pixels
   // Plane numerators sum_k v_k e_k, signed: v of N bits, or m_t with TEXTURE.
-  localparam integer NB = (TEXTURE != 0 ? RS_TEXTURE_VERTEX_BITS : Z_BITS) + EDGE_BITS + 4;
+  localparam integer NB = (TEXTURE != 0 ? rastersim_pkg::TEXTURE_VERTEX_BITS : Z_BITS) + EDGE_BITS + 4;
   // The sample point within a pixel, subpixels: half a pixel, or 0 at the corner (arithmetic.md 7).
-  localparam integer SAMPLE = PIXEL_CENTER == RS_PIXEL_CENTER_CORNER ? 0 : 1 << (S - 1);
+  localparam integer SAMPLE = PIXEL_CENTER == rastersim_pkg::PIXEL_CENTER_CORNER ? 0 : 1 << (S - 1);
   localparam signed [BB-1:0] SAMPLE_B = SAMPLE[BB-1:0];
   // Which edges own the samples on them (FILL_RULE): left (else right) ones, top (else bottom) ones.
-  localparam [0:0] OWN_LEFT = FILL_RULE == RS_FILL_TOP_LEFT || FILL_RULE == RS_FILL_BOTTOM_LEFT;
-  localparam [0:0] OWN_TOP = FILL_RULE == RS_FILL_TOP_LEFT || FILL_RULE == RS_FILL_TOP_RIGHT;
+  localparam [0:0] OWN_LEFT = FILL_RULE == rastersim_pkg::FILL_TOP_LEFT || FILL_RULE == rastersim_pkg::FILL_BOTTOM_LEFT;
+  localparam [0:0] OWN_TOP = FILL_RULE == rastersim_pkg::FILL_TOP_LEFT || FILL_RULE == rastersim_pkg::FILL_TOP_RIGHT;
   // Whether an edge owns the samples on it, from the signs of its -dy and dx (the ordered triangle
   // has its interior to the right as y points down: -dy > 0 is a left edge, a horizontal edge with
   // dx > 0 a top one); model/triangle_setup.cpp owns_samples_on_edge.
@@ -93,7 +94,7 @@ module triangle_setup_pipelined #(
   // The texture planes (TEXTURE = 1; docs/arithmetic.md section 5): vertex values m_t = 50 bits (S,
   // T s8.41, Q u1.41), registers s9.(P+Ft) of TR = P + Ft + 9 bits, Ft the derived guard bits.
   localparam integer TEX = TEXTURE != 0 ? 1 : 0;
-  localparam integer MT = RS_TEXTURE_VERTEX_BITS;
+  localparam integer MT = rastersim_pkg::TEXTURE_VERTEX_BITS;
   localparam integer TR = rs_texture_reg_bits(WIDTH, HEIGHT);
   localparam integer FT = rs_guard_bits(WIDTH, HEIGHT, 0);
   localparam integer TVB = TEX != 0 ? MT : 1;  // a texture vertex value (1: none, tied to 0)
@@ -278,7 +279,7 @@ module triangle_setup_pipelined #(
       else if (advance) front_q <= 1'b0;
       if (advance) begin
         for (j = EDGE_STAGES - 1; j > 0; j = j - 1) edge_valid_q[j] <= edge_valid_q[j-1];
-        edge_valid_q[0] <= front_q && status == RS_STATUS_DRAWN;
+        edge_valid_q[0] <= front_q && status == rastersim_pkg::STATUS_DRAWN;
         for (j = NUMER_STAGES - 1; j > 0; j = j - 1) numer_valid_q[j] <= numer_valid_q[j-1];
         numer_valid_q[0] <= edge_valid_q[EDGE_STAGES-1];
         for (j = DIVIDE_STAGES - 1; j > 0; j = j - 1) divide_valid_q[j] <= divide_valid_q[j-1];
@@ -294,7 +295,7 @@ module triangle_setup_pipelined #(
   assign free = !front_q;
   assign decided = front_q && phase_q == {{(PHASE_BITS-1){1'b0}}, 1'b1};
   assign out_valid = out_valid_q && slot_first;
-  assign busy = load_vertices || (front_q && (decided || status == RS_STATUS_DRAWN)) || edge_valid_q != 0
+  assign busy = load_vertices || (front_q && (decided || status == rastersim_pkg::STATUS_DRAWN)) || edge_valid_q != 0
                 || numer_valid_q != 0 || divide_valid_q != 0 || product_valid_q != 0 || out_valid;
 
   // FRONT's results: the vertex values of the planes, the payload (edge starts still zero).

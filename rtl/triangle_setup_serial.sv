@@ -7,6 +7,7 @@
 // With TEXTURE = 1 the program inserts the S, T, Q operations for a textured triangle only.
 // triangle_setup holds the vertex registers (swapped here in DECIDE), the box (in registered steps
 // for this schedule) and the decision's status, and packs the record.
+`include "rastersim_pkg.sv"
 module triangle_setup_serial #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
@@ -14,8 +15,8 @@ module triangle_setup_serial #(
   parameter integer Z_BITS = 24,         // the depth plane's bits (docs/arithmetic.md section 6)
   parameter integer Z_GUARD_BITS = 0,
   parameter integer TEXTURE = 0,         // 1: the S, T, Q planes (profile texture_unit)
-  parameter integer PIXEL_CENTER = 0,    // RS_PIXEL_CENTER_*: the sample point, half or corner
-  parameter integer FILL_RULE = 0        // RS_FILL_*: the edges that own samples on them
+  parameter integer PIXEL_CENTER = 0,    // rastersim_pkg::PIXEL_CENTER_*: the sample point, half or corner
+  parameter integer FILL_RULE = 0        // rastersim_pkg::FILL_*: the edges that own samples on them
 ) (
   input  wire clk,
   input  wire rst,
@@ -49,7 +50,7 @@ module triangle_setup_serial #(
   input  wire signed [rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)+1:0] box_y1,
   /* verilator lint_on UNUSEDSIGNAL */
   // The decision: twice the signed area of the vertices as accepted (s.2S, the AREA operation's
-  // result, read in DECIDE), and the status triangle_setup forms from it (RS_STATUS_*).
+  // result, read in DECIDE), and the status triangle_setup forms from it (rastersim_pkg::STATUS_*).
   output wire signed [rs_area_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] area2,
   input  wire [2:0] status,
   output wire decided,               // DECIDE
@@ -77,11 +78,11 @@ module triangle_setup_serial #(
   localparam integer Z_REG_BITS = Z_BITS + F + 1;   // the depth plane's registers
   localparam integer COLOR_REG_BITS = 9 + F;        // a colour plane's registers
   // The sample point within a pixel, subpixels: half a pixel, or 0 at the corner (arithmetic.md 7).
-  localparam integer SAMPLE = PIXEL_CENTER == RS_PIXEL_CENTER_CORNER ? 0 : 1 << (S - 1);
+  localparam integer SAMPLE = PIXEL_CENTER == rastersim_pkg::PIXEL_CENTER_CORNER ? 0 : 1 << (S - 1);
   localparam signed [BB-1:0] SAMPLE_B = SAMPLE[BB-1:0];
   // Which edges own the samples on them (FILL_RULE): left (else right) ones, top (else bottom) ones.
-  localparam [0:0] OWN_LEFT = FILL_RULE == RS_FILL_TOP_LEFT || FILL_RULE == RS_FILL_BOTTOM_LEFT;
-  localparam [0:0] OWN_TOP = FILL_RULE == RS_FILL_TOP_LEFT || FILL_RULE == RS_FILL_TOP_RIGHT;
+  localparam [0:0] OWN_LEFT = FILL_RULE == rastersim_pkg::FILL_TOP_LEFT || FILL_RULE == rastersim_pkg::FILL_BOTTOM_LEFT;
+  localparam [0:0] OWN_TOP = FILL_RULE == rastersim_pkg::FILL_TOP_LEFT || FILL_RULE == rastersim_pkg::FILL_TOP_RIGHT;
   // Whether an edge owns the samples on it, from the signs of its -dy and dx (the ordered triangle
   // has its interior to the right as y points down: -dy > 0 is a left edge, a horizontal edge with
   // dx > 0 a top one); model/triangle_setup.cpp owns_samples_on_edge.
@@ -93,7 +94,7 @@ module triangle_setup_serial #(
   // The texture planes (TEXTURE = 1; docs/arithmetic.md section 5): vertex values m_t = 50 bits (S,
   // T s8.41, Q u1.41), registers s9.(P+Ft) of TR = P + Ft + 9 bits, Ft the derived guard bits.
   localparam integer TEX = TEXTURE != 0 ? 1 : 0;
-  localparam integer MT = RS_TEXTURE_VERTEX_BITS;
+  localparam integer MT = rastersim_pkg::TEXTURE_VERTEX_BITS;
   localparam integer TR = rs_texture_reg_bits(WIDTH, HEIGHT);
   localparam integer FT = rs_guard_bits(WIDTH, HEIGHT, 0);
   localparam integer TVB = TEX != 0 ? MT : 1;  // a texture vertex value (1: none, tied to 0)
@@ -441,7 +442,7 @@ module triangle_setup_serial #(
   assign area2 = acc_q[MB-DELTA_BITS +: AREA_BITS];
   wire deciding = active_q && load_q && op_q == OP_DECIDE;
   assign decided = deciding;
-  assign swap_vertices = deciding && status == RS_STATUS_DRAWN && swap;
+  assign swap_vertices = deciding && status == rastersim_pkg::STATUS_DRAWN && swap;
 
   assign load_vertices = !active_q && !out_q && in_valid;
   assign in_ready = !active_q && !out_q;
@@ -471,7 +472,7 @@ module triangle_setup_serial #(
         if (op_q == OP_FINAL) begin
           active_q <= 1'b0;
           out_q <= 1'b1;
-        end else if (deciding && status != RS_STATUS_DRAWN) begin
+        end else if (deciding && status != rastersim_pkg::STATUS_DRAWN) begin
           active_q <= 1'b0;
         end else if (steps == 0) begin
           op_q <= op_next;

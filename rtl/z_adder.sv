@@ -6,6 +6,7 @@
 // DEPTH_BIAS the triangle's bias, computed at the load from the record's depth steps (the one
 // product), added before the rounding; with DEPTH_EXPONENT_BITS >= 2 the output encoded as the
 // floating-point depth word. Logic between the register and the fragment: no cycles.
+`include "rastersim_pkg.sv"
 module z_adder #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
@@ -14,11 +15,11 @@ module z_adder #(
   parameter integer TEXTURE = 0,    // 1: the texture planes (rs_texture_record_bits), else none
   parameter integer DEPTH_EXPONENT_BITS = 0,  // Ne: the depth plane has rs_depth_plane_bits(N, Ne) bits
   parameter integer DEPTH_BIAS = 0,           // 1: the depth bias
-  parameter integer DEPTH_ROUNDING = 0,       // RS_ROUNDING_*: the depth output (profile depth_rounding)
-  parameter integer COLOR_ROUNDING = 0        // RS_ROUNDING_*: the colour outputs (profile color_rounding)
+  parameter integer DEPTH_ROUNDING = 0,       // rastersim_pkg::ROUNDING_*: the depth output (profile depth_rounding)
+  parameter integer COLOR_ROUNDING = 0        // rastersim_pkg::ROUNDING_*: the colour outputs (profile color_rounding)
 ) (
   input  wire clk,
-  input  wire cfg_shading,  // RS_SHADING_* (rastersim_widths.vh); flat: the provoking vertex colour
+  input  wire cfg_shading,  // rastersim_pkg::SHADING_*; flat: the provoking vertex colour
   input  wire [32:0] cfg_depth_bias_constant,  // c, two's complement, |c| < 2^Np (DEPTH_BIAS)
   input  wire [7:0] cfg_depth_bias_slope,      // f, s4.4
   input  wire load,
@@ -147,7 +148,7 @@ module z_adder #(
     end
   endgenerate
 
-  assign rgb = cfg_shading == RS_SHADING_GOURAUD ? gouraud_rgb : flat_q;
+  assign rgb = cfg_shading == rastersim_pkg::SHADING_GOURAUD ? gouraud_rgb : flat_q;
 
   localparam integer TR = rs_texture_reg_bits(WIDTH, HEIGHT);
   `RS_REQUIRE(texture_reg_bits_match, TR == 50 + $clog2(2 * (WIDTH + HEIGHT - 1)), "z_adder: texture register width")

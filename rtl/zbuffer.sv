@@ -13,6 +13,7 @@
 // the depth clear value, colour 0) and raises mem_clear_done, which starts the frame; a read
 // request taken in c returns its word in exactly c+L; writes are always taken (no back-pressure)
 // and land at the end of their cycle; mem_rd_ready may be low in any cycle (back-pressure).
+`include "rastersim_pkg.sv"
 module zbuffer #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
@@ -21,7 +22,7 @@ module zbuffer #(
 ) (
   input  wire clk,
   input  wire rst,
-  input  wire [2:0] cfg_depth_func,  // RS_DEPTH_* (rastersim_widths.vh)
+  input  wire [2:0] cfg_depth_func,  // rastersim_pkg::DEPTH_*
   input  wire       cfg_depth_write,
   input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,
   output wire clear_done,            // the memory is cleared: the frame may start
@@ -157,14 +158,14 @@ module zbuffer #(
   reg pass;
   always @(*) begin
     case (cfg_depth_func)
-      RS_DEPTH_NEVER: pass = 1'b0;
-      RS_DEPTH_LESS: pass = done_z < mem_rd_depth;
-      RS_DEPTH_EQUAL: pass = done_z == mem_rd_depth;
-      RS_DEPTH_LEQUAL: pass = done_z <= mem_rd_depth;
-      RS_DEPTH_GREATER: pass = done_z > mem_rd_depth;
-      RS_DEPTH_NOTEQUAL: pass = done_z != mem_rd_depth;
-      RS_DEPTH_GEQUAL: pass = done_z >= mem_rd_depth;
-      default: pass = 1'b1;  // RS_DEPTH_ALWAYS
+      rastersim_pkg::DEPTH_NEVER: pass = 1'b0;
+      rastersim_pkg::DEPTH_LESS: pass = done_z < mem_rd_depth;
+      rastersim_pkg::DEPTH_EQUAL: pass = done_z == mem_rd_depth;
+      rastersim_pkg::DEPTH_LEQUAL: pass = done_z <= mem_rd_depth;
+      rastersim_pkg::DEPTH_GREATER: pass = done_z > mem_rd_depth;
+      rastersim_pkg::DEPTH_NOTEQUAL: pass = done_z != mem_rd_depth;
+      rastersim_pkg::DEPTH_GEQUAL: pass = done_z >= mem_rd_depth;
+      default: pass = 1'b1;  // rastersim_pkg::DEPTH_ALWAYS
     endcase
   end
   assign result_valid = done_valid;

@@ -11,6 +11,7 @@
 // bit's index); the written-bit select and the clear-value mux come after the register, so that
 // synthesis maps the memories to synchronous block RAM (SB_RAM40_4K on an iCE40), a copy per read
 // port.
+`include "rastersim_pkg.sv"
 module zbuffer_memory #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,

@@ -88,6 +88,7 @@ def synth_ice40(top, rest, options=""):
 # The unit without profile parameters, at the widths the profile gives the depth plane.
 SHIMS = {
     "plane_register": """
+`include "rastersim_pkg.sv"
 module hwcost_plane_register #(
   parameter integer WIDTH = 640, parameter integer HEIGHT = 480, parameter integer SUBPIXEL_BITS = 4,
   parameter integer Z_BITS = 24, parameter integer Z_GUARD_BITS = 0, parameter integer MAX_MEMORY_LATENCY = 64

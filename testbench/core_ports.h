@@ -36,7 +36,7 @@ void drive_command(Ports& top, const SnappedTriangle& t, int coord_bits) {
 }
 
 // Drives a triangle's texture coordinates (cmd_textured, cmd_texture0..2: S, T, Q at bits 0, 50,
-// 100 of each vertex's word, two's complement of RS_TEXTURE_VERTEX_BITS) on a verilated top's
+// 100 of each vertex's word, two's complement of rastersim_pkg::TEXTURE_VERTEX_BITS) on a verilated top's
 // wide ports (VlWide words of 32 bits).
 template <class Ports>
 void drive_texture_command(Ports& top, const SnappedTriangle& t) {

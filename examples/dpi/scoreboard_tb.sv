@@ -5,6 +5,7 @@
 // cycle it was accepted), every depth-test result, the frame's cycles and, through the read-back
 // port, every word of the final buffers. Cycle 0 is the first cycle with frame_ready high.
 // The clock comes from the C++ main (main.cpp); `done` and `failed` end the run.
+`include "rastersim_pkg.sv"
 module scoreboard_tb #(
   parameter integer WIDTH = 64,
   parameter integer HEIGHT = 48,
@@ -125,8 +126,10 @@ module scoreboard_tb #(
   rastersim_top #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
                   .SETUP_INTERVAL(SETUP_INTERVAL)) dut (
     .clk(clk), .rst(rst),
-    .cfg_depth_func(3'd1), .cfg_depth_write(1'b1), .cfg_depth_clear({Z_BITS{1'b1}}), .cfg_cull(2'd0),
-    .cfg_front_face(1'b0), .cfg_traversal(1'b1), .cfg_shading(1'b1), .cfg_memory_latency(MEMORY_LATENCY),
+    .cfg_depth_func(rastersim_pkg::DEPTH_LESS), .cfg_depth_write(1'b1), .cfg_depth_clear({Z_BITS{1'b1}}),
+    .cfg_cull(rastersim_pkg::CULL_NONE), .cfg_front_face(rastersim_pkg::FRONT_CCW),
+    .cfg_traversal(rastersim_pkg::TRAVERSAL_SPAN), .cfg_shading(rastersim_pkg::SHADING_GOURAUD),
+    .cfg_memory_latency(MEMORY_LATENCY),
     .cfg_setup_fifo_depth(8),
     .frame_ready(frame_ready), .cmd_valid(cmd_valid), .cmd_ready(cmd_ready),
     .cmd_x0(cmd_x[0]), .cmd_y0(cmd_y[0]), .cmd_x1(cmd_x[1]), .cmd_y1(cmd_y[1]), .cmd_x2(cmd_x[2]), .cmd_y2(cmd_y[2]),

@@ -3,6 +3,7 @@
 // the on-chip memory (rtl/zbuffer_memory.sv, as in rastersim_top) behind its memory port, whose
 // read-back port is the interface's, so that `rastersim cosim --dut` checks it exactly as it
 // checks a user's design that keeps its buffers inside.
+`include "rastersim_pkg.sv"
 module rastersim_dut #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,

@@ -10,6 +10,7 @@
 // record; a fragment belongs to the walker's triangle when the walker hands it on, and travels in
 // `passing` to the z-buffer's handshake; there its pixel, depth and colour enter `in_flight`,
 // which the depth-test result pops, L cycles later, as one retired fragment.
+`include "rastersim_pkg.sv"
 module rastersim_dut_memory #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,

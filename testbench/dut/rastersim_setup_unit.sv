@@ -4,6 +4,7 @@
 // (rastersim_record.vh) are sign-extended into setup_record_t; it carries no owns_samples flag, so
 // each edge's is formed from its steps by the fill rule the unit is built with (docs/arithmetic.md
 // section 7: a left edge has step_x = -dy 2^S > 0, a top edge step_x = 0 and step_y = dx 2^S > 0).
+`include "rastersim_pkg.sv"
 module rastersim_setup_unit #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
@@ -67,8 +68,8 @@ module rastersim_setup_unit #(
   wire [EB-1:0]  start [0:2];
   wire [SXB-1:0] step_x [0:2];
   wire [SYB-1:0] step_y [0:2];
-  localparam [0:0] OWN_LEFT = FILL_RULE == RS_FILL_TOP_LEFT || FILL_RULE == RS_FILL_BOTTOM_LEFT;
-  localparam [0:0] OWN_TOP = FILL_RULE == RS_FILL_TOP_LEFT || FILL_RULE == RS_FILL_TOP_RIGHT;
+  localparam [0:0] OWN_LEFT = FILL_RULE == rastersim_pkg::FILL_TOP_LEFT || FILL_RULE == rastersim_pkg::FILL_BOTTOM_LEFT;
+  localparam [0:0] OWN_TOP = FILL_RULE == rastersim_pkg::FILL_TOP_LEFT || FILL_RULE == rastersim_pkg::FILL_TOP_RIGHT;
   wire [2:0] owns_samples;
   genvar k;
   generate

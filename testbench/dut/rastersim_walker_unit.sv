@@ -4,6 +4,7 @@
 // testbench/dut/rastersim_walker_unit.f --top rastersim_walker_unit`. Its packed record is rec_aux
 // with every field that setup_record_t carries taken from rec instead (truncated to the record's
 // widths), so that both inputs reach the walk.
+`include "rastersim_pkg.sv"
 module rastersim_walker_unit #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,

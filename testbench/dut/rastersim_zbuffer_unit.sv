@@ -3,6 +3,7 @@
 // rastersim_top joins them: `rastersim cosim --unit zbuffer --dut
 // testbench/dut/rastersim_zbuffer_unit.f --top rastersim_zbuffer_unit`. The frame starts when the
 // memory has cleared itself; fragments wait until then.
+`include "rastersim_pkg.sv"
 module rastersim_zbuffer_unit #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,

@@ -1,6 +1,7 @@
 // The walker (with its entry stage) and the Z adder as rastersim_core joins them, alone: the record
 // comes from the test (packed as rs_rec_lsb lays it out), frag_ready is the test's script. Verilated for the unit test
 // of the walk against the model's (tests/units/test_walker_unit.cpp).
+`include "rastersim_pkg.sv"
 module walker_unit #(
   parameter integer WIDTH = 64,
   parameter integer HEIGHT = 48,

@@ -77,7 +77,7 @@ expected=$(grep -m1 '^frame ' latency.txt | sed -n 's/.*expected cycle \([0-9]*\
 mkdir -p bug/rtl bug/testbench/dut
 cp "$src"/rtl/*.sv "$src"/rtl/*.vh "$src"/rtl/rastersim.f bug/rtl/
 cp "$src"/testbench/dut/rastersim_dut*.sv "$src"/testbench/dut/rastersim_dut.f bug/testbench/dut/
-sed -i 's/RS_DEPTH_LESS: pass = done_z < mem_rd_depth;/RS_DEPTH_LESS: pass = done_z <= mem_rd_depth;/' bug/rtl/zbuffer.sv
+sed -i 's/rastersim_pkg::DEPTH_LESS: pass = done_z < mem_rd_depth;/rastersim_pkg::DEPTH_LESS: pass = done_z <= mem_rd_depth;/' bug/rtl/zbuffer.sv
 cmp -s bug/rtl/zbuffer.sv "$src/rtl/zbuffer.sv" && fail "the depth test's line was not found"
 status=0
 "$exe" cosim --dut bug/testbench/dut/rastersim_dut.f --top rastersim_dut "${flags[@]}" --compare frame > bug.txt 2> bug.err || status=$?

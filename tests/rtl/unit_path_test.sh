@@ -108,7 +108,7 @@ if [ "$part" != interfaces ]; then
   mutants=(
     "top_edge_bias#setup#triangle_setup_pipelined.sv#wire bias = !owns_samples(ndy > 0, ndy < 0, dx > 0, dx < 0);#wire bias = !owns_samples(ndy > 0, ndy < 0, dx < 0, dx > 0);#: edge[0-2]_start: expected"
     "left_edge_carry#walker#plane_register.sv#along_step_carry_q[k] <= record_step[k] - step_x_in;#along_step_carry_q[k] <= record_step[k] + step_x_in;#: \(z\|color\): expected"
-    "less_as_lequal#zbuffer#zbuffer.sv#RS_DEPTH_LESS: pass = done_z < mem_rd_depth;#RS_DEPTH_LESS: pass = done_z <= mem_rd_depth;#: pass: expected"
+    "less_as_lequal#zbuffer#zbuffer.sv#rastersim_pkg::DEPTH_LESS: pass = done_z < mem_rd_depth;#rastersim_pkg::DEPTH_LESS: pass = done_z <= mem_rd_depth;#: pass: expected"
   )
   for m in "${mutants[@]}"; do
     IFS='#' read -r name unit file from to field <<< "$m"
