@@ -17,7 +17,7 @@ module plane_register #(
   input  wire row_enter,    // row += step_y; value = row, or the entered slot's value (span: the next row)
   input  wire enter_left,   // load, row_enter: the row starts at a left edge's span start (else at x0)
   input  wire enter_slot,   // which left-edge slot
-  input  wire [1:0] left_carry,  // load, row_enter: each slot's DDA carry into the row after this one
+  input  wire [rastersim_pkg::LEFT_EDGE_SLOTS-1:0] left_carry,  // load, row_enter: each slot's DDA carry into the row after this one
   input  wire [REG_BITS-1:0] start,
   input  wire [REG_BITS-1:0] step_x_in,
   input  wire [REG_BITS-1:0] step_y_in,

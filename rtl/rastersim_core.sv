@@ -34,21 +34,21 @@ module rastersim_core `RS_IMPORT #(
 ) (
   input  wire clk,
   input  wire rst,
-  input  wire [2:0] cfg_depth_func,        // rastersim_pkg::DEPTH_*
+  input  `RS_TYPE(depth_func_t) cfg_depth_func,  // rastersim_pkg::DEPTH_*
   input  wire       cfg_depth_write,
-  input  wire [1:0] cfg_cull,              // rastersim_pkg::CULL_*
+  input  `RS_TYPE(cull_t) cfg_cull,              // rastersim_pkg::CULL_*
   input  wire       cfg_front_face,        // rastersim_pkg::FRONT_*
   input  wire       cfg_traversal,         // rastersim_pkg::TRAVERSAL_*
   input  wire       cfg_shading,           // rastersim_pkg::SHADING_*
   input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,  // 1 .. MAX_MEMORY_LATENCY
   input  wire [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] cfg_setup_fifo_depth,  // record credits, 1 .. MAX
   input  wire [rastersim_pkg::TEXTURE_LATENCY_BITS-1:0] cfg_texture_latency,   // Lt, 1 .. MAX_TEXTURE_LATENCY (TEXTURE builds)
-  input  wire [3:0] cfg_texture_log2_width,  // the texture's size, 0..10
-  input  wire [3:0] cfg_texture_log2_height,
+  input  wire [rastersim_pkg::TEXTURE_LOG2_BITS-1:0] cfg_texture_log2_width,  // the texture's size, 0..10
+  input  wire [rastersim_pkg::TEXTURE_LOG2_BITS-1:0] cfg_texture_log2_height,
   input  wire       cfg_texture_bilinear,  // 0: nearest
   input  wire       cfg_texture_clamp,     // 0: repeat
-  input  wire [32:0] cfg_depth_bias_constant,  // c, plane LSBs, two's complement (DEPTH_BIAS builds)
-  input  wire [7:0]  cfg_depth_bias_slope,     // f, s4.4 (16 x the slope factor)
+  input  wire [rastersim_pkg::DEPTH_BIAS_CONSTANT_BITS-1:0] cfg_depth_bias_constant,  // c, plane LSBs, two's complement (DEPTH_BIAS builds)
+  input  wire [rastersim_pkg::DEPTH_BIAS_SLOPE_BITS-1:0] cfg_depth_bias_slope,     // f, s4.4 (16 x the slope factor)
   output wire frame_ready,
   // Triangle command: snapped vertices, x and y s(COORD_BITS-S).S, z u(DEPTH_PLANE_BITS), rgb {r, g, b}.
   input  wire cmd_valid,
@@ -62,7 +62,7 @@ module rastersim_core `RS_IMPORT #(
   input  `RS_TYPE(texture_vertex_t) cmd_texture0, cmd_texture1, cmd_texture2,
   // Trace: setup decision (FRONT cycle) and activity.
   output wire trace_setup_decided,
-  output wire [2:0] trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen, 4 no centre
+  output `RS_TYPE(status_t) trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen, 4 no centre
   output wire trace_setup_busy,
   output wire trace_setup_stall,           // a triangle offered, the unit free, not accepted (credits, slot)
   output wire trace_setup_done,            // a drawn triangle's record is in the setup output register

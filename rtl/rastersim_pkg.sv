@@ -29,11 +29,26 @@ package rastersim_pkg;
   localparam integer PIXEL_CENTER_HALF = 0, PIXEL_CENTER_CORNER = 1;
   localparam integer ROUNDING_NEAREST = 0, ROUNDING_TRUNCATE = 1;
   localparam integer FILL_TOP_LEFT = 0, FILL_TOP_RIGHT = 1, FILL_BOTTOM_LEFT = 2, FILL_BOTTOM_RIGHT = 3;
+  typedef logic [2:0] depth_func_t;  // DEPTH_*
+  typedef logic [1:0] cull_t;        // CULL_*
+  typedef logic [2:0] status_t;      // STATUS_*
+
+  // A triangle's edges, k = 0..2 (edge k from vertex k to vertex k + 1): ports of per-edge flags.
+  localparam integer TRIANGLE_EDGES = 3;
+  // The left-edge slots of the plane registers (docs/cycle-model.md): a triangle has at most two
+  // left edges, each with its DDA carry.
+  localparam integer LEFT_EDGE_SLOTS = 2;
+
+  // The depth bias's run-time inputs (DEPTH_BIAS builds): the constant c in plane LSBs, two's
+  // complement, and the slope factor f, s4.4 (16 x the factor).
+  localparam integer DEPTH_BIAS_CONSTANT_BITS = 33;
+  localparam integer DEPTH_BIAS_SLOPE_BITS = 8;
 
   // A colour, u8 per channel: the vertex colours of a command, a fragment's, a texel, a written word.
   typedef struct packed {
     logic [7:0] r, g, b;
   } rgb_t;
+  localparam integer RGB_BITS = 24;  // an rgb_t, where a port packs several (3 vertices, 4 banks)
 
   // A vertex's texture coordinates (model/triangle.h SnappedVertex): S and T s8.P, Q u1.P with
   // leading zeros, P = TEXTURE_FRACTION_BITS; the command's cmd_texture0..2, S in the low bits.
@@ -49,7 +64,13 @@ package rastersim_pkg;
   // Icarus 11 nor yosys 0.23 takes a packed-array type on a port.)
   localparam integer TEXTURE_BANKS = 4;
   localparam integer TEXEL_WORD_BITS = 18;  // {row >> 1, column >> 1} of a side of up to 1024 texels
-  localparam integer TEXEL_BITS = 24;  // an rgb_t
+  localparam integer TEXEL_BITS = RGB_BITS;
+  // A texture's side is 2^0 .. 2^10 texels: its log2 on 4 bits, a texel's column or row on 10.
+  localparam integer TEXTURE_LOG2_BITS = 4;
+  localparam integer TEXTURE_COORD_BITS = 10;
+  localparam integer TEXTURE_WEIGHT_BITS = 8;  // a bilinear weight, in 1/256
+  // The texture coordinates u, v after the perspective divide, s8.20.
+  localparam integer UV_BITS = 28, UV_FRAC_BITS = 20;
   // cfg_texture_latency holds 1 .. 64, the largest MAX_TEXTURE_LATENCY, so that a core's ports do
   // not change with the bound.
   localparam integer TEXTURE_LATENCY_BITS = 7;

@@ -26,26 +26,26 @@ module rastersim_top `RS_IMPORT #(
 ) (
   input  wire clk,
   input  wire rst,
-  input  wire [2:0] cfg_depth_func,        // rastersim_pkg::DEPTH_*
+  input  `RS_TYPE(depth_func_t) cfg_depth_func,  // rastersim_pkg::DEPTH_*
   input  wire       cfg_depth_write,
   input  wire [Z_BITS-1:0] cfg_depth_clear,
-  input  wire [1:0] cfg_cull,              // rastersim_pkg::CULL_*
+  input  `RS_TYPE(cull_t) cfg_cull,              // rastersim_pkg::CULL_*
   input  wire       cfg_front_face,        // rastersim_pkg::FRONT_*
   input  wire       cfg_traversal,         // rastersim_pkg::TRAVERSAL_*
   input  wire       cfg_shading,           // rastersim_pkg::SHADING_*
   input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,  // 1 .. MAX_MEMORY_LATENCY
   input  wire [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] cfg_setup_fifo_depth,  // record credits, 1 .. MAX
   input  wire [rastersim_pkg::TEXTURE_LATENCY_BITS-1:0] cfg_texture_latency,   // as rastersim_core's (TEXTURE builds)
-  input  wire [3:0] cfg_texture_log2_width,
-  input  wire [3:0] cfg_texture_log2_height,
+  input  wire [rastersim_pkg::TEXTURE_LOG2_BITS-1:0] cfg_texture_log2_width,
+  input  wire [rastersim_pkg::TEXTURE_LOG2_BITS-1:0] cfg_texture_log2_height,
   input  wire       cfg_texture_bilinear,
   input  wire       cfg_texture_clamp,
-  input  wire [32:0] cfg_depth_bias_constant,  // as rastersim_core's (DEPTH_BIAS builds)
-  input  wire [7:0]  cfg_depth_bias_slope,
+  input  wire [rastersim_pkg::DEPTH_BIAS_CONSTANT_BITS-1:0] cfg_depth_bias_constant,  // as rastersim_core's (DEPTH_BIAS builds)
+  input  wire [rastersim_pkg::DEPTH_BIAS_SLOPE_BITS-1:0] cfg_depth_bias_slope,
   // Texture load port: texel (column, row), written at the end of the cycle (TEXTURE builds).
   input  wire texture_load_en,
-  input  wire [9:0] texture_load_x,
-  input  wire [9:0] texture_load_y,
+  input  wire [rastersim_pkg::TEXTURE_COORD_BITS-1:0] texture_load_x,
+  input  wire [rastersim_pkg::TEXTURE_COORD_BITS-1:0] texture_load_y,
   input  `RS_TYPE(rgb_t) texture_load_rgb,
   // The texture memory refuses read requests in this cycle: a verification hook (the co-simulation
   // drives the profile's stall pattern on it); tie it to 0.
@@ -61,7 +61,7 @@ module rastersim_top `RS_IMPORT #(
   input  `RS_TYPE(texture_vertex_t) cmd_texture0, cmd_texture1, cmd_texture2,  // S, T, Q as rastersim_core's
   // Trace: setup decision (FRONT cycle) and activity.
   output wire trace_setup_decided,
-  output wire [2:0] trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen, 4 no centre
+  output `RS_TYPE(status_t) trace_setup_status,    // 0 drawn, 1 degenerate, 2 culled, 3 offscreen, 4 no centre
   output wire trace_setup_busy,
   output wire trace_setup_stall,           // a triangle offered, the unit free, every record credit held
   output wire trace_setup_done,            // a drawn triangle's record is in the setup output register

@@ -149,10 +149,9 @@ function automatic integer rs_divider_bits(input integer w, input integer h, inp
 endfunction
 
 // Texturing (docs/arithmetic.md section 5, model/widths.h): P attribute fraction bits, the S, T, Q
-// registers s9.(P + Ft) with Ft the derived guard bits whatever Z_GUARD_BITS, u and v s8.20, and
-// the perspective divide's stages (docs/cycle-model.md, "Texture unit").
+// registers s9.(P + Ft) with Ft the derived guard bits whatever Z_GUARD_BITS (u and v s8.20:
+// rastersim_pkg::UV_BITS), and the perspective divide's stages (docs/cycle-model.md, "Texture unit").
 /* verilator lint_off UNUSEDPARAM */
-localparam integer RS_UV_BITS = 28, RS_UV_FRAC_BITS = 20;
 localparam integer RS_TEXTURE_DIVIDE_STAGES = 29;
 /* verilator lint_on UNUSEDPARAM */
 function automatic integer rs_texture_reg_bits(input integer w, input integer h);

@@ -35,7 +35,7 @@ module scanline_walker #(
   output wire adder_row_enter,  // span, next row: row += step_y; value = row or the entered slot's
   output wire adder_enter_left, // load, row_enter: the span starts at a left edge (else at x0)
   output wire adder_enter_slot, // that edge's left-edge slot: the number of left edges before it
-  output wire [1:0] adder_left_carry,  // each slot's DDA carry into the row after the one entered
+  output wire [rastersim_pkg::LEFT_EDGE_SLOTS-1:0] adder_left_carry,  // each slot's DDA carry into the row after the one entered
   // Fragment to the z-buffer.
   output wire frag_valid,
   input  wire frag_ready,

@@ -21,13 +21,13 @@ module span_bounds #(
   parameter integer SUBPIXEL_BITS = 4
 ) (
   input  wire [3*rs_edge_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] quot,  // edge k at [k*EDGE_BITS]: floor(E / d)
-  input  wire [2:0] left,                // step_x > 0
-  input  wire [2:0] right,               // step_x < 0
-  input  wire [2:0] edge_negative,       // E < 0 (used for horizontal edges only)
+  input  wire [rastersim_pkg::TRIANGLE_EDGES-1:0] left,          // step_x > 0
+  input  wire [rastersim_pkg::TRIANGLE_EDGES-1:0] right,         // step_x < 0
+  input  wire [rastersim_pkg::TRIANGLE_EDGES-1:0] edge_negative, // E < 0 (used for horizontal edges only)
   input  wire [rs_ubits32(WIDTH - 1)-1:0] x0,
   input  wire [rs_ubits32(WIDTH - 1)-1:0] x1,
-  input  wire [2:0] lo_fits_last,        // x1 - x0 + quot_k >= 0 (quot_k's low X_BITS + 1 bits, signed)
-  input  wire [2:0] hi_le_last,          // quot_k's low X_BITS bits <= x1 - x0
+  input  wire [rastersim_pkg::TRIANGLE_EDGES-1:0] lo_fits_last,  // x1 - x0 + quot_k >= 0 (quot_k's low X_BITS + 1 bits, signed)
+  input  wire [rastersim_pkg::TRIANGLE_EDGES-1:0] hi_le_last,    // quot_k's low X_BITS bits <= x1 - x0
   output wire [rs_ubits32(WIDTH - 1)-1:0] span_start,  // both used only when nonempty
   output wire [rs_ubits32(WIDTH - 1)-1:0] span_end,
   output wire nonempty,

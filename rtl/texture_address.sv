@@ -8,15 +8,15 @@
 `include "rastersim_pkg.sv"
 module texture_address (
   input  wire clk,
-  input  wire [27:0] u,              // s8.20
-  input  wire [27:0] v,
-  input  wire [3:0] cfg_log2_width,  // 0..10
-  input  wire [3:0] cfg_log2_height,
+  input  wire [rastersim_pkg::UV_BITS-1:0] u,              // s8.20
+  input  wire [rastersim_pkg::UV_BITS-1:0] v,
+  input  wire [rastersim_pkg::TEXTURE_LOG2_BITS-1:0] cfg_log2_width,  // 0..10
+  input  wire [rastersim_pkg::TEXTURE_LOG2_BITS-1:0] cfg_log2_height,
   input  wire cfg_bilinear,          // 0: nearest
   input  wire cfg_clamp,             // 0: repeat
-  output reg  [9:0] x0_q, x1_q,      // the columns (first, second)
-  output reg  [9:0] y0_q, y1_q,      // the rows
-  output reg  [7:0] wx_q, wy_q       // the weights of x1 and y1, in 1/256
+  output reg  [rastersim_pkg::TEXTURE_COORD_BITS-1:0] x0_q, x1_q,      // the columns (first, second)
+  output reg  [rastersim_pkg::TEXTURE_COORD_BITS-1:0] y0_q, y1_q,      // the rows
+  output reg  [rastersim_pkg::TEXTURE_WEIGHT_BITS-1:0] wx_q, wy_q       // the weights of x1 and y1, in 1/256
 );
   // One axis: {first, second, weight}; before wrapping an index lies within +-(2^17 + 1) texels.
   function automatic [27:0] axis(input [27:0] coord, input [3:0] log2_size, input bilinear, input clamp);

@@ -16,12 +16,12 @@ module texture_divide #(
   // The registers' width, rs_texture_reg_bits (P + Ft + 9) written with $clog2: a port list that
   // calls the widths header's functions before its include upsets Verilator 5.006's lint of the
   // other modules (rtl/rastersim.f).
-  input  wire [50+$clog2(2*(WIDTH+HEIGHT-1))-1:0] in_s,  // S register, two's complement
-  input  wire [50+$clog2(2*(WIDTH+HEIGHT-1))-1:0] in_t,  // T register
-  input  wire [50+$clog2(2*(WIDTH+HEIGHT-1))-1:0] in_q,  // Q register, > 0 at a covered pixel
+  input  wire [rs_texture_reg_bits(WIDTH, HEIGHT)-1:0] in_s,  // S register, two's complement
+  input  wire [rs_texture_reg_bits(WIDTH, HEIGHT)-1:0] in_t,  // T register
+  input  wire [rs_texture_reg_bits(WIDTH, HEIGHT)-1:0] in_q,  // Q register, > 0 at a covered pixel
   output wire out_valid,
-  output wire [27:0] out_u,  // s8.20
-  output wire [27:0] out_v
+  output wire [rastersim_pkg::UV_BITS-1:0] out_u,  // s8.20
+  output wire [rastersim_pkg::UV_BITS-1:0] out_v
 );
 `include "rastersim_widths.vh"
   `RS_REQUIRE(illegal_width, WIDTH >= 1 && WIDTH <= 4096, "texture_divide: WIDTH must be 1..4096")
@@ -29,8 +29,8 @@ module texture_divide #(
 
   localparam integer REG_BITS = 50 + $clog2(2 * (WIDTH + HEIGHT - 1));
   `RS_REQUIRE(reg_bits_match, REG_BITS == rs_texture_reg_bits(WIDTH, HEIGHT), "texture_divide: register width")
-  localparam integer QUOTIENT_BITS = RS_UV_BITS - 1;           // 27: |u| < 2^27 unless clamped
-  localparam integer SHIFT = QUOTIENT_BITS - RS_UV_FRAC_BITS;  // 7 dividend bits below the first remainder
+  localparam integer QUOTIENT_BITS = rastersim_pkg::UV_BITS - 1;           // 27: |u| < 2^27 unless clamped
+  localparam integer SHIFT = QUOTIENT_BITS - rastersim_pkg::UV_FRAC_BITS;  // 7 dividend bits below the first remainder
   localparam integer STAGES = QUOTIENT_BITS + 2;               // 29
   `RS_REQUIRE(stages_match_model, STAGES == RS_TEXTURE_DIVIDE_STAGES, "texture_divide: stage count")
 
@@ -62,7 +62,7 @@ module texture_divide #(
       wire clamp = {7'd0, magnitude} >= {in_q, 7'd0};
       always @(posedge clk) begin
         remainder_q[c][0] <= {8'd0, magnitude[REG_BITS-1:SHIFT]};
-        pending_q[c][0] <= {magnitude[SHIFT-1:0], {RS_UV_FRAC_BITS{1'b0}}};
+        pending_q[c][0] <= {magnitude[SHIFT-1:0], {rastersim_pkg::UV_FRAC_BITS{1'b0}}};
         quotient_q[c][0] <= {QUOTIENT_BITS{1'b0}};
         negative_q[c][0] <= negative;
         clamp_q[c][0] <= clamp;

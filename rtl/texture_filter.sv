@@ -6,16 +6,16 @@
 // two rising edges). The shade travels beside the blend. Nearest lookups come with weights 0: the
 // blend is the first texel.
 `include "rastersim_pkg.sv"
-module texture_filter (
+module texture_filter `RS_IMPORT (
   input  wire clk,
-  input  wire [23:0] texel00,  // {r, g, b}: the lower row's first and second column, the upper row's
-  input  wire [23:0] texel10,
-  input  wire [23:0] texel01,
-  input  wire [23:0] texel11,
-  input  wire [7:0] wx,        // weight of the second column, 1/256
-  input  wire [7:0] wy,        // weight of the second row
-  input  wire [23:0] shade,    // the fragment's Gouraud colour
-  output reg  [23:0] rgb_q
+  input  `RS_TYPE(rgb_t) texel00,  // {r, g, b}: the lower row's first and second column, the upper row's
+  input  `RS_TYPE(rgb_t) texel10,
+  input  `RS_TYPE(rgb_t) texel01,
+  input  `RS_TYPE(rgb_t) texel11,
+  input  wire [rastersim_pkg::TEXTURE_WEIGHT_BITS-1:0] wx,        // weight of the second column, 1/256
+  input  wire [rastersim_pkg::TEXTURE_WEIGHT_BITS-1:0] wy,        // weight of the second row
+  input  `RS_TYPE(rgb_t) shade,    // the fragment's Gouraud colour
+  output reg  [rastersim_pkg::RGB_BITS-1:0] rgb_q
 );
   // Operands widened to the result's width: no product is cut.
   function automatic [7:0] blend(input [7:0] a, input [7:0] b, input [7:0] c, input [7:0] d, input [7:0] fx,

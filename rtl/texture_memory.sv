@@ -7,7 +7,7 @@
 // which a harness applies the profile's stall pattern; tie it to 0). Textures up to 2^MAX_LOG2_SIZE
 // texels a side; the load port writes one texel per cycle before the frame.
 `include "rastersim_pkg.sv"
-module texture_memory #(
+module texture_memory `RS_IMPORT #(
   parameter integer MAX_TEXTURE_LATENCY = 64,
   parameter integer MAX_LOG2_SIZE = 10
 ) (
@@ -22,9 +22,9 @@ module texture_memory #(
   output wire [rastersim_pkg::TEXTURE_BANKS*rastersim_pkg::TEXEL_BITS-1:0] rd_texels,   // bank b's texel {r, g, b} at [24 b +: 24], in c + Lt
   // Load port: texel (column load_x, row load_y), written at the end of the cycle.
   input  wire load_en,
-  input  wire [9:0] load_x,
-  input  wire [9:0] load_y,
-  input  wire [23:0] load_rgb
+  input  wire [rastersim_pkg::TEXTURE_COORD_BITS-1:0] load_x,
+  input  wire [rastersim_pkg::TEXTURE_COORD_BITS-1:0] load_y,
+  input  `RS_TYPE(rgb_t) load_rgb
 );
   // Release 5.006 of the linter reports these functions as hiding themselves when rastersim_top
   // instantiates this unit, out of lint_waivers.vlt's file waiver's reach; they are the same functions.

@@ -13,7 +13,7 @@
 // bank b's texel on rd_texels[24 b +: 24] in c + Lt; bank 2 (j mod 2) + (i mod 2) holds column i,
 // row j at {j >> 1, i >> 1}.
 `include "rastersim_pkg.sv"
-module texture_unit #(
+module texture_unit `RS_IMPORT #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
   parameter integer Z_BITS = 24,
@@ -23,8 +23,8 @@ module texture_unit #(
   input  wire rst,
   // Static configuration (registers of the core, held for the frame).
   input  wire [rastersim_pkg::TEXTURE_LATENCY_BITS-1:0] cfg_texture_latency,  // Lt, 1 .. MAX_TEXTURE_LATENCY
-  input  wire [3:0] cfg_log2_width,       // texture size, 0..10
-  input  wire [3:0] cfg_log2_height,
+  input  wire [rastersim_pkg::TEXTURE_LOG2_BITS-1:0] cfg_log2_width,       // texture size, 0..10
+  input  wire [rastersim_pkg::TEXTURE_LOG2_BITS-1:0] cfg_log2_height,
   input  wire cfg_bilinear,               // 0: nearest
   input  wire cfg_clamp,                  // 0: repeat
   // Fragments from the walker: pixel, depth uN, shade {r, g, b}, and the S, T, Q registers
@@ -34,18 +34,18 @@ module texture_unit #(
   input  wire [rs_ubits32(WIDTH - 1)-1:0]  in_x,
   input  wire [rs_ubits32(HEIGHT - 1)-1:0] in_y,
   input  wire [Z_BITS-1:0] in_z,
-  input  wire [23:0] in_rgb,
+  input  `RS_TYPE(rgb_t) in_rgb,
   input  wire in_textured,
-  input  wire [50+$clog2(2*(WIDTH+HEIGHT-1))-1:0] in_s,
-  input  wire [50+$clog2(2*(WIDTH+HEIGHT-1))-1:0] in_t,
-  input  wire [50+$clog2(2*(WIDTH+HEIGHT-1))-1:0] in_q,
+  input  wire [rs_texture_reg_bits(WIDTH, HEIGHT)-1:0] in_s,
+  input  wire [rs_texture_reg_bits(WIDTH, HEIGHT)-1:0] in_t,
+  input  wire [rs_texture_reg_bits(WIDTH, HEIGHT)-1:0] in_q,
   // Fragments to the z-buffer.
   output wire out_valid,
   input  wire out_ready,
   output wire [rs_ubits32(WIDTH - 1)-1:0]  out_x,
   output wire [rs_ubits32(HEIGHT - 1)-1:0] out_y,
   output wire [Z_BITS-1:0] out_z,
-  output wire [23:0] out_rgb,
+  output `RS_TYPE(rgb_t) out_rgb,
   // Texture memory read port.
   output wire tex_rd_valid,
   input  wire tex_rd_ready,

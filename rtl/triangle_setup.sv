@@ -11,7 +11,7 @@
 // TEXTURE = 1 adds the S, T, Q planes (docs/cycle-model.md, "The setup units with the texture
 // unit"): the texture coordinates are registered here beside the vertices.
 `include "rastersim_pkg.sv"
-module triangle_setup #(
+module triangle_setup `RS_IMPORT #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
   parameter integer SUBPIXEL_BITS = 4,
@@ -26,7 +26,7 @@ module triangle_setup #(
   input  wire rst,
   input  wire run,                   // the frame runs (cycle 0 is its first cycle): slots count
   output wire free,                  // no triangle accepted in this slot yet (0: parallel, busy)
-  input  wire [1:0] cfg_cull,        // rastersim_pkg::CULL_*
+  input  `RS_TYPE(cull_t) cfg_cull,  // rastersim_pkg::CULL_*
   input  wire       cfg_front_face,  // rastersim_pkg::FRONT_*
   // Command input: vertex k at [k*B +: B]; x, y s(COORD_BITS-S).S subpixels; z uN; rgb {r,g,b} u8.
   input  wire in_valid,
@@ -34,7 +34,7 @@ module triangle_setup #(
   input  wire [3*rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] in_x,
   input  wire [3*rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] in_y,
   input  wire [3*Z_BITS-1:0] in_z,
-  input  wire [3*24-1:0]     in_rgb,
+  input  wire [3*rastersim_pkg::RGB_BITS-1:0] in_rgb,
   // Texture coordinates (TEXTURE = 1; unused otherwise): the triangle is textured, and vertex k's
   // c (0 S, 1 T, 2 Q) at [(3k + c) 50 +: 50], S and T s8.41, Q u1.41 (50 = rastersim_pkg::TEXTURE_VERTEX_BITS).
   /* verilator lint_off UNUSEDSIGNAL */
@@ -44,7 +44,7 @@ module triangle_setup #(
   // Decision, valid in the FRONT cycle: status 0 drawn, 1 degenerate, 2 culled, 3 offscreen,
   // 4 no centre (rastersim_pkg::STATUS_*).
   output wire        decided,
-  output wire [2:0]  decided_status,
+  output `RS_TYPE(status_t) decided_status,
   output wire        decided_front_facing,
   output wire signed [rs_area_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] decided_area2,  // s.2S
   output wire busy,   // accept, FRONT, DIVIDE, or OUT cycles

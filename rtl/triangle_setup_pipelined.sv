@@ -7,7 +7,7 @@
 // triangle_setup holds the vertex registers (never swapped here: FRONT orders the vertices through
 // multiplexers), the box and the decision's status, and packs the record.
 `include "rastersim_pkg.sv"
-module triangle_setup_pipelined #(
+module triangle_setup_pipelined `RS_IMPORT #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
   parameter integer SUBPIXEL_BITS = 4,
@@ -33,9 +33,9 @@ module triangle_setup_pipelined #(
   input  wire [3*rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] vertex_x,
   input  wire [3*rs_coord_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] vertex_y,
   input  wire [3*Z_BITS-1:0] vertex_z,
-  input  wire [3*24-1:0]     vertex_rgb,
+  input  wire [3*rastersim_pkg::RGB_BITS-1:0] vertex_rgb,
   /* verilator lint_off UNUSEDSIGNAL */
-  input  wire [9*50-1:0] vertex_texture,
+  input  wire [3*rastersim_pkg::TEXTURE_COMMAND_BITS-1:0] vertex_texture,
   input  wire vertex_textured,
   /* verilator lint_on UNUSEDSIGNAL */
   // The clipped box of the vertex registers (signed pixels, COORD_BITS + 2 bits): the first
@@ -49,7 +49,7 @@ module triangle_setup_pipelined #(
   // The decision in the FRONT cycle: twice the signed area of the vertices as accepted (s.2S), and
   // the status triangle_setup forms from it (rastersim_pkg::STATUS_*).
   output wire signed [rs_area_bits(WIDTH, HEIGHT, SUBPIXEL_BITS)-1:0] area2,
-  input  wire [2:0] status,
+  input  `RS_TYPE(status_t) status,
   output wire decided,               // the FRONT cycle
   output wire busy,
   // The record's fields 0..17 (rs_rec_lsb), the 16 PRODUCT results (n at [n Z_REG_BITS], the

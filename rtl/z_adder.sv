@@ -7,7 +7,7 @@
 // product), added before the rounding; with DEPTH_EXPONENT_BITS >= 2 the output encoded as the
 // floating-point depth word. Logic between the register and the fragment: no cycles.
 `include "rastersim_pkg.sv"
-module z_adder #(
+module z_adder `RS_IMPORT #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
   parameter integer Z_BITS = 24,     // N, the depth word's bits
@@ -20,32 +20,32 @@ module z_adder #(
 ) (
   input  wire clk,
   input  wire cfg_shading,  // rastersim_pkg::SHADING_*; flat: the provoking vertex colour
-  input  wire [32:0] cfg_depth_bias_constant,  // c, two's complement, |c| < 2^Np (DEPTH_BIAS)
-  input  wire [7:0] cfg_depth_bias_slope,      // f, s4.4
+  input  wire [rastersim_pkg::DEPTH_BIAS_CONSTANT_BITS-1:0] cfg_depth_bias_constant,  // c, two's complement, |c| < 2^Np (DEPTH_BIAS)
+  input  wire [rastersim_pkg::DEPTH_BIAS_SLOPE_BITS-1:0] cfg_depth_bias_slope,      // f, s4.4
   input  wire load,
   input  wire step_x,
   input  wire next_row,
   input  wire row_enter,
   input  wire enter_left,         // load, row_enter: the span starts at a left edge (scanline_walker)
   input  wire enter_slot,         // its left-edge slot
-  input  wire [1:0] left_carry,   // each slot's DDA carry into the row after the one entered
+  input  wire [rastersim_pkg::LEFT_EDGE_SLOTS-1:0] left_carry,   // each slot's DDA carry into the row after the one entered
   input  wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_start,
   input  wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_step_x,
   input  wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS):0]  depth_step_y,
   input  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] color_start,   // r, g, b at [c*B +: B]
   input  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] color_step_x,
   input  wire [3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS))-1:0] color_step_y,
-  input  wire [23:0] flat_rgb,
+  input  `RS_TYPE(rgb_t) flat_rgb,
   // The planes along the left edges: slot j at [j*(Z_REG_BITS + 3 COLOR_REG_BITS)], depth first,
   // then r, g, b (rastersim_widths.vh, record fields 18 and 19).
   input  wire [2*(rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)+1+3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)))-1:0] left_start,
   input  wire [2*(rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)+1+3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)))-1:0] left_step,
   // The texture record (rs_texture_record_bits of rastersim_widths.vh; unused without TEXTURE).
-  input  wire [1+21*(50+$clog2(2*(WIDTH+HEIGHT-1)))-1:0] texture_record,
+  input  wire [rs_texture_record_bits(WIDTH, HEIGHT)-1:0] texture_record,
   output wire [Z_BITS-1:0] depth,  // the depth word, N bits
-  output wire [23:0] rgb,          // {r, g, b}, u8 each
+  output `RS_TYPE(rgb_t) rgb,          // {r, g, b}, u8 each
   output wire triangle_textured,   // the record's texture flag (0 without TEXTURE)
-  output wire [3*(50+$clog2(2*(WIDTH+HEIGHT-1)))-1:0] stq  // the S, T, Q registers at [c*TR +: TR]
+  output wire [3*rs_texture_reg_bits(WIDTH, HEIGHT)-1:0] stq  // the S, T, Q registers at [c*TR +: TR]
 );
 `include "rastersim_widths.vh"
   `RS_REQUIRE(illegal_z_bits, Z_BITS >= 16 && Z_BITS <= 32, "z_adder: Z_BITS must be 16..32")

@@ -14,7 +14,7 @@
 // request taken in c returns its word in exactly c+L; writes are always taken (no back-pressure)
 // and land at the end of their cycle; mem_rd_ready may be low in any cycle (back-pressure).
 `include "rastersim_pkg.sv"
-module zbuffer #(
+module zbuffer `RS_IMPORT #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
   parameter integer Z_BITS = 24,
@@ -22,7 +22,7 @@ module zbuffer #(
 ) (
   input  wire clk,
   input  wire rst,
-  input  wire [2:0] cfg_depth_func,  // rastersim_pkg::DEPTH_*
+  input  `RS_TYPE(depth_func_t) cfg_depth_func,  // rastersim_pkg::DEPTH_*
   input  wire       cfg_depth_write,
   input  wire [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] cfg_memory_latency,
   output wire clear_done,            // the memory is cleared: the frame may start
@@ -32,7 +32,7 @@ module zbuffer #(
   input  wire [rs_ubits32(WIDTH - 1)-1:0]  frag_x,
   input  wire [rs_ubits32(HEIGHT - 1)-1:0] frag_y,
   input  wire [Z_BITS-1:0] frag_z,
-  input  wire [23:0]       frag_rgb,
+  input  `RS_TYPE(rgb_t)    frag_rgb,
   // Depth test result of the fragment read L cycles ago (its write cycle).
   output wire result_valid,
   output wire result_pass,
@@ -48,7 +48,7 @@ module zbuffer #(
   output wire mem_wr_color_en,
   output wire [rs_ubits32(WIDTH * HEIGHT - 1)-1:0] mem_wr_addr,
   output wire [Z_BITS-1:0] mem_wr_depth,
-  output wire [23:0]       mem_wr_rgb
+  output `RS_TYPE(rgb_t)    mem_wr_rgb
 );
 `include "rastersim_widths.vh"
   `RS_REQUIRE(illegal_width, WIDTH >= 1 && WIDTH <= 4096, "zbuffer: WIDTH must be 1..4096")

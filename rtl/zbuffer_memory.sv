@@ -12,7 +12,7 @@
 // synthesis maps the memories to synchronous block RAM (SB_RAM40_4K on an iCE40), a copy per read
 // port.
 `include "rastersim_pkg.sv"
-module zbuffer_memory #(
+module zbuffer_memory `RS_IMPORT #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
   parameter integer Z_BITS = 24,
@@ -34,11 +34,11 @@ module zbuffer_memory #(
   input  wire wr_color_en,
   input  wire [rs_ubits32(WIDTH * HEIGHT - 1)-1:0] wr_addr,
   input  wire [Z_BITS-1:0] wr_depth,
-  input  wire [23:0]       wr_rgb,
+  input  `RS_TYPE(rgb_t)    wr_rgb,
   // Read-back port for the final memories (synchronous: data in the next cycle).
   input  wire [rs_ubits32(WIDTH * HEIGHT - 1)-1:0] readback_addr,
   output wire [Z_BITS-1:0] readback_depth,
-  output wire [23:0]       readback_rgb
+  output `RS_TYPE(rgb_t)    readback_rgb
 );
   // Release 5.006 of the linter reports the width functions as hiding themselves here despite the
   // file waiver in lint_waivers.vlt (which covers every other module); the names are unique.
