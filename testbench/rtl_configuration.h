@@ -42,7 +42,7 @@ constexpr bool widths_agree() {
   return true;
 }
 
-// The encodings of rastersim_widths.vh (RS_*), as rastersim_core publishes them in one word
+// The encodings of rastersim_pkg (rtl/rastersim_pkg.sv), as rastersim_core publishes them in one word
 // (ENCODINGS), laid out from the C++ enums they stand for.
 constexpr uint64_t enum_encodings() {
   uint64_t word = 0;
@@ -71,7 +71,7 @@ template <class V>
 RtlResult run_configuration(const Profile& p, const std::vector<SnappedTriangle>& tris, const RtlOptions& options) {
   static_assert(widths_agree<CoreOf<V>>());
   static_assert(uint64_t(CoreOf<V>::ENCODINGS) == enum_encodings(),
-                "an RTL encoding (rastersim_widths.vh RS_*) differs from its C++ enum");
+                "an RTL encoding (rastersim_pkg) differs from its C++ enum");
   return run_verilated<V>(p, tris, options);
 }
 
