@@ -140,10 +140,10 @@ module rastersim_core `RS_IMPORT #(
   localparam integer SETUP_REJECTED_LATENCY /*verilator public*/ =
       rs_setup_rejected_latency(WIDTH, HEIGHT, SUBPIXEL_BITS, SETUP_INTERVAL);
   localparam integer WALKER_LOAD_CYCLES /*verilator public*/ = 1;
-  // The encodings of rastersim_widths.vh in one word, from bit 0: rastersim_pkg::DEPTH_NEVER .. rastersim_pkg::DEPTH_ALWAYS
-  // (3 bits each), rastersim_pkg::CULL_NONE, _BACK, _FRONT (2), rastersim_pkg::FRONT_CCW, _CW, rastersim_pkg::TRAVERSAL_BBOX, _SPAN,
-  // rastersim_pkg::SHADING_FLAT, _GOURAUD (1), rastersim_pkg::STATUS_DRAWN .. rastersim_pkg::STATUS_NO_CENTRE (3), rastersim_pkg::PIXEL_CENTER_HALF,
-  // _CORNER (1), rastersim_pkg::FILL_TOP_LEFT .. rastersim_pkg::FILL_BOTTOM_RIGHT (2), rastersim_pkg::ROUNDING_NEAREST, _TRUNCATE (1).
+  // The encodings of rastersim_pkg in one word, from bit 0: DEPTH_NEVER .. DEPTH_ALWAYS (3 bits
+  // each), CULL_NONE, _BACK, _FRONT (2), FRONT_CCW, _CW, TRAVERSAL_BBOX, _SPAN, SHADING_FLAT,
+  // _GOURAUD (1), STATUS_DRAWN .. STATUS_NO_CENTRE (3), PIXEL_CENTER_HALF, _CORNER (1),
+  // FILL_TOP_LEFT .. FILL_BOTTOM_RIGHT (2), ROUNDING_NEAREST, _TRUNCATE (1).
   localparam [62:0] ENCODINGS /*verilator public*/ = {
       1'(rastersim_pkg::ROUNDING_TRUNCATE), 1'(rastersim_pkg::ROUNDING_NEAREST),
       2'(rastersim_pkg::FILL_BOTTOM_RIGHT), 2'(rastersim_pkg::FILL_BOTTOM_LEFT), 2'(rastersim_pkg::FILL_TOP_RIGHT), 2'(rastersim_pkg::FILL_TOP_LEFT),
@@ -175,16 +175,16 @@ module rastersim_core `RS_IMPORT #(
 
   // The runtime profile keys are sampled while rst is high and held for the frame (static
   // configuration registers: the units see registers, not the ports).
-  reg [2:0] depth_func_q;
+  `RS_TYPE(depth_func_t) depth_func_q;
   reg depth_write_q, front_face_q, traversal_q, shading_q;
-  reg [1:0] cull_q;
+  `RS_TYPE(cull_t) cull_q;
   reg [rs_ubits32(MAX_MEMORY_LATENCY)-1:0] memory_latency_q;
   reg [rs_ubits32(MAX_SETUP_FIFO_DEPTH)-1:0] setup_fifo_depth_q;
   reg [rastersim_pkg::TEXTURE_LATENCY_BITS-1:0] texture_latency_q;
-  reg [3:0] texture_log2_width_q, texture_log2_height_q;
+  reg [rastersim_pkg::TEXTURE_LOG2_BITS-1:0] texture_log2_width_q, texture_log2_height_q;
   reg texture_bilinear_q, texture_clamp_q;
-  reg [32:0] depth_bias_constant_q;
-  reg [7:0] depth_bias_slope_q;
+  reg [rastersim_pkg::DEPTH_BIAS_CONSTANT_BITS-1:0] depth_bias_constant_q;
+  reg [rastersim_pkg::DEPTH_BIAS_SLOPE_BITS-1:0] depth_bias_slope_q;
   always @(posedge clk) begin
     if (rst) begin
       depth_bias_constant_q <= cfg_depth_bias_constant;

@@ -1,8 +1,8 @@
 // rastersim_pkg: the encodings and the fixed-width records of the pipeline's ports, defined once
 // for every unit, the top and the testbenches. Widths that follow the profile (coordinates,
 // depth, the setup record) cannot live in a package, whose types take no parameters: they are
-// functions of rastersim_widths.vh, and the setup record is a packed struct declared in each unit
-// from those functions (rastersim_record.vh).
+// functions of rastersim_widths.vh, and the setup record is one packed vector laid out by its
+// rs_rec_lsb / rs_rec_field_bits.
 //
 // Every file that uses the package includes this one first; the guard makes any file order work,
 // with or without this file on the tool's list. Constants are named by scope in all three tools

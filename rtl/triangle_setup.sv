@@ -190,8 +190,9 @@ module triangle_setup `RS_IMPORT #(
   // record's x0, x1, y0, y1 in their low bits; signed pixels, in 0 .. WIDTH-1 (HEIGHT-1) when drawn.
   wire signed [BB-1:0] box_x0, box_x1, box_y0, box_y1;
 
-  wire [2:0] status = area2 == 0 ? rastersim_pkg::STATUS_DEGENERATE : culled ? rastersim_pkg::STATUS_CULLED
-                    : box_offscreen ? rastersim_pkg::STATUS_OFFSCREEN : box_no_centre ? rastersim_pkg::STATUS_NO_CENTRE : rastersim_pkg::STATUS_DRAWN;
+  `RS_TYPE(status_t) status;
+  assign status = area2 == 0 ? rastersim_pkg::STATUS_DEGENERATE : culled ? rastersim_pkg::STATUS_CULLED
+                 : box_offscreen ? rastersim_pkg::STATUS_OFFSCREEN : box_no_centre ? rastersim_pkg::STATUS_NO_CENTRE : rastersim_pkg::STATUS_DRAWN;
   assign decided_status = status;
   assign decided_front_facing = area2 != 0 && front_facing;
   assign decided_area2 = area2;
