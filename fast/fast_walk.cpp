@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "fast/fast_setup.h"
 #include "fast/run_kernels.h"
 #include "fast/zbuffer_avx512.h"
 #include "fast/zbuffer_runs.h"
@@ -71,7 +72,9 @@ void prefetch_first_rows(Pipeline& p, const SnappedTriangle& t) {
 class KernelWalk final : public WalkRunner {
  public:
   void prefetch(Pipeline& p, const SnappedTriangle& t) const override { prefetch_first_rows(p, t); }
-  bool reads_left_edge_planes() const override { return false; }  // rows entered with enter_row_at
+  void set_up(const TriangleSetup& setup, const SnappedTriangle& t, SetupResult& r) const override {
+    fast_set_up(setup, t, r);  // rows entered with enter_row_at
+  }
   explicit KernelWalk(const RunKernelVersion& kernel) : kernel_(kernel) {}
   __attribute__((flatten)) int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle,
                                         TriangleRecord& record) const override {
@@ -94,7 +97,9 @@ RASTERSIM_AVX512 __attribute__((flatten)) int64_t walk_avx512(Pipeline& p, const
 class Avx512Walk final : public WalkRunner {
  public:
   void prefetch(Pipeline& p, const SnappedTriangle& t) const override { prefetch_first_rows(p, t); }
-  bool reads_left_edge_planes() const override { return false; }  // rows entered with enter_row_at
+  void set_up(const TriangleSetup& setup, const SnappedTriangle& t, SetupResult& r) const override {
+    fast_set_up(setup, t, r);  // rows entered with enter_row_at
+  }
   int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record) const override {
     return walk_avx512(p, s, load_cycle, record);
   }

@@ -7,6 +7,7 @@
 #include <memory>
 #include <thread>
 
+#include "fast/fast_setup.h"
 #include "fast/run_kernels.h"
 #include "fast/zbuffer_runs.h"
 
@@ -30,8 +31,11 @@ struct TimingRuns {
 
 class TimingWalk final : public WalkRunner {
  public:
-  // Neither this walk nor the workers' (BandSink enters rows with enter_row_at) reads them.
-  bool reads_left_edge_planes() const override { return false; }
+  // Neither this walk nor the workers' (BandSink enters rows with enter_row_at) reads the planes
+  // along the left edges.
+  void set_up(const TriangleSetup& setup, const SnappedTriangle& t, SetupResult& r) const override {
+    fast_set_up(setup, t, r);
+  }
   int64_t walk(Pipeline& p, const SetupResult& s, int64_t load_cycle, TriangleRecord& record) const override {
     TimingRuns runs{p.profile().texture_unit};
     return p.walk_timing_offering_runs(s, load_cycle, record, runs);

@@ -61,7 +61,11 @@ void Pipeline::submit(const SnappedTriangle& tri) {
   record.index = next_index_++;
   const bool runner = walk_runner_ && !sink_;
   if (runner) walk_runner_->prefetch(*this, tri);
-  setup_.run(tri, last_setup_, !runner || walk_runner_->reads_left_edge_planes());
+  if (runner) {
+    walk_runner_->set_up(setup_, tri, last_setup_);
+  } else {
+    setup_.run(tri, last_setup_);
+  }
   const SetupResult& s = last_setup_;
   record.status = s.status;
   // The unit accepts when it is free and one of the setup_fifo_depth record credits is: the credit

@@ -83,9 +83,10 @@ class WalkRunner {
   // Called with each triangle before its setup, which takes long enough for the memory to bring in
   // the words of the triangle's first rows if asked for them here (no effect on any result).
   virtual void prefetch(Pipeline&, const SnappedTriangle&) const {}
-  // Whether the walk enters rows through the planes along the left edges (SetupResult::left) as
-  // the hardware does; a walk that enters them with ZAdder::enter_row_at does not need them set up.
-  virtual bool reads_left_edge_planes() const { return true; }
+  // The triangle's setup into `r`, for this walk: the specification's whole setup by default. A walk
+  // that enters rows without the planes along the left edges (ZAdder::enter_row_at) may leave
+  // r.left as it was; every other field must be the specification's.
+  virtual void set_up(const TriangleSetup& setup, const SnappedTriangle& tri, SetupResult& r) const { setup.run(tri, r); }
 };
 // Picks a new pipeline's walk runner (nullptr: the specification's walk).
 using WalkRunnerChoice = std::shared_ptr<const WalkRunner> (*)(const Pipeline& p);

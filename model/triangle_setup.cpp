@@ -58,13 +58,18 @@ PlaneSetup TriangleSetup::plane(const i128 value[3], const i128 edge_at_start[3]
   return p;
 }
 
-void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r, bool left_edge_planes) const {
+void TriangleSetup::run(const SnappedTriangle& tri, SetupResult& r) const {
+  SetupEdges edges;
+  if (!front(tri, r, edges)) return;
+  planes(edges, r);
+  left_edge_planes(r);
+}
+
+bool TriangleSetup::front(const SnappedTriangle& input, SetupResult& r, SetupEdges& edges) const {
   const Widths& w = widths_;
   const int S = profile_.subpixel_bits;
-  // Every field of a drawn triangle's record is written below (the colour planes only with Gouraud
-  // shading, otherwise they keep a fresh record's zeros; the texture planes zeroed when untextured);
-  // a rejected one's record is a fresh one with what was decided. So the record is not cleared for
-  // every triangle.
+  // The record is not cleared for every triangle: a drawn one's fields are all written by the
+  // stages, a rejected one's record is made fresh here.
   auto reject = [&r](SetupStatus status) {
     SetupResult fresh;
     fresh.status = status;
@@ -73,9 +78,11 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r, bool left_
     fresh.flat_color = r.flat_color;
     if (status == SetupStatus::Offscreen || status == SetupStatus::NoCentre) fresh.x0 = r.x0, fresh.y0 = r.y0, fresh.x1 = r.x1, fresh.y1 = r.y1;
     r = fresh;
+    return false;
   };
   r.front_facing = false;
-  SnappedVertex v[3] = {input.v[0], input.v[1], input.v[2]};
+  SnappedVertex (&v)[3] = edges.v;
+  for (int k = 0; k < 3; ++k) v[k] = input.v[k];
   for (const SnappedVertex& vertex : v) {
     check_signed(vertex.x, w.coord_bits, "vertex x");
     check_signed(vertex.y, w.coord_bits, "vertex y");
@@ -93,6 +100,7 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r, bool left_
     return reject(SetupStatus::Culled);
   if (area2 < 0) std::swap(v[1], v[2]);  // either winding rasterizes: order to area2 > 0
   const int64_t area = area2 < 0 ? -area2 : area2;
+  edges.area = area;
 
   const int64_t half = profile_.sample_offset();  // the sample point within a pixel: 2^(S-1) or 0
   const int64_t x_min = std::min({v[0].x, v[1].x, v[2].x}), x_max = std::max({v[0].x, v[1].x, v[2].x});
@@ -112,8 +120,9 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r, bool left_
 
   // Edge functions at the first candidate's sample point.
   const int64_t px = (int64_t(r.x0) << S) + half, py = (int64_t(r.y0) << S) + half;
-  i128 unbiased[3];
-  int64_t step_x[3], step_y[3];
+  i128* unbiased = edges.unbiased;
+  int64_t* step_x = edges.step_x;
+  int64_t* step_y = edges.step_y;
   for (int k = 0; k < 3; ++k) {
     const SnappedVertex& a = v[k];
     const SnappedVertex& b = v[(k + 1) % 3];
@@ -144,9 +153,20 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r, bool left_
     }
   }
 
-  // Planes: depth always, colour for Gouraud shading.
+  // Without the profile's texture unit the hardware has no texture planes: coordinates are ignored.
+  r.textured = input.textured && profile_.texture_unit;
+  return true;
+}
+
+void TriangleSetup::planes(const SetupEdges& edges, SetupResult& r) const {
+  const Widths& w = widths_;
+  const SnappedVertex (&v)[3] = edges.v;
+  const i128* unbiased = edges.unbiased;
+  const int64_t* step_x = edges.step_x;
+  const int64_t* step_y = edges.step_y;
+  // Depth always, colour for Gouraud shading.
   const i128 z[3] = {v[0].z, v[1].z, v[2].z};
-  const FloorDivider by_area(area);
+  const FloorDivider by_area(edges.area);
   const PlaneFormatBits depth_format{w.guard_bits, w.z_reg_bits, w.divider_bits};
   const PlaneFormatBits color_format{w.guard_bits, w.color_reg_bits, w.divider_bits};
   const PlaneFormatBits texture_format{w.texture_guard_bits, w.texture_reg_bits, w.texture_divider_bits};
@@ -160,8 +180,6 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r, bool left_
     r.color[2] = plane(blue, unbiased, step_x, step_y, by_area, color_format, "blue plane");
   }
   // Texture planes (docs/arithmetic.md section 5); an untextured record keeps them zero.
-  // Without the profile's texture unit the hardware has no texture planes: coordinates are ignored.
-  r.textured = input.textured && profile_.texture_unit;
   if (r.textured) {
     for (const SnappedVertex& vertex : v) {
       if (vertex.q <= 0 || vertex.q > (int64_t(1) << kTextureFractionBits))
@@ -179,8 +197,11 @@ void TriangleSetup::run(const SnappedTriangle& input, SetupResult& r, bool left_
     for (PlaneSetup& p : r.texture) p = PlaneSetup{};
   }
 
-  // Planes along the left edges (docs/cycle-model.md): slot j takes the j-th edge with step_x > 0.
-  if (!left_edge_planes) return;
+}
+
+// Planes along the left edges (docs/cycle-model.md): slot j takes the j-th edge with step_x > 0.
+void TriangleSetup::left_edge_planes(SetupResult& r) const {
+  const Widths& w = widths_;
   int left_edge[kLeftEdgeSlots] = {-1, -1};
   for (int k = 0, slot = 0; k < 3 && slot < kLeftEdgeSlots; ++k)
     if (r.edge[k].step_x > 0) left_edge[slot++] = k;

@@ -97,6 +97,14 @@ struct SetupResult {
   LeftEdgePlanes left[kLeftEdgeSlots]{};
 };
 
+// What the front stage hands to the planes: the edge functions' inputs to the plane weights.
+struct SetupEdges {
+  SnappedVertex v[3];             // the vertices ordered to area2 > 0
+  i128 unbiased[3];               // each edge function at the first candidate without its bias, s.2S
+  int64_t step_x[3], step_y[3];   // the edge steps, s.2S
+  int64_t area;                   // |area2| > 0, s.2S
+};
+
 class TriangleSetup {
  public:
   explicit TriangleSetup(const Profile& profile);
@@ -105,11 +113,23 @@ class TriangleSetup {
     run(tri, r);
     return r;
   }
-  // The same into `r` (the pipeline's output register), without copying the result. Without
-  // `left_edge_planes` the planes along the left edges (r.left) are not set up and keep what they
-  // held: for a walk that enters each row another way (ZAdder::enter_row_at, the fast walks in
-  // fast/).
-  void run(const SnappedTriangle& tri, SetupResult& r, bool left_edge_planes = true) const;
+  // The same into `r` (the pipeline's output register), without copying the result: front(), then
+  // for a drawn triangle planes() and left_edge_planes().
+  void run(const SnappedTriangle& tri, SetupResult& r) const;
+
+  // The stages of run(). front: the status, facing, area, box and edges into `r`; true for a drawn
+  // triangle, whose planes follow from `edges`. Every field of a drawn triangle's record is written
+  // by the three stages (the colour planes only with Gouraud shading, otherwise they keep a fresh
+  // record's zeros); a rejected one's record is a fresh one with what was decided.
+  bool front(const SnappedTriangle& tri, SetupResult& r, SetupEdges& edges) const;
+  // The depth, colour and texture planes (r.depth, r.color, r.texture).
+  void planes(const SetupEdges& edges, SetupResult& r) const;
+  // The planes along the left edges (r.left), from the planes and the edges' span quotients: what
+  // the walker enters rows with. A walk that enters them another way (ZAdder::enter_row_at, the
+  // fast walks in fast/) does not need them.
+  void left_edge_planes(SetupResult& r) const;
+
+  const Profile& profile() const { return profile_; }
   const Widths& widths() const { return widths_; }
 
  private:

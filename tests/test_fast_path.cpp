@@ -5,10 +5,13 @@
 // memory stall pattern (which may refuse any read, so no run is taken at once: ZBufferRuns::settled).
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <random>
+#include <sstream>
 #include <string>
 #include <tuple>
 
+#include "fast/fast_setup.h"
 #include "fast/fast_walk.h"
 #include "fast/run_kernels.h"
 #include "test_util.h"
@@ -105,6 +108,84 @@ TEST_P(FastPath, UntracedFrameEqualsTracedFrame) {
       EXPECT_TRUE(unstalled_frame.depth == traced.depth) << "a stall pattern changed the depth buffer";
     }
   }
+}
+
+// What fast_set_up must equal: every field of the specification's setup but the planes along the
+// left edges, or the same WidthOverflow message.
+std::string setup_fields(const SnappedTriangle& t, const std::function<void(SetupResult&)>& set_up) {
+  SetupResult r;
+  try {
+    set_up(r);
+  } catch (const WidthOverflow& e) {
+    return std::string("WidthOverflow: ") + e.what();
+  }
+  std::ostringstream out;
+  auto plane = [&](const PlaneSetup& p) { out << " " << p.start << "," << p.step_x << "," << p.step_y; };
+  out << to_string(r.status) << " " << r.front_facing << " " << r.area2 << " " << r.x0 << " " << r.y0 << " "
+      << r.x1 << " " << r.y1 << " " << int(r.flat_color.r) << "," << int(r.flat_color.g) << ","
+      << int(r.flat_color.b) << " " << r.textured;
+  for (const EdgeSetup& e : r.edge)
+    out << " " << e.start << "," << e.step_x << "," << e.step_y << "," << e.owns_samples << "," << e.span_quot
+        << "," << e.span_rem << "," << e.span_step_quot << "," << e.span_step_rem;
+  plane(r.depth);
+  for (const PlaneSetup& p : r.color) plane(p);
+  for (const PlaneSetup& p : r.texture) plane(p);
+  out << " (" << describe(t) << ")";
+  return out.str();
+}
+
+// The fast setup's planes come from the vertex differences in 64 bits where the values fit, and
+// from the specification's planes where they do not (the largest profile's wide numerators, the
+// texture unit); both must give the specification's record, and the same errors for depths beyond
+// the profile's range (the dividend limits of a small profile's divider).
+TEST(FastPath, FastSetupEqualsTheSpecificationsSetup) {
+  struct Case {
+    int width, height, subpixel_bits, z_bits, z_guard_bits;
+    Shading shading;
+    bool texture_unit;
+  };
+  const Case cases[] = {{640, 480, 4, 24, 0, Shading::Gouraud, false}, {96, 64, 8, 32, 0, Shading::Gouraud, false},
+                        {16, 12, 1, 16, 1, Shading::Gouraud, false},   {4096, 4096, 8, 32, 24, Shading::Gouraud, false},
+                        {1024, 768, 6, 16, 0, Shading::Flat, false},    {64, 48, 4, 24, 0, Shading::Gouraud, true}};
+  int compared = 0, overflows = 0;
+  for (const Case& c : cases) {
+    Profile profile = make_profile(c.width, c.height, c.subpixel_bits, Traversal::Span, c.z_bits);
+    profile.z_guard_bits = c.z_guard_bits;
+    profile.shading = c.shading;
+    profile.texture_unit = c.texture_unit;
+    if (c.subpixel_bits == 1) profile.pixel_center = PixelCenter::Corner, profile.fill_rule = FillRule::TopRight;
+    const TriangleSetup setup(profile);
+    TriangleGen gen(profile, uint64_t(c.width) * 31 + uint64_t(c.z_bits));
+    for (int i = 0; i < 3000; ++i) {
+      SnappedTriangle t;
+      switch (i % 6) {
+        case 0: t = gen.guard_band(); break;
+        case 1: t = gen.tiny(); break;
+        case 2: t = gen.sliver(40); break;
+        case 3: t = gen.degenerate(); break;
+        case 4: t = gen.near_screen(c.width / 4); break;
+        default: {
+          // Depths beyond the profile's word: the dividends may leave the divider's width.
+          t = gen.near_screen(c.width / 2);
+          for (SnappedVertex& v : t.v) v.z = uint32_t(gen.uniform(0, 0xffffffff));
+          break;
+        }
+      }
+      if (c.texture_unit && i % 2) {
+        t.textured = true;
+        for (SnappedVertex& v : t.v)
+          v.s = gen.uniform(-(int64_t(1) << 24), int64_t(1) << 24), v.t = gen.uniform(-(int64_t(1) << 24), int64_t(1) << 24),
+          v.q = gen.uniform(1, int64_t(1) << kTextureFractionBits);
+      }
+      const std::string spec = setup_fields(t, [&](SetupResult& r) { setup.run(t, r); });
+      const std::string fast = setup_fields(t, [&](SetupResult& r) { fast_set_up(setup, t, r); });
+      ASSERT_EQ(spec, fast) << describe(profile);
+      ++compared;
+      overflows += spec.rfind("WidthOverflow", 0) == 0;
+    }
+  }
+  EXPECT_EQ(compared, 18000);
+  EXPECT_GT(overflows, 0) << "no case reached a dividend limit";
 }
 
 // After use_fast_walk() a pipeline takes the fast walk unless given a fragment sink, except where it
