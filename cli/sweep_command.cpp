@@ -14,6 +14,7 @@
 #include <mutex>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include "backend.h"
 #include "frontend/scene.h"
@@ -296,15 +297,73 @@ long double depth_word_fraction(const Profile& p, uint32_t word) {
 }
 
 DepthErrorMeter::DepthErrorMeter(const std::vector<ScreenTriangle>& screen, const std::vector<SnappedTriangle>& snapped,
-                                 const Profile& profile)
+                                 const Profile& profile, int threads, size_t chunk)
     : screen_(screen), snapped_(snapped), profile_(profile),
       ideal_depth_(size_t(profile.width) * profile.height, depth_word_fraction(profile, profile.depth_clear_value())),
-      word_(profile) {}
+      word_(profile), meter_threads_(threads > 1 ? size_t(threads - 1) : 0), chunk_(std::max<size_t>(1, chunk)),
+      filling_(meter_threads_), metering_(meter_threads_), figures_(std::max<size_t>(1, meter_threads_)),
+      failures_(meter_threads_) {}
+
+DepthErrorMeter::~DepthErrorMeter() {
+  for (std::thread& t : running_) t.join();
+}
 
 void DepthErrorMeter::on_fragment(const Fragment& f) {
+  const Kept kept{f.tri, f.x, f.y, f.z, f.pass};
+  if (meter_threads_ == 0) return meter(kept, figures_[0]);
+  filling_[size_t(f.y / kMeterBandRows) % meter_threads_].push_back(kept);
+  if (++kept_count_ == chunk_) hand_over();
+}
+
+void DepthErrorMeter::hand_over() {
+  join();
+  std::swap(filling_, metering_);
+  kept_count_ = 0;
+  for (size_t k = 0; k < meter_threads_; ++k)
+    running_.emplace_back([this, k] {
+      try {
+        for (const Kept& f : metering_[k]) meter(f, figures_[k]);
+      } catch (...) {
+        failures_[k] = std::current_exception();
+      }
+      metering_[k].clear();
+    });
+}
+
+void DepthErrorMeter::join() {
+  for (std::thread& t : running_) t.join();
+  running_.clear();
+  for (std::exception_ptr& failure : failures_)
+    if (failure) std::rethrow_exception(std::exchange(failure, nullptr));
+}
+
+void DepthErrorMeter::finish() {
+  if (kept_count_ > 0) hand_over();
+  join();
+}
+
+void DepthErrorMeter::check_finished() const {
+  if (kept_count_ > 0 || !running_.empty()) throw std::logic_error("DepthErrorMeter: finish() before reading the figures");
+}
+
+double DepthErrorMeter::max_depth_error() const {
+  check_finished();
+  double max = 0;
+  for (const Figures& f : figures_) max = std::max(max, f.max);
+  return max;
+}
+
+int64_t DepthErrorMeter::wrong_depth_tests() const {
+  check_finished();
+  int64_t wrong = 0;
+  for (const Figures& f : figures_) wrong += f.wrong;
+  return wrong;
+}
+
+void DepthErrorMeter::meter(const Kept& f, Figures& figures) {
   if (f.tri < 0 || size_t(f.tri) >= snapped_.size()) return;
   const SnappedTriangle& t = snapped_[size_t(f.tri)];
-  max_ = std::max(max_, depth_error_lsb(t, profile_.subpixel_bits, f.x, f.y, uint32_t(word_.decode(f.z))));
+  figures.max = std::max(figures.max, depth_error_lsb(t, profile_.subpixel_bits, f.x, f.y, uint32_t(word_.decode(f.z))));
   long double w[3];
   pixel_weights(t, profile_.subpixel_bits, f.x, f.y, w);
   const ScreenTriangle& s = screen_[size_t(f.tri)];
@@ -322,7 +381,7 @@ void DepthErrorMeter::on_fragment(const Fragment& f) {
     case DepthFunc::Always: pass = true; break;
   }
   if (pass && profile_.depth_write) stored = z;
-  wrong_ += pass != f.pass;
+  figures.wrong += pass != f.pass;
 }
 
 CLI::App* add_sweep_command(CLI::App& app, SweepOptions& o) {
@@ -351,6 +410,11 @@ CLI::App* add_sweep_command(CLI::App& app, SweepOptions& o) {
   cmd->add_flag("!--no-plots", o.plots, "write the CSV and the gnuplot script only");
   cmd->add_option("--jobs", o.jobs, "points rendered in parallel (the results are the same as with 1; default 1)")
       ->type_name("N");
+  cmd->add_option("--threads", o.threads,
+                  "threads of each point's depth-error meter (the check of every fragment against the exact depth, "
+                  "most of a point's time), which splits the rows in bands (the results are the same as with 1; "
+                  "default 1; with --jobs J a sweep runs J x N threads)")
+      ->type_name("N");
   add_profile_options(*cmd, o.scene.profile);
   return cmd;
 }
@@ -365,6 +429,7 @@ int run_sweep(const SweepOptions& o) {
   const Profile base = resolve_profile(o.scene.profile);
   const Backend backend = select_backend(o.backend);
   if (o.jobs < 1 || o.jobs > 256) throw InputError("--jobs " + std::to_string(o.jobs) + " is outside 1..256");
+  if (o.threads < 1 || o.threads > 256) throw InputError("--threads " + std::to_string(o.threads) + " is outside 1..256");
   if (o.jobs > 1 && backend == Backend::Systemc)
     throw InputError("--jobs with the SystemC backend: SystemC runs one simulation per process");
   // Every point's profile and camera are checked before anything runs.
@@ -464,10 +529,11 @@ int run_sweep(const SweepOptions& o) {
     std::vector<SnappedTriangle> snapped;
     snapped.reserve(screen.size());
     for (const ScreenTriangle& t : screen) snapped.push_back(snap(t, p));
-    DepthErrorMeter meter(screen, snapped, p);
+    DepthErrorMeter meter(screen, snapped, p, o.threads);
     BackendOptions backend_options;
     backend_options.texture = texture;
     point.stats = render_triangles(backend, p, snapped, &meter, nullptr, backend_options).stats;
+    meter.finish();
     point.max_depth_error = meter.max_depth_error();
     point.wrong_depth_tests = meter.wrong_depth_tests();
     std::lock_guard<std::mutex> lock(mutex);

@@ -5,7 +5,9 @@
 #pragma once
 
 #include <cstdint>
+#include <exception>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -28,6 +30,7 @@ struct SweepOptions {
   std::string rtl_dir;             // empty: the rtl/ of the source tree this binary was built from
   bool plots = true;
   int jobs = 1;                    // points rendered in parallel
+  int threads = 1;                 // threads of each point's depth-error meter
 };
 
 CLI::App* add_sweep_command(CLI::App& app, SweepOptions& options);
@@ -51,22 +54,54 @@ SweepAxis parse_sweep_axis(const std::string& text);
 //    that holds the unquantized depth (the screen triangle's z in [0, 1] interpolated in long
 //    double at the same pixel centre) and applies the same depth function and write rule: the
 //    z-fighting of the profile's depth precision (z_bits, vertex quantization, Z adder rounding).
+//
+// With threads > 1 the calling thread (the render's) only keeps the fragments, per band of
+// kMeterBandRows rows, and hands every `chunk` of them to threads - 1 meter threads (thread k
+// takes the bands b with b % (threads - 1) == k), which meter them while the render goes on. A
+// pixel's fragments keep their order within its band, and the figures (a maximum and a count) do
+// not depend on the order between pixels, so they are the same at any thread count.
 class DepthErrorMeter : public FragmentSink {
  public:
+  static constexpr int kMeterBandRows = 8;
   DepthErrorMeter(const std::vector<ScreenTriangle>& screen, const std::vector<SnappedTriangle>& snapped,
-                  const Profile& profile);
+                  const Profile& profile, int threads = 1, size_t chunk = size_t(1) << 18);
+  ~DepthErrorMeter() override;
+  DepthErrorMeter(const DepthErrorMeter&) = delete;
+  DepthErrorMeter& operator=(const DepthErrorMeter&) = delete;
   void on_fragment(const Fragment& f) override;
-  double max_depth_error() const { return max_; }
-  int64_t wrong_depth_tests() const { return wrong_; }
+  // Meters the fragments still kept and waits for the meter threads; the figures below are the
+  // frame's after it.
+  void finish();
+  double max_depth_error() const;
+  int64_t wrong_depth_tests() const;
 
  private:
+  struct Kept {  // what the figures need of a fragment
+    int64_t tri;
+    int x, y;
+    uint32_t z;
+    bool pass;
+  };
+  struct alignas(64) Figures {  // one cache line per thread
+    double max = 0;
+    int64_t wrong = 0;
+  };
+  void meter(const Kept& f, Figures& figures);
+  void hand_over();  // the kept chunk to the meter threads, once they are done with the last one
+  void join();       // waits for the meter threads; rethrows what one of them threw
+  void check_finished() const;
   const std::vector<ScreenTriangle>& screen_;
   const std::vector<SnappedTriangle>& snapped_;
   Profile profile_;
-  std::vector<long double> ideal_depth_;
+  std::vector<long double> ideal_depth_;  // each pixel read and written by its band's thread only
   DepthWord word_;
-  double max_ = 0;
-  int64_t wrong_ = 0;
+  size_t meter_threads_;                  // 0: metered at once on the calling thread
+  size_t chunk_;
+  std::vector<std::vector<Kept>> filling_, metering_;  // per meter thread
+  size_t kept_count_ = 0;
+  std::vector<Figures> figures_;  // per meter thread (one without them)
+  std::vector<std::thread> running_;
+  std::vector<std::exception_ptr> failures_;
 };
 
 // |z - exact depth of the plane of t at the centre of pixel (x, y)| in LSBs (t not degenerate).

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <map>
+#include <random>
 #include <set>
 #include <tuple>
 
@@ -115,6 +116,59 @@ TEST(CliSweep, JobsGiveTheSameResultsAsOneJob) {
   EXPECT_EQ(run_rastersim(dir, {"sweep", "--scene", "overlap", "--vary", "memory_latency=1,4", "--out", "x", "--jobs", "0"})
                 .exit_code,
             2);
+}
+
+// --threads N meters each point's fragments on N - 1 threads beside the render: the same CSV and
+// lines, on a frame whose 16-bit depth gets depth tests wrong (so the counts can differ).
+TEST(CliSweep, ThreadsGiveTheSameResultsAsOneThread) {
+  ScratchDir dir;
+  std::map<std::string, RunResult> runs;
+  for (const std::string threads : {"1", "3"}) {
+    runs[threads] = run_rastersim(dir, {"sweep", "--scene", "default", "--width", "320", "--height", "240", "--vary",
+                                        "z_bits=16,24", "--out", "s" + threads, "--no-plots", "--threads", threads});
+    ASSERT_EQ(runs[threads].exit_code, 0) << runs[threads].err;
+  }
+  const std::vector<std::map<std::string, std::string>> rows = read_csv(dir.path("s1/sweep.csv"));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_GT(std::stoll(rows[0].at("wrong_depth_tests")), 0);
+  EXPECT_EQ(read_text(dir.path("s3/sweep.csv")), read_text(dir.path("s1/sweep.csv")));
+  auto points = [](const std::string& out) { return out.substr(0, out.find("wrote")); };
+  EXPECT_EQ(points(runs["3"].out), points(runs["1"].out));
+  for (const std::string bad : {"0", "257"})
+    EXPECT_EQ(run_rastersim(dir, {"sweep", "--scene", "overlap", "--vary", "z_bits=16", "--out", "x", "--threads", bad})
+                  .exit_code,
+              2);
+}
+
+// The meter's figures at any thread count and chunk size equal one meter's: random overlapping
+// triangles, fragments from the model at 16-bit depth.
+TEST(DepthErrorMeter, BandsOnMeterThreadsGiveOneMetersFigures) {
+  Profile p;
+  p.width = 96, p.height = 64, p.z_bits = 16;
+  std::mt19937_64 rng(20261129);
+  std::uniform_real_distribution<double> x(-10, 106), y(-10, 74), z(0.2, 0.8);
+  std::vector<ScreenTriangle> screen(300);
+  std::vector<SnappedTriangle> snapped;
+  for (ScreenTriangle& t : screen) {
+    for (ScreenVertex& v : t.v) v.x = x(rng), v.y = y(rng), v.z = z(rng);
+    snapped.push_back(snap(t, p));
+  }
+  auto figures = [&](int threads, size_t chunk) {
+    DepthErrorMeter meter(screen, snapped, p, threads, chunk);
+    Pipeline pipeline(p);
+    pipeline.set_fragment_sink(&meter);
+    for (const SnappedTriangle& t : snapped) pipeline.submit(t);
+    meter.finish();
+    return std::make_pair(meter.max_depth_error(), meter.wrong_depth_tests());
+  };
+  const auto one = figures(1, 1);
+  EXPECT_GT(one.second, 0);
+  EXPECT_GT(one.first, 0.0);
+  for (int threads : {2, 3, 5})
+    for (size_t chunk : {size_t(251), size_t(4093), size_t(1) << 18}) {
+      SCOPED_TRACE("threads " + std::to_string(threads) + ", chunk " + std::to_string(chunk));
+      EXPECT_EQ(figures(threads, chunk), one);
+    }
 }
 
 TEST(CliSweep, ManyLongNamedCurvesStayDistinctAndLeaveRoomForThePlot) {
