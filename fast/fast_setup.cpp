@@ -64,7 +64,9 @@ void fast_set_up(const TriangleSetup& setup, const SnappedTriangle& tri, SetupRe
   SetupEdges edges;
   if (!setup.front(tri, r, edges)) return;
   const bool gouraud = setup.profile().shading == Shading::Gouraud;
-  const SnappedVertex* v = edges.v;
+  const SnappedVertex& v0 = *edges.v[0];
+  const SnappedVertex& v1 = *edges.v[1];
+  const SnappedVertex& v2 = *edges.v[2];
   Weights w;
   uint64_t all = 0;
   for (int j = 0; j < 2; ++j) {
@@ -77,10 +79,10 @@ void fast_set_up(const TriangleSetup& setup, const SnappedTriangle& tri, SetupRe
   const Widths& widths = setup.widths();
   const FastPlane depth_plane(widths.guard_bits, widths.z_reg_bits, widths.divider_bits);
   const FastPlane color_plane(widths.guard_bits, widths.color_reg_bits, widths.divider_bits);
-  const int64_t z[3] = {v[0].z, v[1].z, v[2].z};
-  const int64_t color[3][3] = {{v[0].color.r, v[1].color.r, v[2].color.r},
-                               {v[0].color.g, v[1].color.g, v[2].color.g},
-                               {v[0].color.b, v[1].color.b, v[2].color.b}};
+  const int64_t z[3] = {v0.z, v1.z, v2.z};
+  const int64_t color[3][3] = {{v0.color.r, v1.color.r, v2.color.r},
+                               {v0.color.g, v1.color.g, v2.color.g},
+                               {v0.color.b, v1.color.b, v2.color.b}};
   // The texture planes and wide numerators take the specification's planes.
   bool fits = !r.textured && depth_plane.fits(z, w);
   if (gouraud)

@@ -81,8 +81,7 @@ bool TriangleSetup::front(const SnappedTriangle& input, SetupResult& r, SetupEdg
     return false;
   };
   r.front_facing = false;
-  SnappedVertex (&v)[3] = edges.v;
-  for (int k = 0; k < 3; ++k) v[k] = input.v[k];
+  SnappedVertex v[3] = {input.v[0], input.v[1], input.v[2]};
   for (const SnappedVertex& vertex : v) {
     check_signed(vertex.x, w.coord_bits, "vertex x");
     check_signed(vertex.y, w.coord_bits, "vertex y");
@@ -99,6 +98,9 @@ bool TriangleSetup::front(const SnappedTriangle& input, SetupResult& r, SetupEdg
   if ((profile_.cull == CullMode::Back && !r.front_facing) || (profile_.cull == CullMode::Front && r.front_facing))
     return reject(SetupStatus::Culled);
   if (area2 < 0) std::swap(v[1], v[2]);  // either winding rasterizes: order to area2 > 0
+  edges.v[0] = &input.v[0];
+  edges.v[1] = &input.v[area2 < 0 ? 2 : 1];
+  edges.v[2] = &input.v[area2 < 0 ? 1 : 2];
   const int64_t area = area2 < 0 ? -area2 : area2;
   edges.area = area;
 
@@ -160,36 +162,40 @@ bool TriangleSetup::front(const SnappedTriangle& input, SetupResult& r, SetupEdg
 
 void TriangleSetup::planes(const SetupEdges& edges, SetupResult& r) const {
   const Widths& w = widths_;
-  const SnappedVertex (&v)[3] = edges.v;
+  const SnappedVertex& v0 = *edges.v[0];
+  const SnappedVertex& v1 = *edges.v[1];
+  const SnappedVertex& v2 = *edges.v[2];
+  const SnappedVertex* const v[3] = {&v0, &v1, &v2};
   const i128* unbiased = edges.unbiased;
   const int64_t* step_x = edges.step_x;
   const int64_t* step_y = edges.step_y;
   // Depth always, colour for Gouraud shading.
-  const i128 z[3] = {v[0].z, v[1].z, v[2].z};
+  const i128 z[3] = {v0.z, v1.z, v2.z};
   const FloorDivider by_area(edges.area);
   const PlaneFormatBits depth_format{w.guard_bits, w.z_reg_bits, w.divider_bits};
   const PlaneFormatBits color_format{w.guard_bits, w.color_reg_bits, w.divider_bits};
   const PlaneFormatBits texture_format{w.texture_guard_bits, w.texture_reg_bits, w.texture_divider_bits};
   r.depth = plane(z, unbiased, step_x, step_y, by_area, depth_format, "depth plane");
   if (profile_.shading == Shading::Gouraud) {
-    const i128 red[3] = {v[0].color.r, v[1].color.r, v[2].color.r};
-    const i128 green[3] = {v[0].color.g, v[1].color.g, v[2].color.g};
-    const i128 blue[3] = {v[0].color.b, v[1].color.b, v[2].color.b};
+    const i128 red[3] = {v0.color.r, v1.color.r, v2.color.r};
+    const i128 green[3] = {v0.color.g, v1.color.g, v2.color.g};
+    const i128 blue[3] = {v0.color.b, v1.color.b, v2.color.b};
     r.color[0] = plane(red, unbiased, step_x, step_y, by_area, color_format, "red plane");
     r.color[1] = plane(green, unbiased, step_x, step_y, by_area, color_format, "green plane");
     r.color[2] = plane(blue, unbiased, step_x, step_y, by_area, color_format, "blue plane");
   }
   // Texture planes (docs/arithmetic.md section 5); an untextured record keeps them zero.
   if (r.textured) {
-    for (const SnappedVertex& vertex : v) {
+    for (const SnappedVertex* vertex_at : v) {
+      const SnappedVertex& vertex = *vertex_at;
       if (vertex.q <= 0 || vertex.q > (int64_t(1) << kTextureFractionBits))
         throw_width_overflow(vertex.q, kTextureFractionBits + 1, "vertex Q");
       check_signed(vertex.s, kTextureFractionBits + 9, "vertex S");
       check_signed(vertex.t, kTextureFractionBits + 9, "vertex T");
     }
-    const i128 s[3] = {v[0].s, v[1].s, v[2].s};
-    const i128 t[3] = {v[0].t, v[1].t, v[2].t};
-    const i128 q[3] = {v[0].q, v[1].q, v[2].q};
+    const i128 s[3] = {v0.s, v1.s, v2.s};
+    const i128 t[3] = {v0.t, v1.t, v2.t};
+    const i128 q[3] = {v0.q, v1.q, v2.q};
     r.texture[0] = plane(s, unbiased, step_x, step_y, by_area, texture_format, "S plane");
     r.texture[1] = plane(t, unbiased, step_x, step_y, by_area, texture_format, "T plane");
     r.texture[2] = plane(q, unbiased, step_x, step_y, by_area, texture_format, "Q plane");

@@ -99,7 +99,7 @@ struct SetupResult {
 
 // What the front stage hands to the planes: the edge functions' inputs to the plane weights.
 struct SetupEdges {
-  SnappedVertex v[3];             // the vertices ordered to area2 > 0
+  const SnappedVertex* v[3];      // the input's vertices ordered to area2 > 0 (it must outlive this)
   i128 unbiased[3];               // each edge function at the first candidate without its bias, s.2S
   int64_t step_x[3], step_y[3];   // the edge steps, s.2S
   int64_t area;                   // |area2| > 0, s.2S
