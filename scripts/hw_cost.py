@@ -57,6 +57,7 @@ PROFILE_PARAMETERS = ["WIDTH", "HEIGHT", "SUBPIXEL_BITS", "Z_BITS", "Z_GUARD_BIT
 BUILD_OPTIONS = {"TEXTURE": 0, "MAX_TEXTURE_LATENCY": 64, "DEPTH_EXPONENT_BITS": 0, "DEPTH_BIAS": 0, "PIXEL_CENTER": 0,
                  "FILL_RULE": 0, "DEPTH_ROUNDING": 0, "COLOR_ROUNDING": 0}
 DEVICES = {"hx8k": ("--hx8k", "ct256", 7680, 32), "up5k": ("--up5k", "sg48", 5280, 30), "hx1k": ("--hx1k", "tq144", 1280, 16)}
+DEVICE_DSPS = {"hx8k": 0, "up5k": 8, "hx1k": 0}  # SB_MAC16 blocks
 BRAM_BITS = 4096  # SB_RAM40_4K
 MEMORY_UNITS = {"zbuffer_memory", "rastersim_top"}  # the units that hold the frame memory
 
@@ -75,14 +76,20 @@ def frame_memory_bits(width, height, z_bits):
 # and none of them can be merged since all are active in the same cycle. Other cells are shared as
 # by synth_ice40. `rest` is the label range after coarse: "map_ram:check" stops before the check
 # step (its autoname pass takes longer than synthesizing the full-size setup unit).
-def synth_ice40(top, rest, options=""):
+# With dsp, the passes of synth_ice40 -dsp that map multipliers of 2 x 2 bits or more (with a result
+# of 11 bits or more) to SB_MAC16 blocks (the iCE40 UP5K has eight).
+def synth_ice40(top, rest, options="", dsp=False):
+    dsp_passes = ["memory_dff", "wreduce t:$mul", "techmap -map +/mul2dsp.v -map +/ice40/dsp_map.v -D DSP_A_MAXWIDTH=16 -D DSP_B_MAXWIDTH=16 "
+                  "-D DSP_A_MINWIDTH=2 -D DSP_B_MINWIDTH=2 -D DSP_Y_MINWIDTH=11 -D DSP_NAME=$__MUL16X16",
+                  "select a:mul2dsp", "setattr -unset mul2dsp", "opt_expr -fine", "wreduce", "select -clear",
+                  "ice40_dsp", "chtype -set $mul t:$__soft_mul"] if dsp else []
     return "\n".join([
         f"synth_ice40 -top {top} -run :coarse",
         "opt_expr", "opt_clean", "check", "opt -nodffe -nosdff", "fsm", "opt", "wreduce", "peepopt", "opt_clean",
         "share t:$memrd %n",
-        "techmap -map +/cmp2lut.v -D LUT_WIDTH=4", "opt_expr", "opt_clean", "alumacc", "opt", "memory -nomap",
-        "opt_clean",
-        f"synth_ice40 -top {top} -run {rest} {options}".rstrip()]) + "\n"
+        "techmap -map +/cmp2lut.v -D LUT_WIDTH=4", "opt_expr", "opt_clean", *dsp_passes, "alumacc", "opt",
+        "memory -nomap", "opt_clean",
+        f"synth_ice40 -top {top} -run {rest} {options}{' -dsp' if dsp else ''}".rstrip()]) + "\n"
 
 
 # The unit without profile parameters, at the widths the profile gives the depth plane.
@@ -193,7 +200,8 @@ def cell_counts(stat_json, top):
     ffs = sum(n for t, n in cells.items() if t.startswith("SB_DFF"))
     brams = sum(n for t, n in cells.items() if t.startswith("SB_RAM"))
     carries = cells.get("SB_CARRY", 0)
-    return luts, ffs, brams, carries
+    dsps = cells.get("SB_MAC16", 0)
+    return luts, ffs, brams, carries, dsps
 
 
 def ecp5_counts(stat_json, top):
@@ -271,7 +279,9 @@ def cost_unit(unit, args, profile, work):
     memory_bits = frame_bits if unit in MEMORY_UNITS else 0
     row = {"unit": unit, "contents": UNITS[unit], "device": args.device, **{p.lower(): v for p, v in profile.items()},
            "memory_bits": memory_bits, "luts": None, "ffs": None, "brams": None, "carries": None,
-           "check_problems": None, "fmax_mhz": None, "note": "", "synth_s": None, "pnr_s": None}
+           "check_problems": None, "fmax_mhz": None, "fmax_seeds_mhz": None, "note": "", "synth_s": None, "pnr_s": None}
+    if args.dsp:
+        row["dsps"] = None
     if args.ecp5:
         row.update({"ecp5_lut4": None, "ecp5_ffs": None, "ecp5_mult18": None, "ecp5_ccu2c": None,
                     "ecp5_dp16kd": None, "ecp5_synth_s": None})
@@ -285,15 +295,15 @@ def cost_unit(unit, args, profile, work):
     # Counts: synth_ice40 up to its `check` step, then that step's checks and the statistics.
     chparam = " ".join(f"-set {k} {v}" for k, v in parameters.items())
     synth = (f"read_verilog -sv -I{RTL} {rtl_sources()} {read}\nchparam {chparam} {top}\nhierarchy -top {top}\n"
-             f"{synth_ice40(top, 'map_ram:check')}hierarchy -check\ncheck -noinit\n"
+             f"{synth_ice40(top, 'map_ram:check', dsp=args.dsp)}hierarchy -check\ncheck -noinit\n"
              f"tee -q -o stat.json stat -json\n")
 
     def synthesize():
         start = time.monotonic()
         yosys(synth, os.path.join(unit_dir, "synth.log"), unit_dir)
-        luts, ffs, brams, carries = cell_counts(os.path.join(unit_dir, "stat.json"), top)
+        luts, ffs, brams, carries, dsps = cell_counts(os.path.join(unit_dir, "stat.json"), top)
         problems, lines = check_problems(os.path.join(unit_dir, "synth.log"))
-        return {"luts": luts, "ffs": ffs, "brams": brams, "carries": carries, "check_problems": problems,
+        return {"luts": luts, "ffs": ffs, "brams": brams, "carries": carries, "dsps": dsps, "check_problems": problems,
                 "problem_lines": lines, "synth_s": round(time.monotonic() - start)}
     counts = cached(os.path.join(unit_dir, "synth.json"), cache_key(unit, read and SHIMS[unit], synth), synthesize)
     row.update({k: v for k, v in counts.items() if k in row})
@@ -321,37 +331,49 @@ def cost_unit(unit, args, profile, work):
         row.update(cached(os.path.join(unit_dir, "synth_ecp5.json"), cache_key(unit, read and SHIMS[unit], ecp5),
                           synthesize_ecp5))
     if not args.no_pnr:
-        if row["luts"] > device_luts or row["brams"] > device_brams:
+        if args.dsp and counts["dsps"] > DEVICE_DSPS[args.device]:
+            notes.append(f"does not fit ({counts['dsps']} SB_MAC16; the {args.device} has "
+                         f"{DEVICE_DSPS[args.device]}): no place and route")
+        elif row["luts"] > device_luts or row["brams"] > device_brams:
             lut_ratio, bram_ratio = row["luts"] / device_luts, row["brams"] / device_brams
             what = "LUTs" if lut_ratio >= bram_ratio else "block RAMs"
             notes.append(f"does not fit ({max(lut_ratio, bram_ratio):.1f} x the {args.device}'s {what}): "
                          "no place and route")
         else:
             wrap = (f"read_verilog -sv -I{RTL} {rtl_sources()} {read} wrapper.v\n"
-                    f"hierarchy -top hwcost_wrapper\n{synth_ice40('hwcost_wrapper', 'map_ram:', '-json wrapped.json')}")
+                    f"hierarchy -top hwcost_wrapper\n{synth_ice40('hwcost_wrapper', 'map_ram:', '-json wrapped.json', dsp=args.dsp)}")
             pnr = ["nextpnr-ice40", device_flag, "--package", package, "--json", "wrapped.json", "--freq", "100",
-                   "--timing-allow-fail", "--report", "pnr.json", "--seed", "1"]
+                   "--timing-allow-fail"]
 
-            def place_and_route():
+            def place_and_route(seed):
                 start = time.monotonic()
                 ports = yosys_ports(unit_dir, top, read, parameters)
                 with open(os.path.join(unit_dir, "wrapper.v"), "w") as f:
                     f.write(wrapper(top, parameters, ports))
                 result = {"fmax_mhz": None, "failure": ""}
+                report, log = f"pnr-seed{seed}.json", os.path.join(unit_dir, f"pnr-seed{seed}.log")
                 try:
                     yosys(wrap, os.path.join(unit_dir, "wrap.log"), unit_dir)
-                    run(pnr, os.path.join(unit_dir, "pnr.log"), unit_dir)
-                    fmax = json.load(open(os.path.join(unit_dir, "pnr.json")))["fmax"]
+                    run(pnr + ["--report", report, "--seed", str(seed)], log, unit_dir)
+                    fmax = json.load(open(os.path.join(unit_dir, report)))["fmax"]
                     result["fmax_mhz"] = round(min(v["achieved"] for v in fmax.values()), 1)
                 except RuntimeError as e:
-                    result["failure"] = pnr_failure(os.path.join(unit_dir, "pnr.log"), args.device, str(e))
+                    result["failure"] = pnr_failure(log, args.device, str(e))
                 result["pnr_s"] = round(time.monotonic() - start)
                 return result
-            placed = cached(os.path.join(unit_dir, "pnr-result.json"),
-                            cache_key(unit, read and SHIMS[unit], parameters, wrap, " ".join(pnr)), place_and_route)
-            row["fmax_mhz"], row["pnr_s"] = placed["fmax_mhz"], placed["pnr_s"]
-            if placed["failure"]:
-                notes.append(placed["failure"])
+            # Each placement seed's result is kept on its own; the row's Fmax is the worst seed's.
+            placements = [cached(os.path.join(unit_dir, f"pnr-seed{seed}-result.json"),
+                                 cache_key(unit, read and SHIMS[unit], parameters, wrap, " ".join(pnr), seed),
+                                 lambda seed=seed: place_and_route(seed))
+                          for seed in range(1, args.seeds + 1)]
+            failures = [p["failure"] for p in placements if p["failure"]]
+            if failures:
+                notes.append(failures[0])
+            else:
+                fmax = [p["fmax_mhz"] for p in placements]
+                row["fmax_mhz"] = min(fmax)
+                row["fmax_seeds_mhz"] = "/".join(f"{f:.1f}" for f in fmax)
+            row["pnr_s"] = sum(p["pnr_s"] for p in placements)
     row["note"] = "; ".join(notes).replace(",", ";")  # scripts/performance.sh splits the CSV at commas
     return row
 
@@ -373,6 +395,12 @@ def main():
                              "device's block RAM (small profiles only: yosys builds what does not map to block RAM "
                              "from flip-flops)")
     parser.add_argument("--no-pnr", action="store_true", help="counts only, no nextpnr (no Fmax)")
+    parser.add_argument("--seeds", type=int, default=1,
+                        help="place and route each unit at nextpnr seeds 1..N: fmax_mhz is the worst seed's, "
+                             "fmax_seeds_mhz lists every seed's (default 1)")
+    parser.add_argument("--dsp", action="store_true",
+                        help="synth_ice40 -dsp: multipliers onto SB_MAC16 blocks, counted in the dsps column "
+                             "(needs --device up5k, the iCE40 with DSP blocks)")
     parser.add_argument("--ecp5", action="store_true",
                         help="also synthesize each unit with yosys synth_ecp5: LUT4, flip-flop, MULT18X18D, CCU2C "
                              "and DP16KD counts in the ecp5_* columns (no ECP5 place and route)")
@@ -383,6 +411,12 @@ def main():
     args = parser.parse_args()
     RTL = os.path.abspath(args.rtl_dir)
     profile = {p: getattr(args, p) for p in PROFILE_PARAMETERS + list(BUILD_OPTIONS)}
+    if args.seeds < 1:
+        print("hw-cost: --seeds must be 1 or more", file=sys.stderr)
+        sys.exit(2)
+    if args.dsp and args.device != "up5k":
+        print(f"hw-cost: --dsp needs --device up5k (the {args.device} has no SB_MAC16 blocks)", file=sys.stderr)
+        sys.exit(2)
     units = args.units.split()
     for u in units:
         if u not in UNITS:
@@ -397,7 +431,9 @@ def main():
         print(f"hw-cost: {unit} ...", file=sys.stderr, flush=True)
         row = cost_unit(unit, args, profile, work)
         rows.append(row)
-        counts = (f"{row['luts']} LUT, {row['ffs']} FF, {row['brams']} BRAM, Fmax {row['fmax_mhz']} MHz, "
+        fmax = f"{row['fmax_mhz']} MHz" + (f" (seeds {row['fmax_seeds_mhz']})" if args.seeds > 1 else "")
+        counts = (f"{row['luts']} LUT, {row['ffs']} FF, {row['brams']} BRAM, "
+                  f"{str(row['dsps']) + ' SB_MAC16, ' if args.dsp else ''}Fmax {fmax}, "
                   f"yosys {row['synth_s']} s, wrapper + nextpnr {row['pnr_s']} s" if row["luts"] is not None else "")
         if args.ecp5 and row["ecp5_lut4"] is not None:
             counts += (f"; ECP5: {row['ecp5_lut4']} LUT4, {row['ecp5_ffs']} FF, {row['ecp5_mult18']} MULT18X18D, "

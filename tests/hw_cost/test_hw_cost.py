@@ -132,6 +132,41 @@ class HwCost(unittest.TestCase):
         self.assertTrue(results[0][1])
         self.assertEqual(results[1][1], results[0][1])
 
+    def test_spelled_out_synth_ice40_dsp_runs_the_same_passes_as_yosys(self):
+        """With -dsp too: the texture filter's products become SB_MAC16 blocks, the same passes and
+        cells as yosys's own synth_ice40 -dsp."""
+        rtl = os.path.join(ROOT, "rtl")
+        read = f"read_verilog -sv -I{rtl} {os.path.join(rtl, 'texture_filter.sv')}\nhierarchy -top texture_filter\n"
+        results = []
+        for name, synth in (("yosys", "synth_ice40 -dsp -top texture_filter -run :check\n"),
+                            ("script", hw_cost.synth_ice40("texture_filter", "map_ram:check", dsp=True))):
+            script, log = os.path.join(self.work, name + ".ys"), os.path.join(self.work, name + ".log")
+            with open(script, "w") as f:
+                f.write(read + synth + "stat\n")
+            subprocess.run(["yosys", "-q", "-l", log, "-s", script], check=True, capture_output=True)
+            with open(log) as f:
+                text = f.read()
+            passes = [p for p in re.findall(r"^[0-9.]+ Executing (.*)$", text, re.M) if p != "SYNTH_ICE40 pass."]
+            cells = dict(re.findall(r"^ +(SB_\w+) +(\d+)$", text, re.M))
+            results.append((passes, cells))
+        self.assertGreater(int(results[0][1].get("SB_MAC16", "0")), 0)
+        self.assertEqual(results[1][0], results[0][0])
+        self.assertEqual(results[1][1], results[0][1])
+
+    def test_dsp_blocks_are_counted_and_more_than_the_device_has_do_not_fit(self):
+        rows, _ = run_hw_cost("--device", "up5k", "--dsp", "--units", "texture_filter", "--work", self.work)
+        row = rows["texture_filter"]
+        self.assertGreater(int(row["dsps"]), 8)  # the three channels' bilinear products
+        self.assertIn(f"does not fit ({row['dsps']} SB_MAC16; the up5k has 8)", row["note"])
+        self.assertEqual(row["fmax_mhz"], "")
+
+    def test_dsp_needs_the_up5k_and_seeds_at_least_one(self):
+        for args in (["--dsp"], ["--dsp", "--device", "hx8k"], ["--seeds", "0"]):
+            result = subprocess.run([SCRIPT, "--out", self.work, "--units", "z_adder", *TINY, *args],
+                                    capture_output=True, text=True)
+            self.assertEqual(result.returncode, 2, args)
+            self.assertIn("hw-cost:", result.stderr)
+
 
 if __name__ == "__main__":
     unittest.main(argv=sys.argv[:1], verbosity=2)
