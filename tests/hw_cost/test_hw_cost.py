@@ -109,49 +109,42 @@ class HwCost(unittest.TestCase):
         self.assertEqual(hw_cost.pnr_failure(log, "hx8k", "nextpnr-ice40 failed"),
                          "place and route failed: ERROR: something else")
 
+    def passes_and_cells(self, read, synth_by_name):
+        """Per yosys script (the same `read` then each synthesis): the passes run, in order, and the
+        cell counts of the result."""
+        results = {}
+        for name, synth in synth_by_name.items():
+            script, log = os.path.join(self.work, name + ".ys"), os.path.join(self.work, name + ".log")
+            with open(script, "w") as f:
+                f.write(read + synth + "stat\n")
+            subprocess.run(["yosys", "-q", "-l", log, "-s", script], check=True, capture_output=True)
+            with open(log) as f:
+                text = f.read()
+            passes = [p for p in re.findall(r"^[0-9.]+ Executing (.*)$", text, re.M) if p != "SYNTH_ICE40 pass."]
+            results[name] = (passes, dict(re.findall(r"^ +(SB_\w+) +(\d+)$", text, re.M)))
+        return results
+
     def test_spelled_out_synth_ice40_runs_the_same_passes_as_yosys(self):
         """On a unit without memory reads (where the restricted share changes nothing), the script's
         synth_ice40 and yosys's own run the same passes in the same order and give the same cells."""
         rtl = os.path.join(ROOT, "rtl")
         read = (f"read_verilog -sv -I{rtl} {os.path.join(rtl, 'plane_register.sv')} {os.path.join(rtl, 'z_adder.sv')}\n"
                 "chparam -set WIDTH 16 -set HEIGHT 8 -set Z_BITS 16 z_adder\nhierarchy -top z_adder\n")
-        results = []
-        for name, synth in (("yosys", "synth_ice40 -top z_adder -run :check\n"),
-                            ("script", hw_cost.synth_ice40("z_adder", "map_ram:check"))):
-            script, log = os.path.join(self.work, name + ".ys"), os.path.join(self.work, name + ".log")
-            with open(script, "w") as f:
-                f.write(read + synth + "stat\n")
-            subprocess.run(["yosys", "-q", "-l", log, "-s", script], check=True, capture_output=True)
-            with open(log) as f:
-                text = f.read()
-            passes = [p for p in re.findall(r"^[0-9.]+ Executing (.*)$", text, re.M) if p != "SYNTH_ICE40 pass."]
-            cells = re.findall(r"^ +(SB_\w+) +(\d+)$", text, re.M)
-            results.append((passes, cells))
-        self.assertIn("SHARE pass (SAT-based resource sharing).", results[0][0])
-        self.assertEqual(results[1][0], results[0][0])
-        self.assertTrue(results[0][1])
-        self.assertEqual(results[1][1], results[0][1])
+        r = self.passes_and_cells(read, {"yosys": "synth_ice40 -top z_adder -run :check\n",
+                                         "script": hw_cost.synth_ice40("z_adder", "map_ram:check")})
+        self.assertIn("SHARE pass (SAT-based resource sharing).", r["yosys"][0])
+        self.assertTrue(r["yosys"][1])
+        self.assertEqual(r["script"], r["yosys"])
 
     def test_spelled_out_synth_ice40_dsp_runs_the_same_passes_as_yosys(self):
         """With -dsp too: the texture filter's products become SB_MAC16 blocks, the same passes and
         cells as yosys's own synth_ice40 -dsp."""
         rtl = os.path.join(ROOT, "rtl")
         read = f"read_verilog -sv -I{rtl} {os.path.join(rtl, 'texture_filter.sv')}\nhierarchy -top texture_filter\n"
-        results = []
-        for name, synth in (("yosys", "synth_ice40 -dsp -top texture_filter -run :check\n"),
-                            ("script", hw_cost.synth_ice40("texture_filter", "map_ram:check", dsp=True))):
-            script, log = os.path.join(self.work, name + ".ys"), os.path.join(self.work, name + ".log")
-            with open(script, "w") as f:
-                f.write(read + synth + "stat\n")
-            subprocess.run(["yosys", "-q", "-l", log, "-s", script], check=True, capture_output=True)
-            with open(log) as f:
-                text = f.read()
-            passes = [p for p in re.findall(r"^[0-9.]+ Executing (.*)$", text, re.M) if p != "SYNTH_ICE40 pass."]
-            cells = dict(re.findall(r"^ +(SB_\w+) +(\d+)$", text, re.M))
-            results.append((passes, cells))
-        self.assertGreater(int(results[0][1].get("SB_MAC16", "0")), 0)
-        self.assertEqual(results[1][0], results[0][0])
-        self.assertEqual(results[1][1], results[0][1])
+        r = self.passes_and_cells(read, {"yosys": "synth_ice40 -dsp -top texture_filter -run :check\n",
+                                         "script": hw_cost.synth_ice40("texture_filter", "map_ram:check", dsp=True)})
+        self.assertGreater(int(r["yosys"][1].get("SB_MAC16", "0")), 0)
+        self.assertEqual(r["script"], r["yosys"])
 
     def test_dsp_blocks_are_counted_and_more_than_the_device_has_do_not_fit(self):
         rows, _ = run_hw_cost("--device", "up5k", "--dsp", "--units", "texture_filter", "--work", self.work)
