@@ -59,9 +59,8 @@ int64_t Pipeline::walk_stepwise(const SetupResult& s, int64_t load_cycle, Triang
 void Pipeline::submit(const SnappedTriangle& tri) {
   TriangleRecord record;
   record.index = next_index_++;
-  const bool runner = walk_runner_ && !sink_;
-  if (runner) walk_runner_->prefetch(*this, tri);
-  if (runner) {
+  if (walk_runner_ && !sink_) {
+    walk_runner_->prefetch(*this, tri);
     walk_runner_->set_up(setup_, tri, last_setup_);
   } else {
     setup_.run(tri, last_setup_);

@@ -165,7 +165,6 @@ void TriangleSetup::planes(const SetupEdges& edges, SetupResult& r) const {
   const SnappedVertex& v0 = *edges.v[0];
   const SnappedVertex& v1 = *edges.v[1];
   const SnappedVertex& v2 = *edges.v[2];
-  const SnappedVertex* const v[3] = {&v0, &v1, &v2};
   const i128* unbiased = edges.unbiased;
   const int64_t* step_x = edges.step_x;
   const int64_t* step_y = edges.step_y;
@@ -186,7 +185,7 @@ void TriangleSetup::planes(const SetupEdges& edges, SetupResult& r) const {
   }
   // Texture planes (docs/arithmetic.md section 5); an untextured record keeps them zero.
   if (r.textured) {
-    for (const SnappedVertex* vertex_at : v) {
+    for (const SnappedVertex* vertex_at : edges.v) {
       const SnappedVertex& vertex = *vertex_at;
       if (vertex.q <= 0 || vertex.q > (int64_t(1) << kTextureFractionBits))
         throw_width_overflow(vertex.q, kTextureFractionBits + 1, "vertex Q");
@@ -202,7 +201,6 @@ void TriangleSetup::planes(const SetupEdges& edges, SetupResult& r) const {
   } else {
     for (PlaneSetup& p : r.texture) p = PlaneSetup{};
   }
-
 }
 
 // Planes along the left edges (docs/cycle-model.md): slot j takes the j-th edge with step_x > 0.
