@@ -142,6 +142,7 @@ RenderResult render_triangles(Backend backend, const Profile& profile, const std
       rtl_options.seed = options.seed;
       rtl_options.texture = options.texture;
       set_wave_fields(rtl_options, options.wave_files, options.wave);
+      rtl_options.model_beside = options.threads > 1;
       const rtl::CosimReport report = rtl::cosim(profile, triangles, rtl_options, options.replay_prefix);
       if (progress) progress(triangles.size());
       RenderResult result = from_rtl(profile, report.model, sink);

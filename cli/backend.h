@@ -45,7 +45,8 @@ struct BackendOptions {
   WaveOptions wave;
   std::string replay_prefix; // cosim: where a divergence's replay files go
   TextureBinding texture;    // model: what the texture unit samples
-  int threads = 1;           // model without a fragment sink: threads of the render (fast/threaded_render.h)
+  int threads = 1;           // model without a fragment sink: threads of the render (fast/threaded_render.h);
+                             // cosim: 2 or more runs the model beside the RTL
 };
 
 struct RenderResult {

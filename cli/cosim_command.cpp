@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <future>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -228,6 +229,10 @@ CLI::App* add_cosim_command(CLI::App& app, CosimOptions& o) {
   cmd->add_option("--jobs", o.jobs,
                   "frames run in parallel, each on its own model and RTL (the report is the same as with 1; default 1)")
       ->type_name("N");
+  cmd->add_option("--threads", o.threads,
+                  "threads per frame: 2 runs the frame's model (the expected trace) on a thread of its own while the "
+                  "RTL or the design runs (the report is the same as with 1; default 1; with --jobs J, J x 2 threads)")
+      ->type_name("N");
   cmd->add_option("--frame", o.frame, "run only frame K (as numbered in reports: the directed frames from 0, then the random ones)")
       ->check([](const std::string& v) {
         return unsigned_64_text(v).empty() ? std::string() : "'" + v + "' is not a frame number (0 or more)";
@@ -317,7 +322,13 @@ DesignFrame design_frame(const dut::Design& design, const rtl::CosimCase& c, con
                          verify::CompareMode mode, const verify::Tolerance& tolerance, const std::string& replay,
                          const rtl::RtlOptions& waveform) {
   DesignFrame d;
-  d.model = rtl::run_model(c.profile, c.triangles, c.texture);
+  // With waveform.model_beside the model runs while the design does (std::async's future joins on
+  // every path out).
+  std::future<rtl::RtlResult> model;
+  if (waveform.model_beside)
+    model = std::async(std::launch::async, [&] { return rtl::run_model(c.profile, c.triangles, c.texture); });
+  else
+    d.model = rtl::run_model(c.profile, c.triangles, c.texture);
   dut::DutRunOptions run_options;
   const std::string fst_path = waveform.wave_vcd ? waveform.wave_fst_scratch : waveform.wave_path;
   if (!waveform.wave_path.empty()) {
@@ -330,6 +341,7 @@ DesignFrame design_frame(const dut::Design& design, const rtl::CosimCase& c, con
   int64_t wave_start = 0;
   try {
     const rtl::RtlResult result = design.run(c.profile, c.triangles, run_options);
+    if (model.valid()) d.model = model.get();
     d.design_cycles = result.stats.cycles;
     // FST times: reset's 4 cycles, then cycle k's rising edge at 2 (first handshake + k) + 9.
     wave_start = run_options.wave_window ? 2 * (result.first_handshake + run_options.wave_from) + 8 : 0;
@@ -340,6 +352,7 @@ DesignFrame design_frame(const dut::Design& design, const rtl::CosimCase& c, con
   } catch (const std::runtime_error& e) {
     d.message = e.what();
   }
+  if (model.valid()) d.model = model.get();  // a design that stalled or failed: the coverage still needs it
   if (!waveform.wave_path.empty()) {  // a stalled frame's waveform ends at the stall
     rtl::WaveView view;
     view.start = wave_start;
@@ -432,6 +445,11 @@ int run_cosim(const CosimOptions& o) {
     throw InputError("--export writes .tri replays, which carry no texture: with the texture unit, rerun a frame "
                      "with --frame");
   if (o.jobs < 1 || o.jobs > 256) throw InputError("--jobs " + std::to_string(o.jobs) + " is outside 1..256");
+  // The traced model is one walk in order (every fragment, record and cycle), so a frame's model
+  // side is one thread: a second thread runs it beside the RTL, and more would have nothing to do.
+  if (o.threads < 1 || o.threads > 2)
+    throw InputError("--threads " + std::to_string(o.threads) +
+                     " is outside 1..2: a frame's model side is one traced run, beside the RTL's with 2");
   if (unit && !o.wave.path.empty())
     throw InputError("--wave with --unit: a failing frame's waveform goes to --replay-dir");
   modules::DutDesign files;
@@ -548,6 +566,7 @@ int run_cosim(const CosimOptions& o) {
     rtl::RtlOptions options;
     options.seed = o.seed + uint64_t(k);
     options.texture = c.texture;
+    options.model_beside = o.threads > 1;
     if (with_outputs) set_wave_fields(options, wave, o.wave);
     const std::string prefix =
         with_outputs ? (std::filesystem::path(o.replay_dir) / ("rastersim-replay-" + std::to_string(k))).string() : "";

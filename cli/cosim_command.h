@@ -29,6 +29,7 @@ struct CosimOptions {
   WaveOptions wave;             // the RTL waveform of the last frame run
   int64_t frame = -1;           // run only this frame (>= 0)
   int jobs = 1;                 // frames run in parallel
+  int threads = 1;              // 2: each frame's model run on its own thread beside the RTL's (or design's)
   std::string export_dir;       // write the frames as replay files instead of running them
   std::string coverage_out;     // the functional coverage as JSON, when not empty
   bool coverage_gate = true;    // a whole run exits 1 when a reachable coverage bin stays at zero

@@ -88,7 +88,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
       ->type_name("NAME");
   cmd->add_option("--threads", o.threads,
                   "model: threads of the render, the same frame at any count (without --fragments, which "
-                  "traces on one thread); default: the machine's cores when the "
+                  "traces on one thread); cosim: 2 or more run the model beside the RTL; default: the machine's cores when the "
                   "triangles average 128 pixels or more and cover 524288 or more, else 1")
       ->check(CLI::Range(1, 256));
   add_texture_options(*cmd, o);

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <deque>
 #include <fstream>
+#include <future>
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
@@ -383,8 +384,16 @@ std::pair<int64_t, int64_t> divergence_window(const Divergence& divergence, cons
 CosimReport cosim(const Profile& profile, const std::vector<SnappedTriangle>& triangles, const RtlOptions& options,
                   const std::string& replay_prefix) {
   CosimReport report;
-  report.model = run_model(profile, triangles, options.texture);
-  report.rtl = run_rtl(profile, triangles, options);
+  if (options.model_beside) {
+    // (An exception from the RTL's run waits for the model's thread: std::async's future joins.)
+    std::future<RtlResult> model =
+        std::async(std::launch::async, [&] { return run_model(profile, triangles, options.texture); });
+    report.rtl = run_rtl(profile, triangles, options);
+    report.model = model.get();
+  } else {
+    report.model = run_model(profile, triangles, options.texture);
+    report.rtl = run_rtl(profile, triangles, options);
+  }
   report.divergence = compare(report.model, report.rtl);
   report.passed = !report.divergence.found;
   if (!report.passed && !replay_prefix.empty()) {

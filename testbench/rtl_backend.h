@@ -36,6 +36,8 @@ struct RtlOptions {
   // What the texture unit samples (profiles with texture_unit): loaded into the texture memory
   // before the frame.
   TextureBinding texture;
+  // cosim: the model's run of the frame on a thread of its own, beside the RTL's (the same report).
+  bool model_beside = false;
 };
 
 // Everything a backend produces for one frame. Fragment.pass and TriangleRecord fields as in the

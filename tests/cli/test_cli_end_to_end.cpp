@@ -1332,23 +1332,28 @@ std::string without_times(std::string xml) {
   return xml;
 }
 
-// --jobs N runs frames in parallel and reports exactly what one job reports.
-TEST(CliRtl, CosimJobsGiveTheSameReportAsOneJob) {
+// --jobs N runs frames in parallel and --threads 2 each frame's model beside its RTL; both report
+// exactly what one job on one thread reports (run 4: two jobs of two threads).
+TEST(CliRtl, CosimJobsAndThreadsGiveTheSameReportAsOneJob) {
   ScratchDir dir;
   std::map<int, RunResult> runs;
-  for (const int jobs : {1, 2, 3}) {
+  for (const int jobs : {1, 2, 3, 4}) {
     const std::string j = std::to_string(jobs);
     runs[jobs] = run_rastersim(dir, {"cosim", "--count", "12", "--width", "64", "--height", "48", "--setup-interval", "2",
-                                     "--jobs", j, "--junit", "j" + j + ".xml", "--coverage", "c" + j + ".json"});
+                                     "--jobs", jobs == 4 ? "2" : j, "--threads", jobs == 4 ? "2" : "1", "--junit",
+                                     "j" + j + ".xml", "--coverage", "c" + j + ".json"});
     ASSERT_EQ(runs[jobs].exit_code, 0) << runs[jobs].err;
   }
-  for (const int jobs : {2, 3}) {
+  for (const int jobs : {2, 3, 4}) {
     const std::string j = std::to_string(jobs);
     EXPECT_EQ(runs[jobs].out, runs[1].out) << jobs;
     EXPECT_EQ(without_times(read_text(dir.path("j" + j + ".xml"))), without_times(read_text(dir.path("j1.xml")))) << jobs;
     EXPECT_EQ(read_text(dir.path("c" + j + ".json")), read_text(dir.path("c1.json"))) << jobs;
   }
   EXPECT_EQ(run_rastersim(dir, {"cosim", "--count", "1", "--width", "64", "--height", "48", "--jobs", "0"}).exit_code, 2);
+  const RunResult three = run_rastersim(dir, {"cosim", "--count", "1", "--width", "64", "--height", "48", "--threads", "3"});
+  EXPECT_EQ(three.exit_code, 2);
+  EXPECT_NE(three.err.find("--threads 3 is outside 1..2"), std::string::npos) << three.err;
 }
 
 // A count whose frame indices overflow once ran no frame and reported "0 passed, 0 failed", exit 0.

@@ -3,7 +3,7 @@
 # (testbench/dut/rastersim_dut.sv) passes cycle, stream, triangle and frame, and cycle mode's report
 # and coverage equal cosim's without --dut; so does the core with the memory port
 # (rastersim_dut_memory.sv, the harness's memory behind it), also with a memory that refuses reads;
-# a latency other than the profile's fails cycle mode on a retirement cycle; the same core with its depth
+# --threads 2 (the model beside the design) reports the same; a latency other than the profile's fails cycle mode on a retirement cycle; the same core with its depth
 # test `<` written `<=` fails frame mode at the default --count, and the printed replay command
 # fails alone; a design that never takes a triangle is a clear stall error naming cmd_ready; bad
 # file lists are bad input (exit 2) naming the file and line; --wave writes the design's waveform.
@@ -42,6 +42,11 @@ done
   fail "cosim of rastersim_top failed: $(tail -1 top.txt)"
 cmp -s top.txt own-cycle.txt || fail "cycle mode's report differs from cosim's: $(diff top.txt own-cycle.txt | head -5)"
 cmp -s top.json own-cycle.json || fail "cycle mode's coverage JSON differs from cosim's"
+# --threads 2 runs each frame's model beside the design: the same report and coverage.
+"$exe" cosim "${own[@]}" "${flags[@]}" --count 20 --compare cycle --threads 2 --coverage threads.json > threads.txt 2> threads.err ||
+  fail "--threads 2 failed: $(tail -1 threads.txt)"
+cmp -s threads.txt own-cycle.txt || fail "--threads 2 changed the report: $(diff own-cycle.txt threads.txt | head -5)"
+cmp -s threads.json own-cycle.json || fail "--threads 2 changed the coverage JSON"
 # The memory port: the same report from the harness's memory, no read-back.
 memory=(--dut "$src/testbench/dut/rastersim_dut.f" --top rastersim_dut_memory -G TRAVERSAL_SPAN=0 -G MEMORY_LATENCY=5
         --traversal bbox --memory-latency 5)
