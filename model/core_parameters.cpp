@@ -6,52 +6,44 @@
 #include "widths.h"
 
 namespace rastersim {
-namespace {
 
-enum class Fit { Equal, Bound, Guard };
-
-struct Row {
-  const char* name;
-  Fit fit;
-};
-#define RS_ROW(name, fit) {#name, Fit::fit},
-constexpr Row kRows[] = {RASTERSIM_CORE_PARAMETERS(RS_ROW)};
-#undef RS_ROW
-
-// The value of parameter `name` for the profile.
-int64_t value_of(const std::string& name, const Profile& p, CoreBounds bounds) {
-  const bool largest = bounds == CoreBounds::Largest;
-  if (name == "WIDTH") return p.width;
-  if (name == "HEIGHT") return p.height;
-  if (name == "SUBPIXEL_BITS") return p.subpixel_bits;
-  if (name == "Z_BITS") return p.z_bits;
-  if (name == "Z_GUARD_BITS") return p.z_guard_bits;
-  if (name == "MAX_MEMORY_LATENCY") return largest ? kMaxMemoryLatency : p.memory_latency;
-  if (name == "MAX_SETUP_FIFO_DEPTH") return largest ? kMaxSetupFifoDepth : p.setup_fifo_depth;
-  if (name == "SETUP_INTERVAL") return p.setup_interval;
-  if (name == "TEXTURE") return p.texture_unit ? 1 : 0;
-  if (name == "MAX_TEXTURE_LATENCY") return largest ? kMaxTextureLatency : p.texture_latency;
-  // One exponent bit makes a word equal to the fixed-point one (docs/arithmetic.md section 6).
-  if (name == "DEPTH_EXPONENT_BITS") return p.depth_exponent_bits >= 2 ? p.depth_exponent_bits : 0;
-  if (name == "DEPTH_BIAS") return p.depth_biased() ? 1 : 0;
-  if (name == "PIXEL_CENTER") return int64_t(p.pixel_center);
-  if (name == "FILL_RULE") return int64_t(p.fill_rule);
-  if (name == "DEPTH_ROUNDING") return int64_t(p.depth_rounding);
-  if (name == "COLOR_ROUNDING") return int64_t(p.color_rounding);
-  throw std::logic_error("core parameter " + name + " has no mapping from the profile");
+const std::vector<CoreParameterRow>& core_parameter_rows() {
+  static const std::vector<CoreParameterRow> rows = [] {
+    std::vector<CoreParameterRow> out;
+    for (const ProfileKey& key : profile_table()) {
+      if (key.place != RtlPlace::Parameter && key.place != RtlPlace::Both) continue;
+      std::string name = key.rtl_name;
+      if (const size_t comma = name.rfind(", "); comma != std::string::npos) name = name.substr(comma + 2);
+      const auto named = std::find_if(out.begin(), out.end(), [&](const CoreParameterRow& r) { return r.name == name; });
+      if (named != out.end())
+        named->keys += ", " + std::string(key.key);
+      else
+        out.push_back({name, &key, key.key, key.place == RtlPlace::Both ? CoreFit::Bound : key.core_fit});
+    }
+    return out;
+  }();
+  return rows;
 }
 
-const Row* row_of(const std::string& name) {
-  for (const Row& r : kRows)
+namespace {
+
+const CoreParameterRow* row_of(const std::string& name) {
+  for (const CoreParameterRow& r : core_parameter_rows())
     if (name == r.name) return &r;
   return nullptr;
+}
+
+int64_t value_of(const ProfileKey& key, const Profile& p, CoreBounds bounds) {
+  const bool largest = bounds == CoreBounds::Largest;
+  if (key.core_value) return key.core_value(p, largest);
+  return key.place == RtlPlace::Both && largest ? key.max : key.get(p);
 }
 
 }  // namespace
 
 CoreParameters core_parameters(const Profile& p, CoreBounds bounds) {
   CoreParameters out;
-  for (const Row& r : kRows) out.push_back({r.name, value_of(r.name, p, bounds)});
+  for (const CoreParameterRow& r : core_parameter_rows()) out.push_back({r.name, value_of(*r.key, p, bounds)});
   return out;
 }
 
@@ -95,17 +87,17 @@ std::string core_mismatch(const CoreParameters& built, const Profile& p) {
   for (const CoreParameter& want : core_parameters(p)) {
     const auto have = std::find_if(built.begin(), built.end(), [&](const CoreParameter& c) { return c.name == want.name; });
     if (have == built.end()) return want.name + " is not among the built core's parameters";
-    const Fit fit = row_of(want.name)->fit;
+    const CoreFit fit = row_of(want.name)->fit;
     bool fits = have->value == want.value;
-    if (fit == Fit::Bound) fits = have->value >= want.value;
-    if (fit == Fit::Guard) {
+    if (fit == CoreFit::Bound) fits = have->value >= want.value;
+    if (fit == CoreFit::Guard) {
       const auto guard = [&](int64_t g) { return g > 0 ? g : int64_t(derived_guard_bits(p.width, p.height)); };
       fits = guard(have->value) == guard(want.value);
     }
     if (!fits)
       return want.name + " is " + std::to_string(have->value) + " in this core; the profile needs " +
-             (fit == Fit::Bound ? "at least " : "") + std::to_string(want.value) +
-             (fit == Fit::Guard ? " (resolved guard bits differ)" : "");
+             (fit == CoreFit::Bound ? "at least " : "") + std::to_string(want.value) +
+             (fit == CoreFit::Guard ? " (resolved guard bits differ)" : "");
   }
   return "";
 }

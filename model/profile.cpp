@@ -108,6 +108,9 @@ std::vector<const char*> names_of(const char* const* names, size_t n) { return {
 #define RS_CHOICES(array) names_of(array, std::size(array))
 
 int64_t written_depth_clear(const Profile& p) { return p.depth_clear_value(); }
+// One exponent bit makes a word equal to the fixed-point one (docs/arithmetic.md section 6).
+int64_t core_depth_exponent_bits(const Profile& p, bool) { return p.depth_exponent_bits >= 2 ? p.depth_exponent_bits : 0; }
+int64_t core_depth_bias(const Profile& p, bool) { return p.depth_biased() ? 1 : 0; }
 
 const std::vector<ProfileKey> kTable = {
     {"width", KeyType::Integer, 1, 4096, nullptr, 0, {}, nullptr, "screen width in pixels",
@@ -120,7 +123,7 @@ const std::vector<ProfileKey> kTable = {
      RtlPlace::Parameter, "Z_BITS", RS_MEMBER(z_bits)},
     {"z_guard_bits", KeyType::Integer, 0, 24, "auto", 0, {}, "`auto` or 1..24",
      "F: plane register fraction bits; `auto` derives the proven minimum ([arithmetic.md](arithmetic.md))",
-     RtlPlace::Parameter, "Z_GUARD_BITS", RS_MEMBER(z_guard_bits)},
+     RtlPlace::Parameter, "Z_GUARD_BITS", RS_MEMBER(z_guard_bits), nullptr, nullptr, CoreFit::Guard},
     {"depth_func", KeyType::Choice, 0, 7, nullptr, 0, RS_CHOICES(kDepthFuncNames), nullptr, "depth test",
      RtlPlace::Port, "cfg_depth_func", RS_MEMBER(depth_func)},
     {"depth_write", KeyType::Boolean, 0, 1, nullptr, 0, {}, nullptr, "write depth on pass",
@@ -137,14 +140,14 @@ const std::vector<ProfileKey> kTable = {
      "Ne: 0 a fixed-point depth word; 1..4 an unsigned floating-point word of N bits with Ne exponent bits, the "
      "depth plane then `N - Ne + 2^Ne - 1` bits (at most 32; [arithmetic.md](arithmetic.md) section 6). A build "
      "option of the RTL",
-     RtlPlace::Parameter, "DEPTH_EXPONENT_BITS", RS_MEMBER(depth_exponent_bits)},
+     RtlPlace::Parameter, "DEPTH_EXPONENT_BITS", RS_MEMBER(depth_exponent_bits), nullptr, &core_depth_exponent_bits},
     {"depth_bias_constant", KeyType::Integer, INT64_MIN, INT64_MAX, nullptr, 0, {},
      "integer, \\|c\\| < 2^plane bits", "depth bias in depth plane LSBs",
-     RtlPlace::Both, "cfg_depth_bias_constant, DEPTH_BIAS", RS_MEMBER(depth_bias_constant)},
+     RtlPlace::Both, "cfg_depth_bias_constant, DEPTH_BIAS", RS_MEMBER(depth_bias_constant), nullptr, &core_depth_bias},
     {"depth_bias_slope", KeyType::Sixteenths, -128, 127, nullptr, 0, {}, "-8..7.9375, a multiple of 1/16",
      "depth bias per LSB of the triangle's largest depth step per pixel (polygon offset's factor). A bias is a "
      "build option of the RTL; both values are run-time inputs",
-     RtlPlace::Both, "cfg_depth_bias_slope, DEPTH_BIAS", RS_MEMBER(depth_bias_slope)},
+     RtlPlace::Both, "cfg_depth_bias_slope, DEPTH_BIAS", RS_MEMBER(depth_bias_slope), nullptr, &core_depth_bias},
     {"cull", KeyType::Choice, 0, 2, nullptr, 0, RS_CHOICES(kCullNames), nullptr, "face culling",
      RtlPlace::Port, "cfg_cull", RS_MEMBER(cull)},
     {"front_face", KeyType::Choice, 0, 1, nullptr, 0, RS_CHOICES(kFrontFaceNames), nullptr,

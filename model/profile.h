@@ -133,8 +133,13 @@ enum class RtlPlace {
   None,       // outside the core: the front end, the memory models of the harness
   Port,       // a cfg_* input of rastersim_core (`rtl_name`), sampled during reset
   Parameter,  // a build parameter of rastersim_core (`rtl_name`; core_parameters() maps it)
-  Both,       // a cfg_* input whose largest value (or whose presence) is a build parameter
+  Both,       // a cfg_* input whose largest value (or whose presence) is a build parameter:
+              // `rtl_name` is "cfg_port, PARAMETER"
 };
+// How a built core's parameter must relate to the profile's value to run it (core_mismatch()):
+// Equal; Bound, the core may hold more (a largest latency, a FIFO's size, an option the profile
+// leaves unused; every Both row); Guard, the same resolved plane fraction bits (0 derives them).
+enum class CoreFit { Equal, Bound, Guard };
 struct ProfileKey {
   const char* key;  // JSON key; the flag is --key with '-' for '_'
   KeyType type;
@@ -150,6 +155,11 @@ struct ProfileKey {
   void (*set)(Profile&, int64_t);
   // What profile_to_json writes when it is not get(): depth_clear's resolved value. nullptr: get().
   int64_t (*written)(const Profile&) = nullptr;
+  // Parameter and Both rows, rastersim_core's build parameter (model/core_parameters.h). Its value
+  // for the profile, `largest` asking for the largest core a Both row's run-time input allows;
+  // nullptr: get() (a Both row: `max` when largest).
+  int64_t (*core_value)(const Profile&, bool largest) = nullptr;
+  CoreFit core_fit = CoreFit::Equal;  // a Both row's is Bound
 };
 
 // The keys, in the order they are documented and written.

@@ -14,24 +14,8 @@
 // the word (DEPTH_PLANE_BITS); DEPTH_BIAS = 1 adds the depth bias of cfg_depth_bias_* (docs/
 // arithmetic.md section 6). Both only change the Z adder's output stage and the plane's width.
 `include "rastersim_pkg.sv"
-module rastersim_core `RS_IMPORT #(
-  parameter integer WIDTH = 640,
-  parameter integer HEIGHT = 480,
-  parameter integer SUBPIXEL_BITS = 4,
-  parameter integer Z_BITS = 24,
-  parameter integer Z_GUARD_BITS = 0,      // 0: derived (proven minimum)
-  parameter integer MAX_MEMORY_LATENCY = 64,
-  parameter integer MAX_SETUP_FIFO_DEPTH = 16,  // record FIFO entries; cfg_setup_fifo_depth <= this
-  parameter integer SETUP_INTERVAL = 0,        // 0: serial setup; 2..64: pipelined (profile setup_interval)
-  parameter integer TEXTURE = 0,               // 1: the texture unit (profile texture_unit)
-  parameter integer MAX_TEXTURE_LATENCY = 64,  // cfg_texture_latency <= this
-  parameter integer DEPTH_EXPONENT_BITS = 0,   // Ne: 0 (or 1) the fixed-point depth word, 2..4 floating point
-  parameter integer DEPTH_BIAS = 0,            // 1: the depth bias (cfg_depth_bias_*)
-  parameter integer PIXEL_CENTER = 0,          // rastersim_pkg::PIXEL_CENTER_*: the sample point (profile pixel_center)
-  parameter integer FILL_RULE = 0,             // rastersim_pkg::FILL_*: the edges owning samples on them (profile fill_rule)
-  parameter integer DEPTH_ROUNDING = 0,        // rastersim_pkg::ROUNDING_*: the depth output (profile depth_rounding)
-  parameter integer COLOR_ROUNDING = 0         // rastersim_pkg::ROUNDING_*: the colour outputs (profile color_rounding)
-) (
+`include "rastersim_core_parameters.vh"  // its build parameters
+module rastersim_core `RS_IMPORT #(`RASTERSIM_CORE_PARAMETERS) (
   input  wire clk,
   input  wire rst,
   input  `RS_TYPE(depth_func_t) cfg_depth_func,  // rastersim_pkg::DEPTH_*

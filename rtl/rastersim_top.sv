@@ -6,24 +6,8 @@
 // With TEXTURE = 1 the texture memory (texture_memory) sits behind the texture unit's port, loaded
 // through the texture_load_* port before the frame.
 `include "rastersim_pkg.sv"
-module rastersim_top `RS_IMPORT #(
-  parameter integer WIDTH = 640,
-  parameter integer HEIGHT = 480,
-  parameter integer SUBPIXEL_BITS = 4,
-  parameter integer Z_BITS = 24,
-  parameter integer Z_GUARD_BITS = 0,      // 0: derived (proven minimum)
-  parameter integer MAX_MEMORY_LATENCY = 64,
-  parameter integer MAX_SETUP_FIFO_DEPTH = 16,  // record FIFO entries; cfg_setup_fifo_depth <= this
-  parameter integer SETUP_INTERVAL = 0,        // 0: serial setup; 2..64: pipelined
-  parameter integer TEXTURE = 0,               // 1: the texture unit and its memory
-  parameter integer MAX_TEXTURE_LATENCY = 64,
-  parameter integer DEPTH_EXPONENT_BITS = 0,   // as rastersim_core's
-  parameter integer DEPTH_BIAS = 0,
-  parameter integer PIXEL_CENTER = 0,          // as rastersim_core's
-  parameter integer FILL_RULE = 0,
-  parameter integer DEPTH_ROUNDING = 0,
-  parameter integer COLOR_ROUNDING = 0
-) (
+`include "rastersim_core_parameters.vh"  // its build parameters
+module rastersim_top `RS_IMPORT #(`RASTERSIM_CORE_PARAMETERS) (
   input  wire clk,
   input  wire rst,
   input  `RS_TYPE(depth_func_t) cfg_depth_func,  // rastersim_pkg::DEPTH_*
@@ -99,12 +83,7 @@ module rastersim_top `RS_IMPORT #(
   wire [rastersim_pkg::TEXTURE_BANKS*rastersim_pkg::TEXEL_WORD_BITS-1:0] tex_rd_addr;
   wire [rastersim_pkg::TEXTURE_BANKS*rastersim_pkg::TEXEL_BITS-1:0] tex_rd_texels;
 
-  rastersim_core #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
-                   .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY),
-                   .MAX_SETUP_FIFO_DEPTH(MAX_SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL), .TEXTURE(TEXTURE),
-                   .MAX_TEXTURE_LATENCY(MAX_TEXTURE_LATENCY), .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS),
-                   .DEPTH_BIAS(DEPTH_BIAS), .PIXEL_CENTER(PIXEL_CENTER), .FILL_RULE(FILL_RULE),
-                   .DEPTH_ROUNDING(DEPTH_ROUNDING), .COLOR_ROUNDING(COLOR_ROUNDING)) core (
+  rastersim_core #(`RASTERSIM_CORE_PARAMETERS_PASSED) core (
     .clk(clk), .rst(rst), .cfg_depth_func(cfg_depth_func), .cfg_depth_write(cfg_depth_write),
     .cfg_cull(cfg_cull), .cfg_front_face(cfg_front_face), .cfg_traversal(cfg_traversal),
     .cfg_shading(cfg_shading), .cfg_memory_latency(cfg_memory_latency),

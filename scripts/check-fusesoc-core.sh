@@ -86,9 +86,12 @@ for name, target in targets.items():
     if not target.get("toplevel"):
         fail(f"rastersim.core: target {name}: no toplevel")
 
-# Every build parameter of rastersim_top, declared in its order and taken by lint and synth.
+# Every build parameter of rastersim_top (the core's, declared in rastersim_core_parameters.vh),
+# declared in its order and taken by lint and synth.
 top_text = open(os.path.join(root, "rtl", "rastersim_top.sv")).read()
 header = top_text[top_text.index("module rastersim_top"):top_text.index(") (")]
+if "`RASTERSIM_CORE_PARAMETERS" in header:
+    header += open(os.path.join(root, "rtl", "rastersim_core_parameters.vh")).read()
 top_parameters = re.findall(r"parameter integer (\w+)", header)
 vlogparams = [n for n, p in parameters.items() if p["paramtype"] == "vlogparam"]
 if vlogparams != top_parameters:

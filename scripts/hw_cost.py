@@ -50,12 +50,17 @@ UNITS = {
                       "memory port to an external SRAM",
     "rastersim_top": "TOP WITH FRAME MEMORY ON CHIP: rastersim_core + zbuffer_memory",
 }
-PROFILE_PARAMETERS = ["WIDTH", "HEIGHT", "SUBPIXEL_BITS", "Z_BITS", "Z_GUARD_BITS", "MAX_MEMORY_LATENCY",
-                      "MAX_SETUP_FIFO_DEPTH", "SETUP_INTERVAL"]
-# Build options of the core (rtl/rastersim_core.sv), passed to a unit that declares them only when
-# they differ from their defaults here (so that results cached without them stay valid).
-BUILD_OPTIONS = {"TEXTURE": 0, "MAX_TEXTURE_LATENCY": 64, "DEPTH_EXPONENT_BITS": 0, "DEPTH_BIAS": 0, "PIXEL_CENTER": 0,
-                 "FILL_RULE": 0, "DEPTH_ROUNDING": 0, "COLOR_ROUNDING": 0}
+
+
+def core_parameter_defaults(rtl):
+    """rastersim_core's build parameters in declaration order with their defaults, read from where
+    they are declared once (rtl/rastersim_core_parameters.vh)."""
+    text = open(os.path.join(rtl, "rastersim_core_parameters.vh")).read()
+    return {name: int(value) for name, value in re.findall(r"parameter integer (\w+) = (-?\d+)", text)}
+
+
+# The flags' defaults where they are not the core's: the smallest record FIFO.
+FLAG_DEFAULTS = {"MAX_SETUP_FIFO_DEPTH": 1}
 DEVICES = {"hx8k": ("--hx8k", "ct256", 7680, 32), "up5k": ("--up5k", "sg48", 5280, 30), "hx1k": ("--hx1k", "tq144", 1280, 16)}
 DEVICE_DSPS = {"hx8k": 0, "up5k": 8, "hx1k": 0}  # SB_MAC16 blocks
 BRAM_BITS = 4096  # SB_RAM40_4K
@@ -141,13 +146,14 @@ def rtl_sources():
 
 def module_parameters(unit):
     text = open(os.path.join(RTL, unit + ".sv")).read()
-    return [p for p in PROFILE_PARAMETERS + list(BUILD_OPTIONS) if re.search(r"parameter\s+integer\s+" + p + r"\b", text)]
+    if "`RASTERSIM_CORE_PARAMETERS" in text:  # rastersim_core, rastersim_top: every core parameter
+        text += open(os.path.join(RTL, "rastersim_core_parameters.vh")).read()
+    return [p for p in core_parameter_defaults(RTL) if re.search(r"parameter\s+integer\s+" + p + r"\b", text)]
 
 
 def unit_parameters(unit, profile):
-    """The parameters a unit of rtl/ is synthesized with: the profile parameters it declares, and
-    the build options it declares that differ from their defaults."""
-    return {p: profile[p] for p in module_parameters(unit) if p not in BUILD_OPTIONS or profile[p] != BUILD_OPTIONS[p]}
+    """The parameters a unit of rtl/ is synthesized with: the core's parameters it declares."""
+    return {p: profile[p] for p in module_parameters(unit)}
 
 
 def yosys_ports(work, top, read, chparams):
@@ -268,7 +274,7 @@ def cost_unit(unit, args, profile, work):
         read = os.path.join(work, top + ".v")
         with open(read, "w") as f:
             f.write(SHIMS[unit])
-        parameters = {p: profile[p] for p in PROFILE_PARAMETERS
+        parameters = {p: profile[p] for p in core_parameter_defaults(RTL)
                       if re.search(r"parameter\s+integer\s+" + p + r"\b", SHIMS[unit])}
     else:
         top = unit
@@ -381,13 +387,10 @@ def cost_unit(unit, args, profile, work):
 def main():
     global RTL
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    defaults = {"WIDTH": 640, "HEIGHT": 480, "SUBPIXEL_BITS": 4, "Z_BITS": 24, "Z_GUARD_BITS": 0, "MAX_MEMORY_LATENCY": 64,
-                "MAX_SETUP_FIFO_DEPTH": 1, "SETUP_INTERVAL": 0}
-    for p in PROFILE_PARAMETERS:
-        parser.add_argument("--" + p.lower().replace("_", "-"), type=int, default=defaults[p], dest=p)
-    for p, default in BUILD_OPTIONS.items():
+    for p, default in core_parameter_defaults(RTL).items():
+        default = FLAG_DEFAULTS.get(p, default)
         parser.add_argument("--" + p.lower().replace("_", "-"), type=int, default=default, dest=p,
-                            help=f"build option of the core (default {default})")
+                            help=f"rastersim_core's {p} (default {default})")
     parser.add_argument("--device", choices=sorted(DEVICES), default="hx8k")
     parser.add_argument("--units", default=" ".join(UNITS), help="space-separated units (default: all)")
     parser.add_argument("--synthesize-memory", action="store_true",
@@ -410,7 +413,7 @@ def main():
                                                    "second run reuses (default: a new temporary one)")
     args = parser.parse_args()
     RTL = os.path.abspath(args.rtl_dir)
-    profile = {p: getattr(args, p) for p in PROFILE_PARAMETERS + list(BUILD_OPTIONS)}
+    profile = {p: getattr(args, p) for p in core_parameter_defaults(RTL)}
     if args.seeds < 1:
         print("hw-cost: --seeds must be 1 or more", file=sys.stderr)
         sys.exit(2)

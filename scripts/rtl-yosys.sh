@@ -14,7 +14,11 @@ for unit in "${units[@]}"; do
   top="${unit%%@*}"
   chparam=""
   for name in "${!values[@]}"; do
-    if grep -q "parameter integer $name\b" "$rtl/$top.sv"; then chparam+=" -set $name ${values[$name]}"; fi
+    if grep -q "parameter integer $name\b" "$rtl/$top.sv" ||
+       { grep -q '`RASTERSIM_CORE_PARAMETERS\b' "$rtl/$top.sv" &&
+         grep -q "parameter integer $name\b" "$rtl/rastersim_core_parameters.vh"; }; then
+      chparam+=" -set $name ${values[$name]}"
+    fi
   done
   if [ "$unit" != "$top" ]; then
     IFS=',' read -r -a extra <<< "${unit#*@}"

@@ -3,7 +3,7 @@
 // built configurations (rtl_configs.cpp) and by a module built on demand (testbench/ondemand/).
 #pragma once
 
-#include "model/core_parameters.h"
+#include "testbench/built_parameters.h"
 #include "model/widths.h"
 #include "testbench/rtl_harness.h"
 

@@ -5,7 +5,7 @@
 
 #include "Vrastersim_sc___024root.h"
 #include "Vrastersim_sc_rastersim_core.h"
-#include "model/core_parameters.h"
+#include "testbench/built_parameters.h"
 #include "model/widths.h"
 #include "testbench/assertions.h"
 

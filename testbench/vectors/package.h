@@ -16,7 +16,7 @@
 namespace rastersim::vectors {
 
 // Bumped when a file, a layout or the testbench's contract changes incompatibly (docs/vectors.md).
-constexpr int kFormatVersion = 7;  // 2: check_manifest.py added; 3: status no_centre, its counter;
+constexpr int kFormatVersion = 8;  // 2: check_manifest.py added; 3: status no_centre, its counter;
                                    // 4: one testbench with a parameter file, +functional;
                                    // 5: the planes along the left edges in setup.hex, setup cycles;
                                    // 6: commands' depths in the depth plane's bits, the depth word's
@@ -24,6 +24,8 @@ constexpr int kFormatVersion = 7;  // 2: check_manifest.py added; 3: status no_c
                                    //    S, T, Q commands, the texture record), two frame counters;
                                    // 7: the conventions' parameters PIXEL_CENTER, FILL_RULE,
                                    //    DEPTH_ROUNDING and COLOR_ROUNDING
+                                   // 8: every rastersim_core parameter under its own name
+                                   //    (MAX_MEMORY_LATENCY ...), RS_CORE_PARAMETERS_PASSED
 
 // Where the triangles came from, recorded in the manifest and in the regeneration command.
 struct Source {

@@ -10,9 +10,6 @@
 namespace rastersim::vectors {
 namespace {
 
-// One of rastersim_core's parameters for the profile.
-int64_t core_parameter(const Profile& p, const std::string& name) { return parameter_value(core_parameters(p), name); }
-
 
 std::string bits_literal(int bits, int64_t value) {
   std::ostringstream s;
@@ -97,29 +94,22 @@ std::string params_text(const PackageFacts& k) {
     << "// " << generator_name() << ": the profile, the port widths derived from it, the number of vectors and\n"
     << "// every field's place in its word (README.md has the same layouts as tables).\n"
     << "// " << kTestbenchFile << " includes this file inside its module.\n"
-    << "\n// The profile (manifest.json \"profile\").\n"
-    << "localparam integer WIDTH = " << p.width << ";\n"
-    << "localparam integer HEIGHT = " << p.height << ";\n"
-    << "localparam integer SUBPIXEL_BITS = " << p.subpixel_bits << ";\n"
-    << "localparam integer Z_BITS = " << p.z_bits << ";\n"
-    << "localparam integer Z_GUARD_BITS = " << p.z_guard_bits << ";  // 0: the RTL derives it\n"
-    << "localparam integer MEMORY_LATENCY = " << p.memory_latency << ";  // cfg_memory_latency and MAX_MEMORY_LATENCY\n"
-    << "localparam integer SETUP_FIFO_DEPTH = " << p.setup_fifo_depth
-    << ";  // cfg_setup_fifo_depth and MAX_SETUP_FIFO_DEPTH\n"
-    << "localparam integer SETUP_INTERVAL = " << p.setup_interval << ";  // 0: serial setup; I: pipelined\n"
+    << "\n// rastersim_core's build parameters for the profile (manifest.json \"profile\"), each with the profile\n"
+    << "// key it comes from, and RS_CORE_PARAMETERS_PASSED, which passes them all by name.\n";
+  std::string passed;
+  const CoreParameters values = core_parameters(p);
+  for (size_t i = 0; i < values.size(); ++i) {
+    v << "localparam integer " << values[i].name << " = " << values[i].value << ";  // "
+      << core_parameter_rows()[i].keys << "\n";
+    passed += std::string(i == 0 ? "" : i % 4 == 0 ? ", \\\n  " : ", ") + "." + values[i].name + "(" + values[i].name + ")";
+  }
+  v << "`define RS_CORE_PARAMETERS_PASSED \\\n  " << passed << "\n"
+    << "// The run-time values the testbench drives (cfg_*) and its memory models take.\n"
+    << "localparam integer MEMORY_LATENCY = " << p.memory_latency << ";  // cfg_memory_latency\n"
+    << "localparam integer SETUP_FIFO_DEPTH = " << p.setup_fifo_depth << ";  // cfg_setup_fifo_depth\n"
     << "localparam integer MEMORY_STALL_PERCENT = " << p.memory_stall_percent << ";  // the memory model's back-pressure\n"
     << "localparam integer MEMORY_STALL_SEED = " << p.memory_stall_seed << ";\n"
-    << "localparam integer DEPTH_EXPONENT_BITS = " << core_parameter(p, "DEPTH_EXPONENT_BITS")
-    << ";  // 0: the fixed-point depth word; Ne: the floating-point word\n"
-    << "localparam integer DEPTH_BIAS = " << core_parameter(p, "DEPTH_BIAS") << ";  // 1: the core's depth bias stage\n"
-    << "localparam integer PIXEL_CENTER = " << core_parameter(p, "PIXEL_CENTER") << ";  // 0: pixel centres; 1: corners\n"
-    << "localparam integer FILL_RULE = " << core_parameter(p, "FILL_RULE")
-    << ";  // 0 top_left, 1 top_right, 2 bottom_left, 3 bottom_right\n"
-    << "localparam integer DEPTH_ROUNDING = " << core_parameter(p, "DEPTH_ROUNDING") << ";  // 0: nearest; 1: truncate\n"
-    << "localparam integer COLOR_ROUNDING = " << core_parameter(p, "COLOR_ROUNDING") << ";  // 0: nearest; 1: truncate\n"
-    << "localparam integer TEXTURE = " << core_parameter(p, "TEXTURE") << ";  // 1: the texture unit and texture.hex\n"
-    << "localparam integer TEXTURE_LATENCY = " << p.texture_latency
-    << ";  // cfg_texture_latency and MAX_TEXTURE_LATENCY\n"
+    << "localparam integer TEXTURE_LATENCY = " << p.texture_latency << ";  // cfg_texture_latency\n"
     << "localparam integer TEXTURE_STALL_PERCENT = " << p.texture_stall_percent << ";  // texture_refuse's pattern\n"
     << "localparam integer TEXTURE_STALL_SEED = " << p.texture_stall_seed << ";\n"
     << (k.external_memory ? "// The package tests rastersim_core with rastersim_memory_model.v on its memory port.\n"

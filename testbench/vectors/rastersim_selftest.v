@@ -91,13 +91,7 @@ module rastersim_selftest (
   wire [Z_BITS-1:0] readback_depth;
   wire [23:0] readback_rgb;
   wire trace_walker_frag_valid, trace_walker_frag_ready, trace_texture_busy, trace_texture_stall;
-  rastersim_top #(
-    .WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
-    .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MEMORY_LATENCY),
-    .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL), .TEXTURE(0), .MAX_TEXTURE_LATENCY(1),
-    .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS), .DEPTH_BIAS(DEPTH_BIAS), .PIXEL_CENTER(PIXEL_CENTER),
-    .FILL_RULE(FILL_RULE), .DEPTH_ROUNDING(DEPTH_ROUNDING), .COLOR_ROUNDING(COLOR_ROUNDING)
-  ) top (
+  rastersim_top #(`RS_CORE_PARAMETERS_PASSED) top (
     .clk(clk), .rst(rst),
     .cfg_depth_func(CFG_DEPTH_FUNC), .cfg_depth_write(CFG_DEPTH_WRITE), .cfg_depth_clear(CFG_DEPTH_CLEAR),
     .cfg_cull(CFG_CULL), .cfg_front_face(CFG_FRONT_FACE), .cfg_traversal(CFG_TRAVERSAL), .cfg_shading(CFG_SHADING),

@@ -141,14 +141,7 @@ module rastersim_vectors_tb;
   wire tex_rd_valid, tex_rd_ready;
   wire [4*18-1:0] tex_rd_addr;
   wire [4*24-1:0] tex_rd_texels;
-  rastersim_core #(
-    .WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
-    .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MEMORY_LATENCY),
-    .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL),
-    .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS), .DEPTH_BIAS(DEPTH_BIAS), .PIXEL_CENTER(PIXEL_CENTER),
-    .FILL_RULE(FILL_RULE), .DEPTH_ROUNDING(DEPTH_ROUNDING), .COLOR_ROUNDING(COLOR_ROUNDING),
-    .TEXTURE(TEXTURE), .MAX_TEXTURE_LATENCY(TEXTURE_LATENCY)
-  ) dut (
+  rastersim_core #(`RS_CORE_PARAMETERS_PASSED) dut (
     `RS_PIPELINE_PORTS,
     .mem_clear_done(mem_clear_done), .mem_rd_valid(mem_rd_valid), .mem_rd_ready(mem_rd_ready),
     .mem_rd_addr(mem_rd_addr), .mem_rd_depth(mem_rd_depth), .mem_wr_depth_en(mem_wr_depth_en),
@@ -179,14 +172,7 @@ module rastersim_vectors_tb;
     .refused_reads(refused_reads), .bad_accesses(bad_accesses));
 `else
   // rastersim_top (or a port with its parameters and ports): the frame memory on chip.
-  rastersim_top #(
-    .WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS), .Z_BITS(Z_BITS),
-    .Z_GUARD_BITS(Z_GUARD_BITS), .MAX_MEMORY_LATENCY(MEMORY_LATENCY),
-    .MAX_SETUP_FIFO_DEPTH(SETUP_FIFO_DEPTH), .SETUP_INTERVAL(SETUP_INTERVAL),
-    .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS), .DEPTH_BIAS(DEPTH_BIAS), .PIXEL_CENTER(PIXEL_CENTER),
-    .FILL_RULE(FILL_RULE), .DEPTH_ROUNDING(DEPTH_ROUNDING), .COLOR_ROUNDING(COLOR_ROUNDING),
-    .TEXTURE(TEXTURE), .MAX_TEXTURE_LATENCY(TEXTURE_LATENCY)
-  ) dut (
+  rastersim_top #(`RS_CORE_PARAMETERS_PASSED) dut (
     `RS_PIPELINE_PORTS,
     .cfg_depth_clear(CFG_DEPTH_CLEAR),
     .texture_load_en(texture_load_en), .texture_load_x(texture_load_x), .texture_load_y(texture_load_y),

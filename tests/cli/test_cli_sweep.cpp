@@ -472,8 +472,8 @@ TEST(CliSweep, HardwareCostRunsYosysOncePerProfileAndCaches) {
   EXPECT_EQ(runs, 2u) << calls;
   EXPECT_EQ(read_text(dir.root() / "yosys-calls.txt"), calls);
   for (const std::string step : {"chparam -set WIDTH 16 -set HEIGHT 8 -set SUBPIXEL_BITS 2 -set Z_BITS 16 "
-                                 "-set Z_GUARD_BITS 0 -set MAX_MEMORY_LATENCY 8 -set MAX_SETUP_FIFO_DEPTH 8 -set SETUP_INTERVAL 4 "
-                                 "-set TEXTURE 0 -set MAX_TEXTURE_LATENCY 2 -set DEPTH_EXPONENT_BITS 0 -set DEPTH_BIAS 0 "
+                                 "-set Z_GUARD_BITS 0 -set DEPTH_EXPONENT_BITS 0 -set DEPTH_BIAS 0 -set MAX_MEMORY_LATENCY 8 "
+                                 "-set MAX_SETUP_FIFO_DEPTH 8 -set SETUP_INTERVAL 4 -set TEXTURE 0 -set MAX_TEXTURE_LATENCY 2 "
                                  "-set PIXEL_CENTER 0 -set FILL_RULE 0 -set DEPTH_ROUNDING 0 -set COLOR_ROUNDING 0 "
                                  "rastersim_core",
                                  "synth -flatten -top rastersim_core", "synth_ice40 -top rastersim_core"})

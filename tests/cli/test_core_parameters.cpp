@@ -59,11 +59,11 @@ const std::vector<std::string> kUnusualFlags = {
     "--pixel-center", "corner", "--fill-rule", "bottom_left", "--depth-rounding", "truncate",
     "--color-rounding", "truncate"};
 
-// Written out by hand from rtl/rastersim_core.sv's parameter list and the rules of docs/rtl.md.
+// Written out by hand from rtl/rastersim_core_parameters.vh's list and the rules of docs/rtl.md.
 const CoreParameters kExpected = {
     {"WIDTH", 48},           {"HEIGHT", 40},         {"SUBPIXEL_BITS", 5},       {"Z_BITS", 20},
-    {"Z_GUARD_BITS", 9},     {"MAX_MEMORY_LATENCY", 5}, {"MAX_SETUP_FIFO_DEPTH", 3}, {"SETUP_INTERVAL", 8},
-    {"TEXTURE", 1},          {"MAX_TEXTURE_LATENCY", 7}, {"DEPTH_EXPONENT_BITS", 2}, {"DEPTH_BIAS", 1},
+    {"Z_GUARD_BITS", 9},     {"DEPTH_EXPONENT_BITS", 2}, {"DEPTH_BIAS", 1},      {"MAX_MEMORY_LATENCY", 5},
+    {"MAX_SETUP_FIFO_DEPTH", 3}, {"SETUP_INTERVAL", 8}, {"TEXTURE", 1},         {"MAX_TEXTURE_LATENCY", 7},
     {"PIXEL_CENTER", 1},     {"FILL_RULE", 2},           {"DEPTH_ROUNDING", 1},      {"COLOR_ROUNDING", 1}};
 
 std::vector<std::string> names_of(const CoreParameters& parameters) {
@@ -97,10 +97,10 @@ TEST(CoreParameters, ACoreRunsAProfileWhenEveryParameterFits) {
   EXPECT_EQ(core_mismatch(kExpected, p), "");
   EXPECT_EQ(core_mismatch(core_parameters(p, CoreBounds::Largest), p), "") << "larger bounds run it";
   CoreParameters other = kExpected;
-  other[7].value = 4;  // SETUP_INTERVAL
+  other[9].value = 4;  // SETUP_INTERVAL
   EXPECT_NE(core_mismatch(other, p).find("SETUP_INTERVAL is 4"), std::string::npos) << core_mismatch(other, p);
   other = kExpected;
-  other[5].value = 4;  // MAX_MEMORY_LATENCY below the profile's 5
+  other[7].value = 4;  // MAX_MEMORY_LATENCY below the profile's 5
   EXPECT_NE(core_mismatch(other, p).find("MAX_MEMORY_LATENCY"), std::string::npos);
   // Z_GUARD_BITS 0 derives the guard bits: 48 x 40 derives ceil(log2(2 * 87)) = 8, so an explicit 8
   // is the same core and 9 is not.
@@ -130,17 +130,23 @@ TEST(CoreParameters, EveryConsumerTakesTheSameList) {
   for (std::sregex_iterator it(core_file.begin(), core_file.end(), declaration), end; it != end; ++it)
     declared.push_back((*it)[1]);
   EXPECT_EQ(declared, names_of(kExpected));
-  // scripts/hw_cost.py's flags: its profile parameters, then its build options.
-  const std::string script = read_text(RASTERSIM_SOURCE_DIR "/scripts/hw_cost.py");
-  std::vector<std::string> in_script;
-  const std::regex quoted("\"([A-Z][A-Z_]+)\"");
-  for (const char* list : {"PROFILE_PARAMETERS = [", "BUILD_OPTIONS = {"}) {
-    const size_t begin = script.find(list);
-    ASSERT_NE(begin, std::string::npos) << list;
-    const std::string body = script.substr(begin, script.find_first_of("]}", begin) - begin);
-    for (std::sregex_iterator it(body.begin(), body.end(), quoted), end; it != end; ++it) in_script.push_back((*it)[1]);
+  // The RTL's one declaration (rtl/rastersim_core_parameters.vh), which rastersim_core, rastersim_top,
+  // scripts/hw_cost.py (tests/hw_cost) and the build's read-back of verilated cores take: the
+  // declarations and the pass-through list name them in the same order.
+  const std::string vh = read_text(RASTERSIM_SOURCE_DIR "/rtl/rastersim_core_parameters.vh");
+  const size_t passed_at = vh.find("`define RASTERSIM_CORE_PARAMETERS_PASSED");
+  ASSERT_NE(passed_at, std::string::npos);
+  std::vector<std::string> vh_declared, vh_passed;
+  const std::regex vh_declaration("parameter integer ([A-Z0-9_]+) = "), pass("\\.([A-Z0-9_]+)\\(([A-Z0-9_]+)\\)");
+  const std::string declarations = vh.substr(0, passed_at), passes = vh.substr(passed_at);
+  for (std::sregex_iterator it(declarations.begin(), declarations.end(), vh_declaration), end; it != end; ++it)
+    vh_declared.push_back((*it)[1]);
+  for (std::sregex_iterator it(passes.begin(), passes.end(), pass), end; it != end; ++it) {
+    EXPECT_EQ((*it)[1], (*it)[2]);
+    vh_passed.push_back((*it)[1]);
   }
-  EXPECT_EQ(in_script, names_of(kExpected));
+  EXPECT_EQ(vh_declared, names_of(kExpected));
+  EXPECT_EQ(vh_passed, names_of(kExpected));
 #ifdef RASTERSIM_HAVE_RTL
   // A vector package's manifest.
   // (vector packages are built with the RTL backend)

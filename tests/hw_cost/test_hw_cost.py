@@ -39,17 +39,16 @@ class HwCost(unittest.TestCase):
     def tearDown(self):
         shutil.rmtree(self.work)
 
-    def test_build_options_reach_the_units_that_declare_them_when_not_default(self):
-        profile = {"WIDTH": 16, "HEIGHT": 8, "SUBPIXEL_BITS": 4, "Z_BITS": 24, "Z_GUARD_BITS": 0, "MAX_MEMORY_LATENCY": 4,
-                   "MAX_SETUP_FIFO_DEPTH": 1, "SETUP_INTERVAL": 0, **hw_cost.BUILD_OPTIONS}
-        plain = hw_cost.unit_parameters("rastersim_core", profile)
-        self.assertFalse(set(hw_cost.BUILD_OPTIONS) & set(plain))  # defaults: cached keys unchanged
-        self.assertEqual(plain["SETUP_INTERVAL"], 0)
-        changed = {"TEXTURE": 1, "MAX_TEXTURE_LATENCY": 8, "DEPTH_EXPONENT_BITS": 3, "DEPTH_BIAS": 1, "PIXEL_CENTER": 1,
+    def test_every_core_parameter_reaches_the_units_that_declare_it(self):
+        defaults = hw_cost.core_parameter_defaults(hw_cost.RTL)
+        # Read from rtl/rastersim_core_parameters.vh: rastersim_core's whole list, in its order.
+        self.assertEqual(list(defaults)[:4], ["WIDTH", "HEIGHT", "SUBPIXEL_BITS", "Z_BITS"])
+        self.assertEqual(len(defaults), 16)
+        profile = {**defaults, "WIDTH": 16, "HEIGHT": 8, "MAX_MEMORY_LATENCY": 4, "MAX_SETUP_FIFO_DEPTH": 1,
+                   "TEXTURE": 1, "MAX_TEXTURE_LATENCY": 8, "DEPTH_EXPONENT_BITS": 3, "DEPTH_BIAS": 1, "PIXEL_CENTER": 1,
                    "FILL_RULE": 3, "DEPTH_ROUNDING": 1, "COLOR_ROUNDING": 1}
-        profile.update(changed)
-        core = hw_cost.unit_parameters("rastersim_core", profile)
-        self.assertEqual({k: core[k] for k in hw_cost.BUILD_OPTIONS}, changed)
+        self.assertEqual(hw_cost.unit_parameters("rastersim_core", profile), profile)
+        self.assertEqual(hw_cost.unit_parameters("rastersim_top", profile), profile)
         self.assertEqual((hw_cost.unit_parameters("triangle_setup", profile).get("PIXEL_CENTER"),
                           hw_cost.unit_parameters("triangle_setup", profile).get("FILL_RULE")), (1, 3))
         z_adder = hw_cost.unit_parameters("z_adder", profile)
