@@ -32,9 +32,10 @@ struct TextureUnitCounters {
 class TextureUnit {
  public:
   static constexpr int kDivideCycles = 29;   // take t -> u, v in the divider's output register (end of t + 29)
-  static constexpr int kReadAfterTake = 31;  // the address register at the end of t + 30; reads from t + 31
-  static constexpr int kOfferAfterData = 2;  // blend in s + Lt, modulate in s + Lt + 1, offered from s + Lt + 2
-  static_assert(kReadAfterTake == kDivideCycles + 2, "the address stage follows the divide, the read the address");
+  static constexpr int kAddressStages = 3;   // the address registers at the end of t + 32
+  static constexpr int kReadAfterTake = kDivideCycles + kAddressStages + 1;  // reads from t + 33
+  static constexpr int kFilterStages = 6;    // texels in s + Lt; the modulated colour at the end of s + Lt + 5
+  static constexpr int kOfferAfterData = kFilterStages;  // offered from s + Lt + 6
   // From take to offer without waiting, and the capacity that lets one fragment per clock through.
   static constexpr int latency(int texture_latency) { return kReadAfterTake + texture_latency + kOfferAfterData; }
   static constexpr int capacity(int texture_latency) { return latency(texture_latency) + 1; }

@@ -74,6 +74,9 @@ package rastersim_pkg;
   // cfg_texture_latency holds 1 .. 64, the largest MAX_TEXTURE_LATENCY, so that a core's ports do
   // not change with the bound.
   localparam integer TEXTURE_LATENCY_BITS = 7;
+  // The texture unit's registered stages (docs/cycle-model.md "Texture unit"): texture_address's
+  // between u, v and the read, texture_filter's between the texels and the modulated colour.
+  localparam integer TEXTURE_ADDRESS_STAGES = 3, TEXTURE_FILTER_STAGES = 6;
   /* verilator lint_on UNUSEDPARAM */
 endpackage
 

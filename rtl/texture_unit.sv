@@ -1,12 +1,13 @@
 // Texture unit (model/texture_unit.h; cycles: docs/cycle-model.md, "Texture unit"): between the
 // walker and the z-buffer in a TEXTURE build. Every fragment passes in order; a textured one
 // leaves with its texel colour modulated by its shade, an untextured one with its shade.
-//   t          take (in_valid & in_ready): the input register, at most C = Lt + 34 held
+//   t          take (in_valid & in_ready): the input register, at most C = Lt + 40 held
 //   t+1..t+29  texture_divide: u, v registered at the end of t + 29
-//   t+30       texture_address: columns, rows, weights registered
-//   s >= t+31  the pending queue's head issues its read (a textured one when the memory takes it)
-//   s+Lt       the texels arrive; texture_filter blends (registered), then modulates (s + Lt + 1)
-//   s+Lt+2     offered to the z-buffer from the output buffer (o = s + Lt + 2)
+//   t+30..t+32 texture_address (TEXTURE_ADDRESS_STAGES = 3): columns, rows, weights registered
+//   s >= t+33  the pending queue's head issues its read (a textured one when the memory takes it)
+//   s+Lt       the texels arrive; texture_filter (TEXTURE_FILTER_STAGES = 6) registers the modulated
+//              colour at the end of s + Lt + 5
+//   s+Lt+6     offered to the z-buffer from the output buffer (o = s + Lt + 6)
 // The divider and the address stage never stall: the capacity leaves room in the pending queue and
 // the output buffer, which bypass their storage when empty.
 // Memory port contract (rtl/texture_memory.sv): a read taken in c (rd_valid & rd_ready) returns
@@ -64,11 +65,15 @@ module texture_unit `RS_IMPORT #(
   localparam integer FRAG_BITS = 1 + 24 + Z_BITS + Y_BITS + X_BITS;
   // A looked-up fragment: the fragment, then {x0, x1, y0, y1, wx, wy} from the address stage.
   localparam integer LOOKUP_BITS = FRAG_BITS + 56;
-  localparam integer MAX_CAPACITY = MAX_TEXTURE_LATENCY + 34;
+  localparam integer ADDRESS_STAGES = rastersim_pkg::TEXTURE_ADDRESS_STAGES;
+  localparam integer FILTER_STAGES = rastersim_pkg::TEXTURE_FILTER_STAGES;
+  // The capacity beyond Lt: take to offer without waiting is 30 + ADDRESS_STAGES + Lt + FILTER_STAGES.
+  localparam integer CAPACITY_BEYOND_LATENCY = 31 + ADDRESS_STAGES + FILTER_STAGES;
+  localparam integer MAX_CAPACITY = MAX_TEXTURE_LATENCY + CAPACITY_BEYOND_LATENCY;
   localparam integer COUNT_BITS = $clog2(MAX_CAPACITY + 1);
 
-  // ---- Take: while fewer than C = Lt + 34 fragments are held at the cycle's start ----
-  wire [COUNT_BITS:0] capacity = (COUNT_BITS+1)'(cfg_texture_latency) + (COUNT_BITS+1)'(34);
+  // ---- Take: while fewer than C = Lt + 40 fragments are held at the cycle's start ----
+  wire [COUNT_BITS:0] capacity = (COUNT_BITS+1)'(cfg_texture_latency) + (COUNT_BITS+1)'(CAPACITY_BEYOND_LATENCY);
   reg [COUNT_BITS-1:0] held_q;
   assign in_ready = {1'b0, held_q} < capacity;
   wire take = in_valid && in_ready;
@@ -105,30 +110,34 @@ module texture_unit `RS_IMPORT #(
     .clk(clk), .rst(rst), .push(taken_q), .push_data(taken_frag_q), .pop(divided),
     .empty(beside_empty_unused), .head(divided_frag));
 
-  // ---- Address (the end of t + 30) ----
+  // ---- Address (the end of t + 32): the fragments beside it in a delay line ----
   wire [9:0] x0, x1, y0, y1;
   wire [7:0] wx, wy;
   texture_address address (
     .clk(clk), .u(u), .v(v), .cfg_log2_width(cfg_log2_width), .cfg_log2_height(cfg_log2_height),
     .cfg_bilinear(cfg_bilinear), .cfg_clamp(cfg_clamp),
     .x0_q(x0), .x1_q(x1), .y0_q(y0), .y1_q(y1), .wx_q(wx), .wy_q(wy));
-  reg addressed_q;
-  reg [FRAG_BITS-1:0] addressed_frag_q;
+  reg [ADDRESS_STAGES-1:0] addressing_q;  // stage k's valid at bit k
+  reg [FRAG_BITS-1:0] addressing_frag_q [0:ADDRESS_STAGES-1];
+  integer a;
   always @(posedge clk) begin
-    addressed_q <= divided && !rst;
-    addressed_frag_q <= divided_frag;
+    addressing_q <= rst ? {ADDRESS_STAGES{1'b0}} : {addressing_q[ADDRESS_STAGES-2:0], divided};
+    addressing_frag_q[0] <= divided_frag;
+    for (a = 1; a < ADDRESS_STAGES; a = a + 1) addressing_frag_q[a] <= addressing_frag_q[a-1];
   end
+  wire addressed_valid = addressing_q[ADDRESS_STAGES-1];
+  wire [FRAG_BITS-1:0] addressed_frag = addressing_frag_q[ADDRESS_STAGES-1];
 
   // ---- Read: the pending queue's head, in order; untextured fragments issue without a read ----
-  wire [LOOKUP_BITS-1:0] addressed = {addressed_frag_q, x0, x1, y0, y1, wx, wy};
+  wire [LOOKUP_BITS-1:0] addressed = {addressed_frag, x0, x1, y0, y1, wx, wy};
   wire pending_empty;
   wire [LOOKUP_BITS-1:0] pending_head;
-  wire head_valid = addressed_q || !pending_empty;
+  wire head_valid = addressed_valid || !pending_empty;
   wire [LOOKUP_BITS-1:0] head = pending_empty ? addressed : pending_head;
   wire head_textured = head[LOOKUP_BITS-1];
   wire issue = head_valid && (!head_textured || tex_rd_ready);
   setup_fifo #(.RECORD_BITS(LOOKUP_BITS), .ENTRIES(MAX_CAPACITY)) pending (
-    .clk(clk), .rst(rst), .push(addressed_q && !(pending_empty && issue)), .push_data(addressed),
+    .clk(clk), .rst(rst), .push(addressed_valid && !(pending_empty && issue)), .push_data(addressed),
     .pop(!pending_empty && issue), .empty(pending_empty), .head(pending_head));
   assign tex_rd_valid = head_valid && head_textured;
   assign stall = tex_rd_valid && !tex_rd_ready;
@@ -175,30 +184,32 @@ module texture_unit `RS_IMPORT #(
   wire [23:0] texel11 = tex_rd_texels[24*{py[0], px[0]} +: 24];
   wire [FRAG_BITS-1:0] arrival_frag = arrival[FLIGHT_BITS-1 -: FRAG_BITS];
 
-  // ---- Blend (the end of s + Lt) and modulate (s + Lt + 1) ----
+  // ---- Filter (the end of s + Lt .. s + Lt + 5): the fragments beside it in a delay line ----
   wire [23:0] modulated;
   texture_filter filter (
     .clk(clk), .texel00(texel00), .texel10(texel10), .texel01(texel01), .texel11(texel11),
     .wx(arrival[19:12]), .wy(arrival[11:4]), .shade(arrival_frag[FRAG_BITS-2 -: 24]), .rgb_q(modulated));
-  reg blended_q, modulated_q;
-  reg [FRAG_BITS-1:0] blended_frag_q, modulated_frag_q;
+  reg [FILTER_STAGES-1:0] filtering_q;
+  reg [FRAG_BITS-1:0] filtering_frag_q [0:FILTER_STAGES-1];
+  integer f;
   always @(posedge clk) begin
-    blended_q <= arriving && !rst;
-    modulated_q <= blended_q && !rst;
-    blended_frag_q <= arrival_frag;
-    modulated_frag_q <= blended_frag_q;
+    filtering_q <= rst ? {FILTER_STAGES{1'b0}} : {filtering_q[FILTER_STAGES-2:0], arriving};
+    filtering_frag_q[0] <= arrival_frag;
+    for (f = 1; f < FILTER_STAGES; f = f + 1) filtering_frag_q[f] <= filtering_frag_q[f-1];
   end
+  wire modulated_valid = filtering_q[FILTER_STAGES-1];
+  wire [FRAG_BITS-1:0] modulated_frag = filtering_frag_q[FILTER_STAGES-1];
   // The fragment as it leaves: the modulated colour in place of a textured fragment's shade.
-  wire [FRAG_BITS-2:0] finished = modulated_frag_q[FRAG_BITS-1]
-      ? {modulated, modulated_frag_q[FRAG_BITS-26:0]} : modulated_frag_q[FRAG_BITS-2:0];
+  wire [FRAG_BITS-2:0] finished = modulated_frag[FRAG_BITS-1]
+      ? {modulated, modulated_frag[FRAG_BITS-26:0]} : modulated_frag[FRAG_BITS-2:0];
 
-  // ---- Output buffer (offered from s + Lt + 2) ----
+  // ---- Output buffer (offered from s + Lt + 6) ----
   wire output_empty;
   wire [FRAG_BITS-2:0] output_head;
   setup_fifo #(.RECORD_BITS(FRAG_BITS - 1), .ENTRIES(MAX_CAPACITY)) output_buffer (
-    .clk(clk), .rst(rst), .push(modulated_q && !(output_empty && out_ready)), .push_data(finished),
+    .clk(clk), .rst(rst), .push(modulated_valid && !(output_empty && out_ready)), .push_data(finished),
     .pop(!output_empty && out_ready), .empty(output_empty), .head(output_head));
-  assign out_valid = modulated_q || !output_empty;
+  assign out_valid = modulated_valid || !output_empty;
   wire [FRAG_BITS-2:0] offered = output_empty ? finished : output_head;
   assign {out_rgb, out_z, out_y, out_x} = offered;
 

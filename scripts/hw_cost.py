@@ -44,8 +44,8 @@ UNITS = {
     "zbuffer": "z-buffer control and in-flight ring; frame memory outside (memory port)",
     "zbuffer_memory": "frame memory on chip (depth/colour words; written bitmaps; read-back)",
     "texture_divide": "texture unit's perspective divide: u, v from S, T, Q (29 stages, one fragment per clock)",
-    "texture_address": "texture unit's address stage: texel columns, rows and bilinear weights from u, v",
-    "texture_filter": "texture unit's blend and modulate stages (3 channels)",
+    "texture_address": "texture unit's address stages (3): texel columns, rows and bilinear weights from u, v",
+    "texture_filter": "texture unit's filter stages (6): blend and modulate, 3 channels",
     "rastersim_core": "TOP WITHOUT FRAME MEMORY: setup + walker + Z adder + z-buffer; "
                       "memory port to an external SRAM",
     "rastersim_top": "TOP WITH FRAME MEMORY ON CHIP: rastersim_core + zbuffer_memory",

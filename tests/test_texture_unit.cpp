@@ -51,7 +51,7 @@ Profile small_profile() {
   return p;
 }
 
-// Without back-pressure every fragment reaches the z-buffer Lt + 33 cycles after the walker offered
+// Without back-pressure every fragment reaches the z-buffer Lt + 39 cycles after the walker offered
 // it, one per clock: the frame is longer by that and by the setup's texture planes, nothing else.
 TEST(TextureUnit, UnstalledStreamIsDelayedByItsLatencyOnly) {
   for (int interval : {0, 4}) {
@@ -77,9 +77,9 @@ TEST(TextureUnit, UnstalledStreamIsDelayedByItsLatencyOnly) {
       for (size_t i = 0; i < a.fragments.size(); ++i) {
         ASSERT_EQ(b.fragments[i].x, a.fragments[i].x);
         ASSERT_EQ(b.fragments[i].z, a.fragments[i].z);
-        ASSERT_EQ(b.fragments[i].cycle, a.fragments[i].cycle + setup_delta + latency + 33) << "fragment " << i;
+        ASSERT_EQ(b.fragments[i].cycle, a.fragments[i].cycle + setup_delta + latency + 39) << "fragment " << i;
       }
-      EXPECT_EQ(b.stats.cycles, a.stats.cycles + setup_delta + latency + 33);
+      EXPECT_EQ(b.stats.cycles, a.stats.cycles + setup_delta + latency + 39);
       EXPECT_EQ(b.stats.walker.stall, 0);
       EXPECT_EQ(b.stats.texture.stall, 0);
       // Busy from the first take to the last z-buffer take, without a gap.
@@ -99,7 +99,7 @@ TEST(TextureUnit, UntexturedFragmentsTakeTheSamePath) {
     EXPECT_FALSE(b.fragments[i].textured);
     ASSERT_EQ(b.fragments[i].color, a.fragments[i].color);
     const int64_t setup_delta = setup_timing(textured).drawn_latency - setup_timing(plain).drawn_latency;
-    ASSERT_EQ(b.fragments[i].cycle, a.fragments[i].cycle + setup_delta + textured.texture_latency + 33);
+    ASSERT_EQ(b.fragments[i].cycle, a.fragments[i].cycle + setup_delta + textured.texture_latency + 39);
   }
 }
 

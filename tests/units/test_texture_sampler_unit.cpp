@@ -1,15 +1,18 @@
 // Unit tests: the verilated texture sampler stages alone against the model's sampler
-// (model/texture_sampler.h). texture_address: every texture size, filter and wrap mode on random
-// coordinates over the whole s8.20 range and around every texel edge and centre of small
-// textures, the columns, rows and weights one rising edge later. texture_filter: random texels,
-// weights and shades, and every weight pair at the ends, the blend and modulation two rising edges
-// later; the modulation alone on all 65,536 texel and shade pairs.
+// (model/texture_sampler.h), at the texture unit's stage counts (model/texture_unit.h, docs/
+// cycle-model.md "Texture unit"). texture_address: every texture size, filter and wrap mode (held
+// for a batch of lookups, as the frame holds them) on random coordinates over the whole s8.20
+// range and around every texel edge and centre of small textures, a lookup presented every clock,
+// the columns, rows and weights three rising edges later. texture_filter: random texels, weights
+// and shades, and every weight pair at the ends, the blend and modulation six rising edges later;
+// the modulation alone on all 65,536 texel and shade pairs.
 #include <gtest/gtest.h>
 
 #include <deque>
 #include <random>
 
 #include "model/texture_sampler.h"
+#include "model/texture_unit.h"
 #include "testbench/units/unit_harness.h"
 #include "unit_configs.h"
 
@@ -33,30 +36,46 @@ TEST(TextureSamplerUnit, AddressStageEqualsTheModel) {
     const int64_t texel = int64_t(1) << (kUvFracBits - log2_size), halves = int64_t(6) << log2_size;
     return int32_t(uniform(-halves, halves) * (texel / 2) + uniform(-2, 2));
   };
-  for (int n = 0; n < 300000; ++n) {
-    AddressCase c;
-    c.lw = int(uniform(0, kMaxTextureLog2)), c.lh = int(uniform(0, kMaxTextureLog2));
-    c.u = coordinate(c.lw), c.v = coordinate(c.lh);
-    c.bilinear = uniform(0, 1) != 0, c.clamp = uniform(0, 1) != 0;
-    unit->u = uint32_t(c.u) & 0xFFFFFFFu;
-    unit->v = uint32_t(c.v) & 0xFFFFFFFu;
-    unit->cfg_log2_width = uint8_t(c.lw), unit->cfg_log2_height = uint8_t(c.lh);
-    unit->cfg_bilinear = c.bilinear, unit->cfg_clamp = c.clamp;
+  constexpr int kStages = TextureUnit::kAddressStages;
+  int64_t checked = 0;
+  for (int batch = 0; batch < 600; ++batch) {
+    // One configuration for the batch: the unit registers what it derives from it first.
+    const int lw = int(uniform(0, kMaxTextureLog2)), lh = int(uniform(0, kMaxTextureLog2));
+    const bool bilinear = uniform(0, 1) != 0, clamp = uniform(0, 1) != 0;
+    unit->cfg_log2_width = uint8_t(lw), unit->cfg_log2_height = uint8_t(lh);
+    unit->cfg_bilinear = bilinear, unit->cfg_clamp = clamp;
     unit.tick();
-    unit.settle();
-    const TextureFilter filter = c.bilinear ? TextureFilter::Bilinear : TextureFilter::Nearest;
-    const TextureWrap wrap = c.clamp ? TextureWrap::Clamp : TextureWrap::Repeat;
-    const AxisTexels x = axis_texels(c.u, c.lw, filter, wrap), y = axis_texels(c.v, c.lh, filter, wrap);
-    const std::string where = "u " + std::to_string(c.u) + " v " + std::to_string(c.v) + " sizes 2^" +
-                              std::to_string(c.lw) + " 2^" + std::to_string(c.lh) + (c.bilinear ? " bilinear" : " nearest") +
-                              (c.clamp ? " clamp" : " repeat");
-    ASSERT_EQ(int(unit->x0_q), x.first) << where;
-    ASSERT_EQ(int(unit->x1_q), x.second) << where;
-    ASSERT_EQ(int(unit->wx_q), x.weight) << where;
-    ASSERT_EQ(int(unit->y0_q), y.first) << where;
-    ASSERT_EQ(int(unit->y1_q), y.second) << where;
-    ASSERT_EQ(int(unit->wy_q), y.weight) << where;
+    std::deque<AddressCase> pending;  // presented, not yet out
+    constexpr int kLookups = 500;
+    for (int n = 0; n < kLookups + kStages; ++n) {
+      unit.settle();
+      if (!pending.empty() && (int(pending.size()) == kStages || n >= kLookups)) {  // then the last ones out
+        const AddressCase c = pending.front();
+        pending.pop_front();
+        const TextureFilter filter = c.bilinear ? TextureFilter::Bilinear : TextureFilter::Nearest;
+        const TextureWrap wrap = c.clamp ? TextureWrap::Clamp : TextureWrap::Repeat;
+        const AxisTexels x = axis_texels(c.u, c.lw, filter, wrap), y = axis_texels(c.v, c.lh, filter, wrap);
+        const std::string where = "u " + std::to_string(c.u) + " v " + std::to_string(c.v) + " sizes 2^" +
+                                  std::to_string(c.lw) + " 2^" + std::to_string(c.lh) +
+                                  (c.bilinear ? " bilinear" : " nearest") + (c.clamp ? " clamp" : " repeat");
+        ASSERT_EQ(int(unit->x0_q), x.first) << where;
+        ASSERT_EQ(int(unit->x1_q), x.second) << where;
+        ASSERT_EQ(int(unit->wx_q), x.weight) << where;
+        ASSERT_EQ(int(unit->y0_q), y.first) << where;
+        ASSERT_EQ(int(unit->y1_q), y.second) << where;
+        ASSERT_EQ(int(unit->wy_q), y.weight) << where;
+        ++checked;
+      }
+      if (n < kLookups) {
+        AddressCase c{coordinate(lw), coordinate(lh), lw, lh, bilinear, clamp};
+        unit->u = uint32_t(c.u) & 0xFFFFFFFu;
+        unit->v = uint32_t(c.v) & 0xFFFFFFFu;
+        pending.push_back(c);
+      }
+      unit.tick();
+    }
   }
+  EXPECT_EQ(checked, 300000);
 }
 
 struct FilterCase {
@@ -74,9 +93,9 @@ TEST(TextureSamplerUnit, FilterStagesEqualTheModel) {
   std::deque<FilterCase> pending;  // presented, not yet out
   auto weight = [&]() { return int(uniform(0, 3) == 0 ? (uniform(0, 1) ? 0 : 255) : uniform(0, 255)); };
   int64_t checked = 0;
-  for (int n = 0; n < 200000 + 2; ++n) {
+  for (int n = 0; n < 200000 + TextureUnit::kFilterStages; ++n) {
     unit.settle();
-    if (pending.size() == 2) {
+    if (int(pending.size()) == TextureUnit::kFilterStages) {
       const FilterCase c = pending.front();
       pending.pop_front();
       auto channel = [&](int shift) {
@@ -105,8 +124,7 @@ TEST(TextureSamplerUnit, FilterStagesEqualTheModel) {
       const uint32_t texel = uint32_t(t * 0x010101), shade = uint32_t(g * 0x010101);
       unit->texel00 = unit->texel10 = unit->texel01 = unit->texel11 = texel;
       unit->wx = uint8_t(g), unit->wy = uint8_t(255 - g), unit->shade = shade;
-      unit.tick();
-      unit.tick();
+      for (int k = 0; k < TextureUnit::kFilterStages; ++k) unit.tick();
       unit.settle();
       ASSERT_EQ(unpack(uint32_t(unit->rgb_q)).g, modulate_channel(t, g)) << "texel " << t << " shade " << g;
     }

@@ -74,7 +74,7 @@ localparam integer TRIANGLES = 169;  // commands.hex, triangles.hex
 localparam integer DRAWN = 37;  // setup.hex
 localparam integer FRAGMENTS = 422;  // fragments.hex
 localparam integer WORDS = 768;  // depth.hex, color.hex: WIDTH * HEIGHT
-localparam integer CYCLES = 1227;  // the frame's cycles (frame.hex)
+localparam integer CYCLES = 1229;  // the frame's cycles (frame.hex)
 localparam integer TEXELS = 65536;  // texture.hex (TEXTURE 1): 2^CFG_TEXTURE_LOG2_WIDTH x 2^CFG_TEXTURE_LOG2_HEIGHT
 
 // Word layouts: each field's slot (lowest bit, slot bits), own width and signedness.
