@@ -8,7 +8,7 @@
 //   s+Lt       the texels arrive; texture_filter (TEXTURE_FILTER_STAGES = 6) registers the modulated
 //              colour at the end of s + Lt + 5
 //   s+Lt+6     offered to the z-buffer from the output buffer (o = s + Lt + 6)
-// The divider and the address stage never stall: the capacity leaves room in the pending queue and
+// The divider and the address stages never stall: the capacity leaves room in the pending queue and
 // the output buffer, which bypass their storage when empty.
 // Memory port contract (rtl/texture_memory.sv): a read taken in c (rd_valid & rd_ready) returns
 // bank b's texel on rd_texels[24 b +: 24] in c + Lt; bank 2 (j mod 2) + (i mod 2) holds column i,

@@ -7,12 +7,8 @@ rtl="$root/rtl"
 sources=("$rtl"/*.sv)
 status=0
 pipelined_interval='-GSETUP_INTERVAL=[1-9]'
-# Whether module $1 declares parameter $2 (rastersim_core and rastersim_top take the core's list
-# from rastersim_core_parameters.vh).
-declares() {
-  grep -q "parameter integer $2\b" "$rtl/$1.sv" ||
-    { grep -q '`RASTERSIM_CORE_PARAMETERS\b' "$rtl/$1.sv" && grep -q "parameter integer $2\b" "$rtl/rastersim_core_parameters.vh"; }
-}
+# shellcheck source=scripts/rtl-declares.sh
+source "$root/scripts/rtl-declares.sh"
 for params in "" "-GWIDTH=16 -GHEIGHT=8 -GSUBPIXEL_BITS=2 -GZ_BITS=16 -GMAX_MEMORY_LATENCY=4" \
               "-GSETUP_INTERVAL=2" "-GWIDTH=16 -GHEIGHT=8 -GSUBPIXEL_BITS=2 -GZ_BITS=16 -GSETUP_INTERVAL=5" \
               "-GSETUP_INTERVAL=64" "-GTEXTURE=1" \
@@ -31,7 +27,7 @@ for params in "" "-GWIDTH=16 -GHEIGHT=8 -GSUBPIXEL_BITS=2 -GZ_BITS=16 -GMAX_MEMO
     for p in $params; do
       name="${p#-G}"; name="${name%%=*}"
       # Only the parameters the unit declares.
-      if declares "$top" "$name"; then unit_params+=" $p"; fi
+      if rtl_declares "$rtl" "$top" "$name"; then unit_params+=" $p"; fi
     done
     # shellcheck disable=SC2086
     if ! out=$(verilator --lint-only -Wall -I"$rtl" "$rtl/lint_waivers.vlt" "${sources[@]}" --top-module "$top" $unit_params 2>&1); then

@@ -6,6 +6,8 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 rtl="$root/rtl"
+# shellcheck source=scripts/rtl-declares.sh
+source "$root/scripts/rtl-declares.sh"
 units=("$@")
 [ ${#units[@]} -eq 0 ] && units=(plane_register triangle_setup setup_fifo scanline_walker z_adder zbuffer zbuffer_memory rastersim_top)
 declare -A values=([WIDTH]=16 [HEIGHT]=8 [SUBPIXEL_BITS]=2 [Z_BITS]=16 [MAX_MEMORY_LATENCY]=4 [MAX_SETUP_FIFO_DEPTH]=2)
@@ -14,11 +16,7 @@ for unit in "${units[@]}"; do
   top="${unit%%@*}"
   chparam=""
   for name in "${!values[@]}"; do
-    if grep -q "parameter integer $name\b" "$rtl/$top.sv" ||
-       { grep -q '`RASTERSIM_CORE_PARAMETERS\b' "$rtl/$top.sv" &&
-         grep -q "parameter integer $name\b" "$rtl/rastersim_core_parameters.vh"; }; then
-      chparam+=" -set $name ${values[$name]}"
-    fi
+    if rtl_declares "$rtl" "$top" "$name"; then chparam+=" -set $name ${values[$name]}"; fi
   done
   if [ "$unit" != "$top" ]; then
     IFS=',' read -r -a extra <<< "${unit#*@}"

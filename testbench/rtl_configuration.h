@@ -3,8 +3,8 @@
 // built configurations (rtl_configs.cpp) and by a module built on demand (testbench/ondemand/).
 #pragma once
 
-#include "testbench/built_parameters.h"
 #include "model/widths.h"
+#include "testbench/built_parameters.h"
 #include "testbench/rtl_harness.h"
 
 namespace rastersim::rtl::detail {

@@ -10,7 +10,6 @@
 namespace rastersim::vectors {
 namespace {
 
-
 std::string bits_literal(int bits, int64_t value) {
   std::ostringstream s;
   s << bits << "'d" << value;
