@@ -20,7 +20,8 @@ Pipeline::Pipeline(const Profile& profile)
       adders_(setup_.widths(), profile),
       zbuffer_(profile),
       texture_unit_(profile),
-      credit_release_(size_t(profile.setup_fifo_depth), -1) {
+      credit_release_(size_t(profile.setup_fifo_depth), -1),
+      record_ready_after_(profile.depth_biased() ? DepthOutput::kBiasStages : 1) {
   if (registered_walk_runner_choice) walk_runner_ = registered_walk_runner_choice(*this);
 }
 
@@ -96,9 +97,10 @@ void Pipeline::submit(const SnappedTriangle& tri) {
   } else {
     ++stats_.triangles_drawn;
     // The record goes into the record FIFO (as the walker's entry) and is at its head in the next
-    // cycle; the walker takes it once the records before it are taken, as early as in the cycle of
-    // the previous triangle's last candidate.
-    record.walker_load = std::max(record.setup_done + 1, walker_free_);
+    // cycle, or with a depth bias ready once the bias unit's last stage has its bias; the walker
+    // takes it once the records before it are taken, as early as in the cycle of the previous
+    // triangle's last candidate.
+    record.walker_load = std::max(record.setup_done + record_ready_after_, walker_free_);
     walker_idle_load_ = record.walker_load > walker_free_;
     credit_release_[credit_slot_] = record.walker_load;
     credit_slot_ = credit_slot_ + 1 == credit_release_.size() ? 0 : credit_slot_ + 1;

@@ -267,6 +267,9 @@ class Pipeline {
   // a record credit from its accept to its load, and the setup unit accepts only with a free credit.
   std::vector<int64_t> credit_release_;
   size_t credit_slot_ = 0;       // the ring's entry of the next drawn triangle (drawn so far, modulo its size)
+  // setup_done to the cycle a record is ready for the walker: 1 (the FIFO's head), or the bias
+  // unit's stages with a depth bias (docs/cycle-model.md, "Depth bias").
+  int64_t record_ready_after_ = 1;
   int64_t walker_free_ = -1;     // first cycle the walker can load: the last drawn triangle's walker_end
   bool walker_idle_load_ = true;  // the walker loads the current record in a cycle of its own
   int64_t last_busy_ = -1;       // last cycle any unit was busy

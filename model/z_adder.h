@@ -89,6 +89,10 @@ class DepthWord {
 // (docs/arithmetic.md section 6). Logic between the register and the fragment, no cycles.
 class DepthOutput {
  public:
+  // The bias unit (rtl/depth_bias.sv) forms B from a record in 7 stages, the record's setup_done
+  // the first, and a record is ready for the walker once its B is (docs/cycle-model.md).
+  static constexpr int kBiasStages = 7;
+
   DepthOutput(const PlaneFormat& plane, const Profile& p)
       : plane_(plane), word_(p), constant_(p.depth_bias_constant), slope_factor_(p.depth_bias_slope) {}
 

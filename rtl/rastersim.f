@@ -5,6 +5,7 @@
 // rastersim_widths.vh as hiding themselves (rtl/lint_waivers.vlt covers the order below).
 +incdir+.
 rastersim_pkg.sv
+depth_bias.sv
 plane_register.sv
 rastersim_core.sv
 rastersim_top.sv

@@ -249,7 +249,7 @@ module rastersim_core `RS_IMPORT #(`RASTERSIM_CORE_PARAMETERS) (
     .record(setup_record[WALKER_RECORD_BITS-1:0]), .entry(setup_entry));
   wire fifo_empty;
   wire [FIFO_BITS-1:0] fifo_head;
-  wire walker_ready;
+  wire walker_ready, walker_load;
   wire [FIFO_BITS-1:0] fifo_push_data;
   wire [TEXTURE_RECORD_BITS-1:0] head_texture;
   generate
@@ -266,8 +266,32 @@ module rastersim_core `RS_IMPORT #(`RASTERSIM_CORE_PARAMETERS) (
   endgenerate
   setup_fifo #(.RECORD_BITS(FIFO_BITS), .ENTRIES(MAX_SETUP_FIFO_DEPTH)) record_fifo (
     .clk(clk), .rst(rst), .push(setup_valid), .push_data(fifo_push_data),
-    .pop(!fifo_empty && walker_ready), .empty(fifo_empty), .head(fifo_head));
-  assign trace_walker_load = !fifo_empty && walker_ready;
+    .pop(walker_load), .empty(fifo_empty), .head(fifo_head));
+
+  // With DEPTH_BIAS a record is ready for the walker once the bias unit has its bias
+  // (docs/cycle-model.md, "Depth bias"); else as it reaches the FIFO's head.
+  wire record_ready;
+  wire [Z_REG_BITS:0] head_bias;
+  generate
+    if (DEPTH_BIAS != 0) begin : biasing
+      wire bias_ready;
+      depth_bias #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS),
+                   .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS), .MAX_SETUP_FIFO_DEPTH(MAX_SETUP_FIFO_DEPTH)) bias_unit (
+        .clk(clk), .rst(rst), .cfg_depth_bias_constant(depth_bias_constant_q), .cfg_depth_bias_slope(depth_bias_slope_q),
+        .in_valid(setup_valid), .in_step_x(setup_record[LSB_DEPTH_STEP_X +: Z_REG_BITS]),
+        .in_step_y(setup_record[LSB_DEPTH_STEP_Y +: Z_REG_BITS]), .pop(walker_load), .ready(bias_ready),
+        .bias(head_bias));
+      assign record_ready = !fifo_empty && bias_ready;
+    end else begin : no_bias
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire bias_config_unused = ^depth_bias_constant_q ^ ^depth_bias_slope_q;
+      /* verilator lint_on UNUSEDSIGNAL */
+      assign record_ready = !fifo_empty;
+      assign head_bias = {(Z_REG_BITS+1){1'b0}};
+    end
+  endgenerate
+  assign walker_load = record_ready && walker_ready;
+  assign trace_walker_load = walker_load;
   // A plane field of the record at LSB is at PLANES_AT + LSB of the head (the walker part's place
   // holds the entry).
   localparam integer PLANES_AT = ENTRY_BITS - WALKER_RECORD_BITS;
@@ -337,7 +361,7 @@ module rastersim_core `RS_IMPORT #(`RASTERSIM_CORE_PARAMETERS) (
 
   scanline_walker #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS)) walker (
     .clk(clk), .rst(rst), .cfg_traversal(traversal_q),
-    .in_valid(!fifo_empty), .in_ready(walker_ready),
+    .in_valid(record_ready), .in_ready(walker_ready),
     .in_entry(fifo_head[ENTRY_BITS-1:0]),
     .adder_load(adder_load), .adder_step_x(adder_step_x), .adder_next_row(adder_next_row),
     .adder_row_enter(adder_row_enter), .adder_enter_left(adder_enter_left), .adder_enter_slot(adder_enter_slot),
@@ -348,8 +372,7 @@ module rastersim_core `RS_IMPORT #(`RASTERSIM_CORE_PARAMETERS) (
   z_adder #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS), .TEXTURE(TEXTURE),
             .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS), .DEPTH_BIAS(DEPTH_BIAS), .DEPTH_ROUNDING(DEPTH_ROUNDING),
             .COLOR_ROUNDING(COLOR_ROUNDING)) adders (
-    .clk(clk), .cfg_shading(shading_q), .cfg_depth_bias_constant(depth_bias_constant_q),
-    .cfg_depth_bias_slope(depth_bias_slope_q), .load(adder_load), .step_x(adder_step_x),
+    .clk(clk), .cfg_shading(shading_q), .load(adder_load), .depth_bias(head_bias), .step_x(adder_step_x),
     .next_row(adder_next_row), .row_enter(adder_row_enter), .enter_left(adder_enter_left),
     .enter_slot(adder_enter_slot), .left_carry(adder_left_carry),
     .depth_start(fifo_head[PLANES_AT + LSB_DEPTH_START +: Z_REG_BITS]), .depth_step_x(fifo_head[PLANES_AT + LSB_DEPTH_STEP_X +: Z_REG_BITS]),

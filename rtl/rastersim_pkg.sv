@@ -77,6 +77,8 @@ package rastersim_pkg;
   // The texture unit's registered stages (docs/cycle-model.md "Texture unit"): texture_address's
   // between u, v and the read, texture_filter's between the texels and the modulated colour.
   localparam integer TEXTURE_ADDRESS_STAGES = 3, TEXTURE_FILTER_STAGES = 6;
+  // The bias unit's stages (depth_bias.sv; model DepthOutput::kBiasStages).
+  localparam integer DEPTH_BIAS_STAGES = 7;
   /* verilator lint_on UNUSEDPARAM */
 endpackage
 

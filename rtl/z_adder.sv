@@ -3,9 +3,10 @@
 // Depth registers are s(Np+1).F, colour registers s9.F (F = guard bits), all wrapping. With TEXTURE
 // the S, T, Q plane registers too (s9.(P+Ft), docs/arithmetic.md section 5), for the texture unit.
 // The depth output stage (model/z_adder.h DepthOutput, docs/arithmetic.md section 6): with
-// DEPTH_BIAS the triangle's bias, computed at the load from the record's depth steps (the one
-// product), added before the rounding; with DEPTH_EXPONENT_BITS >= 2 the output encoded as the
-// floating-point depth word. Logic between the register and the fragment: no cycles.
+// DEPTH_BIAS the triangle's bias, taken at the load from the bias unit (depth_bias.sv, which forms
+// it from the record's depth steps), added before the rounding; with DEPTH_EXPONENT_BITS >= 2 the
+// output encoded as the floating-point depth word. Logic between the register and the fragment:
+// no cycles.
 `include "rastersim_pkg.sv"
 module z_adder `RS_IMPORT #(
   parameter integer WIDTH = 640,
@@ -20,9 +21,9 @@ module z_adder `RS_IMPORT #(
 ) (
   input  wire clk,
   input  wire cfg_shading,  // rastersim_pkg::SHADING_*; flat: the provoking vertex colour
-  input  wire [rastersim_pkg::DEPTH_BIAS_CONSTANT_BITS-1:0] cfg_depth_bias_constant,  // c, two's complement, |c| < 2^Np (DEPTH_BIAS)
-  input  wire [rastersim_pkg::DEPTH_BIAS_SLOPE_BITS-1:0] cfg_depth_bias_slope,      // f, s4.4
   input  wire load,
+  // The loaded triangle's bias B in [-2^(Np+F), 2^(Np+F)] (depth_bias.sv; DEPTH_BIAS only).
+  input  wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)+1:0] depth_bias,
   input  wire step_x,
   input  wire next_row,
   input  wire row_enter,
@@ -76,21 +77,8 @@ module z_adder `RS_IMPORT #(
   wire [NP-1:0] depth_x;
   generate
     if (DEPTH_BIAS != 0) begin : bias
-      // B = clamp(c 2^F + floor(f max(|step_x|, |step_y|) / 16), -2^(Np+F), 2^(Np+F)), taken at the
-      // load from the record's steps (s(Np+1).F; |-2^(Np+F)| fits the unsigned magnitude).
-      // The sum's width: |f slope| <= 2^(Np+F+7), and the 33-bit c shifted by F.
-      localparam integer PB = Z_REG_BITS + 10 > 34 + F ? Z_REG_BITS + 10 : 34 + F;
-      wire [Z_REG_BITS-1:0] magnitude_x = depth_step_x[Z_REG_BITS-1] ? -depth_step_x : depth_step_x;
-      wire [Z_REG_BITS-1:0] magnitude_y = depth_step_y[Z_REG_BITS-1] ? -depth_step_y : depth_step_y;
-      wire [Z_REG_BITS-1:0] slope = magnitude_x > magnitude_y ? magnitude_x : magnitude_y;
-      wire signed [PB-1:0] product = $signed({{(PB-8){cfg_depth_bias_slope[7]}}, cfg_depth_bias_slope}) *
-                                     $signed({{(PB-Z_REG_BITS){1'b0}}, slope});
-      wire signed [PB-1:0] constant_part = $signed({{(PB-33-F){cfg_depth_bias_constant[32]}}, cfg_depth_bias_constant, {F{1'b0}}});
-      wire signed [PB-1:0] unclamped = constant_part + (product >>> 4);
-      wire signed [PB-1:0] limit = $signed({{(PB-Z_REG_BITS){1'b0}}, 1'b1, {(Z_REG_BITS-1){1'b0}}});  // 2^(Np+F)
-      wire signed [PB-1:0] clamped = unclamped > limit ? limit : unclamped < -limit ? -limit : unclamped;
       reg signed [Z_REG_BITS:0] bias_q;  // [-2^(Np+F), 2^(Np+F)]
-      always @(posedge clk) if (load) bias_q <= clamped[Z_REG_BITS:0];
+      always @(posedge clk) if (load) bias_q <= depth_bias;
       // V + B + R in Np + F + 3 bits, then the rounding shift and the clamp.
       wire signed [Z_REG_BITS+1:0] sum = $signed({{2{depth_value[Z_REG_BITS-1]}}, depth_value}) +
                                          $signed({bias_q[Z_REG_BITS], bias_q}) +
@@ -99,12 +87,12 @@ module z_adder `RS_IMPORT #(
       wire signed [Z_REG_BITS+1-F:0] out_max = $signed({{(Z_REG_BITS+2-F-NP){1'b0}}, {NP{1'b1}}});
       assign depth_x = rounded[Z_REG_BITS+1-F] ? {NP{1'b0}} : rounded > out_max ? {NP{1'b1}} : rounded[NP-1:0];
       /* verilator lint_off UNUSEDSIGNAL */
-      wire rounded_unused = ^depth_rounded ^ ^clamped[PB-1:Z_REG_BITS+1] ^ ^sum[F-1:0];
+      wire rounded_unused = ^depth_rounded ^ ^sum[F-1:0];
       /* verilator lint_on UNUSEDSIGNAL */
     end else begin : no_bias
       assign depth_x = depth_rounded;
       /* verilator lint_off UNUSEDSIGNAL */
-      wire bias_unused = ^cfg_depth_bias_constant ^ ^cfg_depth_bias_slope ^ ^depth_value;
+      wire bias_unused = ^depth_bias ^ ^depth_value;
       /* verilator lint_on UNUSEDSIGNAL */
     end
   endgenerate

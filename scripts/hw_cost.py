@@ -41,6 +41,7 @@ UNITS = {
     "scanline_walker_entry": "the walker's entry stage before the record FIFO (first row's span, second row's DDA)",
     "scanline_walker": "scanline walker (registers' side; its entry comes through the record FIFO)",
     "z_adder": "Z adder (depth and colour plane registers)",
+    "depth_bias": "bias unit: a triangle's depth bias from its record's depth steps (7 stages) and its FIFO",
     "zbuffer": "z-buffer control and in-flight ring; frame memory outside (memory port)",
     "zbuffer_memory": "frame memory on chip (depth/colour words; written bitmaps; read-back)",
     "texture_divide": "texture unit's perspective divide: u, v from S, T, Q (29 stages, one fragment per clock)",

@@ -30,7 +30,7 @@ texture_mutants=(texture_capacity texture_bank_route texture_stall_ignored textu
 texture_sampler_mutants=(texture_clamp_below texture_blend_rounding)
 # The depth output stage's (DEPTH_EXPONENT_BITS 3, DEPTH_BIAS 1; ctest rtl.injected_depth_bugs_are_caught,
 # label long):
-depth_mutants=(depth_bias_shift depth_bias_smaller_step depth_float_mantissa depth_bias_slope_unsigned)
+depth_mutants=(depth_bias_shift depth_bias_smaller_step depth_float_mantissa depth_bias_slope_unsigned depth_bias_ready_early)
 # name -> file, text to replace, replacement (fixed strings); params: extra verilator -G settings;
 # check: mutant_check's mode (--cosim-only: the frames of `rastersim cosim --count 100` must catch it;
 # --directed-only: its directed and coverage frames).
@@ -205,14 +205,18 @@ to[setup_offscreen_rows]='wire offscreen = bx1_raw < 0 ||'  # a box above the sc
 file[setup_credit_count]=rastersim_core.sv
 from[setup_credit_count]='credits_held_q < setup_fifo_depth_q;'
 to[setup_credit_count]='credits_held_q <= setup_fifo_depth_q;'  # one record credit too many
-# The Z adder's depth output stage (a biased profile's cosim frames: bias constants and slopes).
-cosim_only_mutants z_adder.sv "-GSETUP_INTERVAL=4 -GDEPTH_EXPONENT_BITS=3 -GDEPTH_BIAS=1" "${depth_mutants[@]}"
-from[depth_bias_shift]='wire signed [PB-1:0] unclamped = constant_part + (product >>> 4);'
-to[depth_bias_shift]='wire signed [PB-1:0] unclamped = constant_part + (product >>> 3);'  # the slope factor read as s5.3
-from[depth_bias_smaller_step]='wire [Z_REG_BITS-1:0] slope = magnitude_x > magnitude_y ? magnitude_x : magnitude_y;'
-to[depth_bias_smaller_step]='wire [Z_REG_BITS-1:0] slope = magnitude_x > magnitude_y ? magnitude_y : magnitude_x;'  # the smaller step
-from[depth_bias_slope_unsigned]="\$signed({{(PB-8){cfg_depth_bias_slope[7]}}, cfg_depth_bias_slope})"
-to[depth_bias_slope_unsigned]="\$signed({{(PB-8){1'b0}}, cfg_depth_bias_slope})"  # a negative slope factor zero-extended: a large positive one
+# The depth output stage: the bias unit and the Z adder's encoder (a biased profile's cosim frames:
+# bias constants and slopes).
+cosim_only_mutants depth_bias.sv "-GSETUP_INTERVAL=4 -GDEPTH_EXPONENT_BITS=3 -GDEPTH_BIAS=1" "${depth_mutants[@]}"
+file[depth_float_mantissa]=z_adder.sv
+from[depth_bias_shift]='always @(posedge clk) unclamped_q <= constant_part + (product_q >>> 4);'
+to[depth_bias_shift]='always @(posedge clk) unclamped_q <= constant_part + (product_q >>> 3);'  # the slope factor read as s5.3
+from[depth_bias_smaller_step]='always @(posedge clk) slope_q <= magnitude_x_q > magnitude_y_q ? magnitude_x_q : magnitude_y_q;'
+to[depth_bias_smaller_step]='always @(posedge clk) slope_q <= magnitude_x_q > magnitude_y_q ? magnitude_y_q : magnitude_x_q;'  # the smaller step
+from[depth_bias_slope_unsigned]="assign partial[i] = cfg_depth_bias_slope[i] ? -(slope_wide <<< i) : {PB{1'b0}};"
+to[depth_bias_slope_unsigned]="assign partial[i] = cfg_depth_bias_slope[i] ? slope_wide <<< i : {PB{1'b0}};"  # a negative slope factor read unsigned: a large positive one
+from[depth_bias_ready_early]='wire push = biased ? valid_q[STAGES-2] : in_valid;'
+to[depth_bias_ready_early]='wire push = biased ? valid_q[STAGES-3] : in_valid;'  # the bias written a stage early: the walker loads a cycle early
 from[depth_float_mantissa]='if (depth_x[NM + e - 1]) word = {e[NE-1:0], depth_x[e - 1 +: NM]};'
 to[depth_float_mantissa]='if (depth_x[NM + e - 1]) word = {e[NE-1:0], depth_x[e +: NM]};'  # the mantissa one bit too high
 file[setup_fifo_empty]=setup_fifo.sv

@@ -303,13 +303,15 @@ class TraceObserver {
     stats.zbuffer.busy += s.zbuffer_busy;
     stats.zbuffer.stall += s.zbuffer_stall;
     if (s.busy()) last_busy_ = cycle;
-    // A fragment can wait on the memory's back-pressure longer than L cycles with no unit busy.
-    done_ = !submitting && !s.busy() && !s.frag_valid && !s.walker_frag_valid && in_flight_.empty();
+    // A fragment can wait on the memory's back-pressure longer than L cycles with no unit busy, and a
+    // record on its depth bias (docs/cycle-model.md, "Depth bias") with none busy either.
+    done_ = !submitting && !s.busy() && !s.frag_valid && !s.walker_frag_valid && in_flight_.empty() &&
+            waiting_.empty();
     return true;
   }
 
-  // Every triangle taken, the pipeline idle, no fragment waiting and none in flight after the last
-  // observed cycle.
+  // Every triangle taken, the pipeline idle, no record or fragment waiting and none in flight after
+  // the last observed cycle.
   bool done() const { return done_; }
 
   // The frame counters that follow from the observed ones.

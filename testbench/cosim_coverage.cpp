@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "model/triangle_setup.h"
+#include "model/z_adder.h"
 
 namespace rastersim::rtl {
 namespace {
@@ -195,7 +196,9 @@ CoverageCounts frame_coverage(const Profile& p, const std::vector<SnappedTriangl
       for (const SnappedVertex& v : triangles[t].v) q_min = std::min(q_min, v.q), q_max = std::max(q_max, v.q);
       hits[kTextureWRatioLimit] += q_min > 0 && q_min <= (q_max >> 14);
     }
-    if (seen_drawn && record.walker_load == record.setup_done + 1 && record.walker_load > previous_walker_end)
+    // Loaded in the cycle its record is ready (docs/cycle-model.md, "Depth bias"), the walker idle.
+    const int64_t ready = record.setup_done + (p.depth_biased() ? DepthOutput::kBiasStages : 1);
+    if (seen_drawn && record.walker_load == ready && record.walker_load > previous_walker_end)
       ++hits[kFifoEmpty];
     seen_drawn = true;
     previous_walker_end = record.walker_end;

@@ -341,14 +341,24 @@ TEST_P(CycleModel, HandOffChainPipelinedSetup) {
 // 1 to 4 credits. The accept cycle is found by brute force: the first cycle at or after the one the
 // unit is free in which fewer than setup_fifo_depth earlier triangles hold a credit (from the cycle
 // after their accept to their decision if rejected, to their walker load if drawn).
+// With a depth bias a record is ready for the walker from setup_done + 7 (the bias unit's stages),
+// else from setup_done + 1.
 TEST_P(CycleModel, HandOffChainOverAScene) {
-  for (int depth = 1; depth <= 4; ++depth) {
+  for (int run_index = 0; run_index < 6; ++run_index) {
+    const int depth = run_index < 4 ? run_index + 1 : run_index - 3;
+    const bool biased = run_index >= 4;
     Profile p = test::make_profile(80, 60, 4, GetParam(), 24);
     p.memory_latency = 1;
     p.setup_fifo_depth = depth;
     p.setup_interval = 0;  // the serial setup's timing
+    if (biased) {
+      p.depth_bias_constant = -3;
+      p.depth_bias_slope = 24;  // 1.5
+    }
+    const int64_t ready_after = biased ? 7 : 1;
     const uint64_t seed = 7 + uint64_t(GetParam());
-    SCOPED_TRACE(::testing::Message() << describe(p) << " seed " << seed << " setup_fifo_depth " << depth);
+    SCOPED_TRACE(::testing::Message() << describe(p) << " seed " << seed << " setup_fifo_depth " << depth
+                                      << (biased ? " depth bias" : ""));
     const SceneRun run = run_random_scene(p, seed, 300);
     const Widths& w = run.widths;
     const std::vector<TriangleRecord>& records = run.records;
@@ -381,7 +391,7 @@ TEST_P(CycleModel, HandOffChainOverAScene) {
         continue;
       }
       ASSERT_EQ(r.setup_done, accept + setup_cycles - 1);
-      const int64_t load = std::max(r.setup_done + 1, walker_end_prev);  // at the FIFO's head after setup_done
+      const int64_t load = std::max(r.setup_done + ready_after, walker_end_prev);  // ready after setup_done
       ASSERT_EQ(r.walker_load, load);
       const int64_t walk = expected_walk_cycles(t, p);
       ASSERT_EQ(r.walker_end, load + walk);

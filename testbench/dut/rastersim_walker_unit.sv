@@ -108,7 +108,7 @@ module rastersim_walker_unit #(
   /* verilator lint_on UNUSEDSIGNAL */
   z_adder #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS),
             .DEPTH_ROUNDING(DEPTH_ROUNDING), .COLOR_ROUNDING(COLOR_ROUNDING)) adders (
-    .clk(clk), .cfg_shading(cfg_shading), .cfg_depth_bias_constant(33'd0), .cfg_depth_bias_slope(8'd0),
+    .clk(clk), .cfg_shading(cfg_shading), .depth_bias('0),  // DEPTH_BIAS 0
     .load(load), .step_x(adder_step_x), .next_row(adder_next_row), .row_enter(adder_row_enter),
     .enter_left(adder_enter_left), .enter_slot(adder_enter_slot), .left_carry(adder_left_carry),
     .depth_start(record[LSB_DEPTH_START +: Z_REG_BITS]),

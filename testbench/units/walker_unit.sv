@@ -60,7 +60,7 @@ module walker_unit #(
   wire [3*rs_texture_reg_bits(WIDTH, HEIGHT)-1:0] stq_unused;
   /* verilator lint_on UNUSEDSIGNAL */
   z_adder #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS)) adders (
-    .clk(clk), .cfg_shading(cfg_shading), .cfg_depth_bias_constant(33'd0), .cfg_depth_bias_slope(8'd0),  // no bias
+    .clk(clk), .cfg_shading(cfg_shading), .depth_bias('0),  // no bias (DEPTH_BIAS 0)
     .load(load), .step_x(adder_step_x), .next_row(adder_next_row), .row_enter(adder_row_enter), .enter_left(adder_enter_left),
     .enter_slot(adder_enter_slot), .left_carry(adder_left_carry),
     .depth_start(in_record[LSB_DEPTH_START +: Z_REG_BITS]),

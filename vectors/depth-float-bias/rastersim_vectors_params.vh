@@ -74,7 +74,7 @@ localparam integer TRIANGLES = 11;  // commands.hex, triangles.hex
 localparam integer DRAWN = 11;  // setup.hex
 localparam integer FRAGMENTS = 284;  // fragments.hex
 localparam integer WORDS = 192;  // depth.hex, color.hex: WIDTH * HEIGHT
-localparam integer CYCLES = 337;  // the frame's cycles (frame.hex)
+localparam integer CYCLES = 343;  // the frame's cycles (frame.hex)
 localparam integer TEXELS = 1;  // texture.hex (TEXTURE 1): 2^CFG_TEXTURE_LOG2_WIDTH x 2^CFG_TEXTURE_LOG2_HEIGHT
 
 // Word layouts: each field's slot (lowest bit, slot bits), own width and signedness.
