@@ -12,6 +12,7 @@ set(RASTERSIM_RTL_SOURCES
   ${RASTERSIM_RTL_DIR}/triangle_setup_pipelined.sv
   ${RASTERSIM_RTL_DIR}/setup_fifo.sv
   ${RASTERSIM_RTL_DIR}/depth_bias.sv
+  ${RASTERSIM_RTL_DIR}/depth_word.sv
   ${RASTERSIM_RTL_DIR}/span_bounds.sv
   ${RASTERSIM_RTL_DIR}/scanline_walker_entry.sv
   ${RASTERSIM_RTL_DIR}/scanline_walker.sv

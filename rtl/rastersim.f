@@ -6,6 +6,7 @@
 +incdir+.
 rastersim_pkg.sv
 depth_bias.sv
+depth_word.sv
 plane_register.sv
 rastersim_core.sv
 rastersim_top.sv

@@ -276,7 +276,8 @@ module rastersim_core `RS_IMPORT #(`RASTERSIM_CORE_PARAMETERS) (
     if (DEPTH_BIAS != 0) begin : biasing
       wire bias_ready;
       depth_bias #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .Z_GUARD_BITS(Z_GUARD_BITS),
-                   .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS), .MAX_SETUP_FIFO_DEPTH(MAX_SETUP_FIFO_DEPTH)) bias_unit (
+                   .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS), .DEPTH_ROUNDING(DEPTH_ROUNDING),
+                   .MAX_SETUP_FIFO_DEPTH(MAX_SETUP_FIFO_DEPTH)) bias_unit (
         .clk(clk), .rst(rst), .cfg_depth_bias_constant(depth_bias_constant_q), .cfg_depth_bias_slope(depth_bias_slope_q),
         .in_valid(setup_valid), .in_step_x(setup_record[LSB_DEPTH_STEP_X +: Z_REG_BITS]),
         .in_step_y(setup_record[LSB_DEPTH_STEP_Y +: Z_REG_BITS]), .pop(walker_load), .ready(bias_ready),
@@ -347,7 +348,7 @@ module rastersim_core `RS_IMPORT #(`RASTERSIM_CORE_PARAMETERS) (
   wire walker_frag_valid, walker_frag_ready;
   wire [X_BITS-1:0] walker_frag_x;
   wire [Y_BITS-1:0] walker_frag_y;
-  wire [Z_BITS-1:0] walker_frag_z;
+  wire [DEPTH_PLANE_BITS-1:0] walker_frag_z;  // X (the z-buffer forms the word)
   wire [23:0] walker_frag_rgb;
   wire walker_frag_textured;
   wire [3*TR-1:0] walker_frag_texture;
@@ -356,7 +357,7 @@ module rastersim_core `RS_IMPORT #(`RASTERSIM_CORE_PARAMETERS) (
   wire frag_valid, frag_ready;
   wire [X_BITS-1:0] frag_x;
   wire [Y_BITS-1:0] frag_y;
-  wire [Z_BITS-1:0] frag_z;
+  wire [DEPTH_PLANE_BITS-1:0] frag_z;
   wire [23:0] frag_rgb;
 
   scanline_walker #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .SUBPIXEL_BITS(SUBPIXEL_BITS)) walker (
@@ -384,7 +385,8 @@ module rastersim_core `RS_IMPORT #(`RASTERSIM_CORE_PARAMETERS) (
 
   generate
     if (TEXTURE != 0) begin : texturing
-      texture_unit #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .MAX_TEXTURE_LATENCY(MAX_TEXTURE_LATENCY)) unit (
+      texture_unit #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS),
+                     .MAX_TEXTURE_LATENCY(MAX_TEXTURE_LATENCY)) unit (
         .clk(clk), .rst(rst), .cfg_texture_latency(texture_latency_q), .cfg_log2_width(texture_log2_width_q),
         .cfg_log2_height(texture_log2_height_q), .cfg_bilinear(texture_bilinear_q), .cfg_clamp(texture_clamp_q),
         .in_valid(walker_frag_valid), .in_ready(walker_frag_ready), .in_x(walker_frag_x), .in_y(walker_frag_y),
@@ -414,7 +416,8 @@ module rastersim_core `RS_IMPORT #(`RASTERSIM_CORE_PARAMETERS) (
   assign trace_walker_frag_valid = walker_frag_valid;
   assign trace_walker_frag_ready = walker_frag_ready;
 
-  zbuffer #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY)) zbuf (
+  zbuffer #(.WIDTH(WIDTH), .HEIGHT(HEIGHT), .Z_BITS(Z_BITS), .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS),
+            .MAX_MEMORY_LATENCY(MAX_MEMORY_LATENCY)) zbuf (
     .clk(clk), .rst(rst), .cfg_depth_func(depth_func_q), .cfg_depth_write(depth_write_q),
     .cfg_memory_latency(memory_latency_q), .clear_done(frame_ready),
     .frag_valid(frag_valid), .frag_ready(frag_ready), .frag_x(frag_x), .frag_y(frag_y),
@@ -430,6 +433,8 @@ module rastersim_core `RS_IMPORT #(`RASTERSIM_CORE_PARAMETERS) (
   assign trace_frag_ready = frag_ready;
   assign trace_frag_x = frag_x;
   assign trace_frag_y = frag_y;
-  assign trace_frag_z = frag_z;
+  // The offered fragment's depth word, as the z-buffer forms it from X (observation only).
+  depth_word #(.Z_BITS(Z_BITS), .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS)) trace_encoder (
+    .value(frag_z), .word(trace_frag_z));
   assign trace_frag_rgb = frag_rgb;
 endmodule

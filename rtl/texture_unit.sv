@@ -18,6 +18,7 @@ module texture_unit `RS_IMPORT #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
   parameter integer Z_BITS = 24,
+  parameter integer DEPTH_EXPONENT_BITS = 0,  // in_z, out_z: X, rs_depth_plane_bits(Z_BITS, Ne) bits
   parameter integer MAX_TEXTURE_LATENCY = 64
 ) (
   input  wire clk,
@@ -28,13 +29,13 @@ module texture_unit `RS_IMPORT #(
   input  wire [rastersim_pkg::TEXTURE_LOG2_BITS-1:0] cfg_log2_height,
   input  wire cfg_bilinear,               // 0: nearest
   input  wire cfg_clamp,                  // 0: repeat
-  // Fragments from the walker: pixel, depth uN, shade {r, g, b}, and the S, T, Q registers
+  // Fragments from the walker: pixel, depth (the plane's output X), shade {r, g, b}, and the S, T, Q registers
   // (s9.(P+Ft), rs_texture_reg_bits wide, written as in texture_divide).
   input  wire in_valid,
   output wire in_ready,
   input  wire [rs_ubits32(WIDTH - 1)-1:0]  in_x,
   input  wire [rs_ubits32(HEIGHT - 1)-1:0] in_y,
-  input  wire [Z_BITS-1:0] in_z,
+  input  wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)-1:0] in_z,
   input  `RS_TYPE(rgb_t) in_rgb,
   input  wire in_textured,
   input  wire [rs_texture_reg_bits(WIDTH, HEIGHT)-1:0] in_s,
@@ -45,7 +46,7 @@ module texture_unit `RS_IMPORT #(
   input  wire out_ready,
   output wire [rs_ubits32(WIDTH - 1)-1:0]  out_x,
   output wire [rs_ubits32(HEIGHT - 1)-1:0] out_y,
-  output wire [Z_BITS-1:0] out_z,
+  output wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)-1:0] out_z,
   output `RS_TYPE(rgb_t) out_rgb,
   // Texture memory read port.
   output wire tex_rd_valid,
@@ -62,7 +63,7 @@ module texture_unit `RS_IMPORT #(
   localparam integer Y_BITS = rs_ubits32(HEIGHT - 1);
   localparam integer TR = rs_texture_reg_bits(WIDTH, HEIGHT);
   // A fragment beside the arithmetic: {textured, shade, z, y, x}.
-  localparam integer FRAG_BITS = 1 + 24 + Z_BITS + Y_BITS + X_BITS;
+  localparam integer FRAG_BITS = 1 + 24 + rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS) + Y_BITS + X_BITS;
   // A looked-up fragment: the fragment, then {x0, x1, y0, y1, wx, wy} from the address stage.
   localparam integer LOOKUP_BITS = FRAG_BITS + 56;
   localparam integer ADDRESS_STAGES = rastersim_pkg::TEXTURE_ADDRESS_STAGES;

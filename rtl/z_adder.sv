@@ -4,9 +4,9 @@
 // the S, T, Q plane registers too (s9.(P+Ft), docs/arithmetic.md section 5), for the texture unit.
 // The depth output stage (model/z_adder.h DepthOutput, docs/arithmetic.md section 6): with
 // DEPTH_BIAS the triangle's bias, taken at the load from the bias unit (depth_bias.sv, which forms
-// it from the record's depth steps), added before the rounding; with DEPTH_EXPONENT_BITS >= 2 the
-// output encoded as the floating-point depth word. Logic between the register and the fragment:
-// no cycles.
+// it from the record's depth steps), added before the rounding and the clamp: the plane output X,
+// Np bits. Logic between the register and the fragment: no cycles. The depth word (floating point
+// with DEPTH_EXPONENT_BITS >= 2) is formed from X by the z-buffer (depth_word.sv).
 `include "rastersim_pkg.sv"
 module z_adder `RS_IMPORT #(
   parameter integer WIDTH = 640,
@@ -22,7 +22,8 @@ module z_adder `RS_IMPORT #(
   input  wire clk,
   input  wire cfg_shading,  // rastersim_pkg::SHADING_*; flat: the provoking vertex colour
   input  wire load,
-  // The loaded triangle's bias B in [-2^(Np+F), 2^(Np+F)] (depth_bias.sv; DEPTH_BIAS only).
+  // The loaded triangle's bias and the rounding's half, B + R in [-2^(Np+F), 2^(Np+F) + 2^(F-1)]
+  // (depth_bias.sv; DEPTH_BIAS only).
   input  wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)+1:0] depth_bias,
   input  wire step_x,
   input  wire next_row,
@@ -43,7 +44,7 @@ module z_adder `RS_IMPORT #(
   input  wire [2*(rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)+1+3*(9+rs_guard_bits(WIDTH, HEIGHT, Z_GUARD_BITS)))-1:0] left_step,
   // The texture record (rs_texture_record_bits of rastersim_widths.vh; unused without TEXTURE).
   input  wire [rs_texture_record_bits(WIDTH, HEIGHT)-1:0] texture_record,
-  output wire [Z_BITS-1:0] depth,  // the depth word, N bits
+  output wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)-1:0] depth,  // X, the plane's output (Np bits)
   output `RS_TYPE(rgb_t) rgb,          // {r, g, b}, u8 each
   output wire triangle_textured,   // the record's texture flag (0 without TEXTURE)
   output wire [3*rs_texture_reg_bits(WIDTH, HEIGHT)-1:0] stq  // the S, T, Q registers at [c*TR +: TR]
@@ -77,15 +78,17 @@ module z_adder `RS_IMPORT #(
   wire [NP-1:0] depth_x;
   generate
     if (DEPTH_BIAS != 0) begin : bias
-      reg signed [Z_REG_BITS:0] bias_q;  // [-2^(Np+F), 2^(Np+F)]
+      reg signed [Z_REG_BITS:0] bias_q;  // B + R
       always @(posedge clk) if (load) bias_q <= depth_bias;
-      // V + B + R in Np + F + 3 bits, then the rounding shift and the clamp.
+      // V + (B + R) in Np + F + 3 bits (two operands: R comes with B), then the rounding shift and
+      // the clamp by bit tests: below 0 when the sign is set, above 2^Np - 1 when a bit above
+      // Np - 1 is.
       wire signed [Z_REG_BITS+1:0] sum = $signed({{2{depth_value[Z_REG_BITS-1]}}, depth_value}) +
-                                         $signed({bias_q[Z_REG_BITS], bias_q}) +
-                                         $signed({{(Z_REG_BITS+2-F){1'b0}}, 1'(DEPTH_ROUNDING == 0), {(F-1){1'b0}}});
-      wire signed [Z_REG_BITS+1-F:0] rounded = sum[Z_REG_BITS+1:F];
-      wire signed [Z_REG_BITS+1-F:0] out_max = $signed({{(Z_REG_BITS+2-F-NP){1'b0}}, {NP{1'b1}}});
-      assign depth_x = rounded[Z_REG_BITS+1-F] ? {NP{1'b0}} : rounded > out_max ? {NP{1'b1}} : rounded[NP-1:0];
+                                         $signed({bias_q[Z_REG_BITS], bias_q});
+      wire [Z_REG_BITS+1-F:0] rounded = sum[Z_REG_BITS+1:F];  // Np + 3 bits, the top one the sign
+      wire negative = rounded[NP+2];
+      wire above = |rounded[NP+1:NP];
+      assign depth_x = negative ? {NP{1'b0}} : above ? {NP{1'b1}} : rounded[NP-1:0];
       /* verilator lint_off UNUSEDSIGNAL */
       wire rounded_unused = ^depth_rounded ^ ^sum[F-1:0];
       /* verilator lint_on UNUSEDSIGNAL */
@@ -97,24 +100,7 @@ module z_adder `RS_IMPORT #(
     end
   endgenerate
 
-  // The depth word: X itself, or with Ne >= 2 exponent bits the floating-point word {e, mantissa}
-  // (X < 2^Nm: e = 0 and X; else e = floor(log2 X) - Nm + 1 and the bits below X's leading one).
-  generate
-    if (DEPTH_EXPONENT_BITS >= 2) begin : float_word
-      localparam integer NE = DEPTH_EXPONENT_BITS;
-      localparam integer NM = Z_BITS - NE;
-      reg [Z_BITS-1:0] word;
-      integer e;
-      always @* begin
-        word = {{NE{1'b0}}, depth_x[NM-1:0]};
-        for (e = 1; e < (1 << NE); e = e + 1)  // the highest set bit at NM + e - 1 wins
-          if (depth_x[NM + e - 1]) word = {e[NE-1:0], depth_x[e - 1 +: NM]};
-      end
-      assign depth = word;
-    end else begin : fixed_word
-      assign depth = depth_x;  // Ne = 1 is the same word
-    end
-  endgenerate
+  assign depth = depth_x;
 
   wire [23:0] gouraud_rgb;
   genvar c;

@@ -18,6 +18,7 @@ module zbuffer `RS_IMPORT #(
   parameter integer WIDTH = 640,
   parameter integer HEIGHT = 480,
   parameter integer Z_BITS = 24,
+  parameter integer DEPTH_EXPONENT_BITS = 0,  // Ne: frag_z is X, Np bits; the stored word Z_BITS (depth_word.sv)
   parameter integer MAX_MEMORY_LATENCY = 64
 ) (
   input  wire clk,
@@ -31,7 +32,7 @@ module zbuffer `RS_IMPORT #(
   output wire frag_ready,
   input  wire [rs_ubits32(WIDTH - 1)-1:0]  frag_x,
   input  wire [rs_ubits32(HEIGHT - 1)-1:0] frag_y,
-  input  wire [Z_BITS-1:0] frag_z,
+  input  wire [rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS)-1:0] frag_z,  // X, the plane's output
   input  `RS_TYPE(rgb_t)    frag_rgb,
   // Depth test result of the fragment read L cycles ago (its write cycle).
   output wire result_valid,
@@ -66,7 +67,9 @@ module zbuffer `RS_IMPORT #(
   // is issued from the buffer's head, at the earliest in t + 1 (docs/cycle-model.md). The entries
   // stay in place (head_q names the older one), so an issue moves no data.
   localparam integer PIXEL_BITS = Y_BITS + X_BITS;  // {y, x}: one pixel, one address
-  localparam integer DATA_BITS = ADDR_BITS + Z_BITS + 24;  // {address, depth, rgb}
+  localparam integer DATA_BITS = ADDR_BITS + Z_BITS + 24;  // in flight: {address, depth word, rgb}
+  localparam integer PLANE_BITS = rs_depth_plane_bits(Z_BITS, DEPTH_EXPONENT_BITS);
+  localparam integer BUF_DATA_BITS = ADDR_BITS + PLANE_BITS + 24;  // buffered: {address, X, rgb}
   // In-flight fragments: a ring of RING = 2^RING_BITS >= MAX_MEMORY_LATENCY slots, one written every
   // cycle (slot now_slot_q) with the buffer's head. A slot is live from the cycle after its read was
   // issued through that fragment's data cycle (issued in r: live in r+1 .. r+L), exactly the window
@@ -103,17 +106,23 @@ module zbuffer `RS_IMPORT #(
   reg                  head_q;   // the older entry
   reg                  tail_q;   // the entry the next fragment is taken into
   reg [PIXEL_BITS-1:0] buf_pixel_q [0:1];
-  reg [DATA_BITS-1:0]  buf_data_q [0:1];
+  reg [BUF_DATA_BITS-1:0] buf_data_q [0:1];
   reg [RING-1:0]       match_q [0:1];
   reg                  ahead_q [0:1];
 
   wire [ADDR_BITS-1:0] frag_addr = frag_y * WIDTH_A + {{(ADDR_BITS-X_BITS){1'b0}}, frag_x};
   wire [PIXEL_BITS-1:0] frag_pixel = {frag_y, frag_x};
-  wire [DATA_BITS-1:0] frag_data = {frag_addr, frag_z, frag_rgb};
+  wire [BUF_DATA_BITS-1:0] frag_data = {frag_addr, frag_z, frag_rgb};
   assign frag_ready = !count_q[1];
   wire take = frag_valid && frag_ready;
   wire [PIXEL_BITS-1:0] head_pixel = buf_pixel_q[head_q];
-  wire [DATA_BITS-1:0] head_data = buf_data_q[head_q];
+  wire [BUF_DATA_BITS-1:0] head_buffered = buf_data_q[head_q];
+  // The head's depth word, formed here, a register after the Z adder (docs/cycle-model.md, "Depth
+  // output stage").
+  wire [Z_BITS-1:0] head_word;
+  depth_word #(.Z_BITS(Z_BITS), .DEPTH_EXPONENT_BITS(DEPTH_EXPONENT_BITS)) head_encoder (
+    .value(head_buffered[24 +: PLANE_BITS]), .word(head_word));
+  wire [DATA_BITS-1:0] head_data = {head_buffered[PLANE_BITS + 24 +: ADDR_BITS], head_word, head_buffered[23:0]};
   wire head_valid = count_q != 2'd0;
 
   // The incoming fragment against every slot; the slot written this cycle gets the head (its

@@ -6,7 +6,7 @@ rtl="$root/rtl"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 status=0
-for top in plane_register triangle_setup triangle_setup_serial triangle_setup_pipelined setup_fifo depth_bias span_bounds scanline_walker_entry scanline_walker z_adder zbuffer zbuffer_memory texture_divide texture_address texture_filter texture_memory texture_unit rastersim_core rastersim_top; do
+for top in plane_register triangle_setup triangle_setup_serial triangle_setup_pipelined setup_fifo depth_bias depth_word span_bounds scanline_walker_entry scanline_walker z_adder zbuffer zbuffer_memory texture_divide texture_address texture_filter texture_memory texture_unit rastersim_core rastersim_top; do
   # -Wno-sensitivity-entire-array: the @* reductions over the stage and edge arrays are meant to
   # depend on every word; Icarus only notes it.
   if ! out=$(iverilog -g2012 -Wall -Wno-sensitivity-entire-array -I"$rtl" -s "$top" -o "$work/$top.vvp" "$rtl"/*.sv 2>&1) || [ -n "$out" ]; then

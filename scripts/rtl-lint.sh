@@ -16,7 +16,7 @@ for params in "" "-GWIDTH=16 -GHEIGHT=8 -GSUBPIXEL_BITS=2 -GZ_BITS=16 -GMAX_MEMO
               "-GDEPTH_EXPONENT_BITS=3 -GDEPTH_BIAS=1" "-GPIXEL_CENTER=1 -GFILL_RULE=3 -GDEPTH_ROUNDING=1 -GCOLOR_ROUNDING=1" \
               "-GWIDTH=16 -GHEIGHT=8 -GSUBPIXEL_BITS=2 -GZ_BITS=16 -GSETUP_INTERVAL=0 -GPIXEL_CENTER=1 -GFILL_RULE=1 -GDEPTH_BIAS=1 -GDEPTH_ROUNDING=1" \
               "-GWIDTH=16 -GHEIGHT=8 -GSUBPIXEL_BITS=2 -GZ_BITS=16 -GSETUP_INTERVAL=0 -GDEPTH_EXPONENT_BITS=4 -GDEPTH_BIAS=1"; do
-  for top in plane_register triangle_setup triangle_setup_serial triangle_setup_pipelined setup_fifo depth_bias span_bounds scanline_walker_entry scanline_walker z_adder zbuffer zbuffer_memory texture_divide texture_address texture_filter texture_memory texture_unit rastersim_core rastersim_top; do
+  for top in plane_register triangle_setup triangle_setup_serial triangle_setup_pipelined setup_fifo depth_bias depth_word span_bounds scanline_walker_entry scanline_walker z_adder zbuffer zbuffer_memory texture_divide texture_address texture_filter texture_memory texture_unit rastersim_core rastersim_top; do
     # The setup unit's schedules alone where triangle_setup builds them: the serial one at
     # SETUP_INTERVAL 0 (the default), the pipelined one at 2..64.
     case "$top" in

@@ -208,17 +208,17 @@ to[setup_credit_count]='credits_held_q <= setup_fifo_depth_q;'  # one record cre
 # The depth output stage: the bias unit and the Z adder's encoder (a biased profile's cosim frames:
 # bias constants and slopes).
 cosim_only_mutants depth_bias.sv "-GSETUP_INTERVAL=4 -GDEPTH_EXPONENT_BITS=3 -GDEPTH_BIAS=1" "${depth_mutants[@]}"
-file[depth_float_mantissa]=z_adder.sv
-from[depth_bias_shift]='always @(posedge clk) unclamped_q <= constant_part + (product_q >>> 4);'
-to[depth_bias_shift]='always @(posedge clk) unclamped_q <= constant_part + (product_q >>> 3);'  # the slope factor read as s5.3
+file[depth_float_mantissa]=depth_word.sv
+from[depth_bias_shift]='wire signed [PB-1:0] product_floor = product_q >>> 4;'
+to[depth_bias_shift]='wire signed [PB-1:0] product_floor = product_q >>> 3;'  # the slope factor read as s5.3
 from[depth_bias_smaller_step]='always @(posedge clk) slope_q <= magnitude_x_q > magnitude_y_q ? magnitude_x_q : magnitude_y_q;'
 to[depth_bias_smaller_step]='always @(posedge clk) slope_q <= magnitude_x_q > magnitude_y_q ? magnitude_y_q : magnitude_x_q;'  # the smaller step
 from[depth_bias_slope_unsigned]="assign partial[i] = cfg_depth_bias_slope[i] ? -(slope_wide <<< i) : {PB{1'b0}};"
 to[depth_bias_slope_unsigned]="assign partial[i] = cfg_depth_bias_slope[i] ? slope_wide <<< i : {PB{1'b0}};"  # a negative slope factor read unsigned: a large positive one
 from[depth_bias_ready_early]='wire push = biased ? valid_q[STAGES-2] : in_valid;'
 to[depth_bias_ready_early]='wire push = biased ? valid_q[STAGES-3] : in_valid;'  # the bias written a stage early: the walker loads a cycle early
-from[depth_float_mantissa]='if (depth_x[NM + e - 1]) word = {e[NE-1:0], depth_x[e - 1 +: NM]};'
-to[depth_float_mantissa]='if (depth_x[NM + e - 1]) word = {e[NE-1:0], depth_x[e +: NM]};'  # the mantissa one bit too high
+from[depth_float_mantissa]='if (value[NM + e - 1]) encoded = {e[NE-1:0], value[e - 1 +: NM]};'
+to[depth_float_mantissa]='if (value[NM + e - 1]) encoded = {e[NE-1:0], value[e +: NM]};'  # the mantissa one bit too high
 file[setup_fifo_empty]=setup_fifo.sv
 from[setup_fifo_empty]='assign empty = count_q == {COUNT_BITS{1'"'"'b0}};'
 to[setup_fifo_empty]='assign empty = count_q <= {{(COUNT_BITS-1){1'"'"'b0}}, 1'"'"'b1};'  # one record looks like none

@@ -9,7 +9,7 @@ rtl="$root/rtl"
 # shellcheck source=scripts/rtl-declares.sh
 source "$root/scripts/rtl-declares.sh"
 units=("$@")
-[ ${#units[@]} -eq 0 ] && units=(plane_register triangle_setup setup_fifo scanline_walker z_adder zbuffer zbuffer_memory rastersim_top)
+[ ${#units[@]} -eq 0 ] && units=(plane_register triangle_setup setup_fifo depth_bias scanline_walker z_adder zbuffer zbuffer_memory rastersim_top)
 declare -A values=([WIDTH]=16 [HEIGHT]=8 [SUBPIXEL_BITS]=2 [Z_BITS]=16 [MAX_MEMORY_LATENCY]=4 [MAX_SETUP_FIFO_DEPTH]=2)
 status=0
 for unit in "${units[@]}"; do
