@@ -3,14 +3,13 @@
 // 2^(Np+F)) from its record's depth steps (s(Np+1).F as the plane register holds them), formed
 // beside the record FIFO so that the Z adder's load takes a register. It gives B + R, R the
 // rounding's half (2^(F-1) with DEPTH_ROUNDING nearest, else 0), so that the Z adder's sum
-// V + B + R has two operands. Seven stages, one a cycle,
-// the record's setup_done the first (docs/cycle-model.md, "Depth bias"): the steps' magnitudes,
-// the larger one, three adder levels of the product with the 8-bit factor f, the constant, the
-// clamp, which writes B + R into a FIFO of its own in record order. With c = 0 and f = 0 (a build
-// with the bias running an unbiased profile) B = 0, and R goes into the FIFO with the record, in
-// setup_done.
-// A record takes one entry, from its setup_done to the walker's load, as in the record FIFO: the
-// core's record credits leave it room.
+// V + B + R has two operands. Seven stages, one a cycle, the record's setup_done the first
+// (docs/cycle-model.md, "Depth bias"): the steps' magnitudes, the larger one, three adder levels
+// of the product with the 8-bit factor f, the constant, the clamp, which writes B + R into a FIFO
+// of its own in record order. With c = 0 and f = 0 (a build with the bias running an unbiased
+// profile) B = 0, and R goes into the FIFO with the record, in setup_done. A record takes one
+// entry, from then to the walker's load, as in the record FIFO: the core's record credits leave
+// it room.
 `include "rastersim_pkg.sv"
 module depth_bias #(
   parameter integer WIDTH = 640,
