@@ -205,7 +205,7 @@ to[setup_offscreen_rows]='wire offscreen = bx1_raw < 0 ||'  # a box above the sc
 file[setup_credit_count]=rastersim_core.sv
 from[setup_credit_count]='credits_held_q < setup_fifo_depth_q;'
 to[setup_credit_count]='credits_held_q <= setup_fifo_depth_q;'  # one record credit too many
-# The depth output stage: the bias unit and the Z adder's encoder (a biased profile's cosim frames:
+# The depth output stage: the bias unit and the depth word's encoder (a biased profile's cosim frames:
 # bias constants and slopes).
 cosim_only_mutants depth_bias.sv "-GSETUP_INTERVAL=4 -GDEPTH_EXPONENT_BITS=3 -GDEPTH_BIAS=1" "${depth_mutants[@]}"
 file[depth_float_mantissa]=depth_word.sv
