@@ -8,7 +8,8 @@ module plane_register #(
   parameter integer REG_BITS = 37,    // s(OUT_BITS+1).GUARD_BITS
   parameter integer GUARD_BITS = 12,  // F
   parameter integer OUT_BITS = 24,    // output u(OUT_BITS), clamped to [0, 2^OUT_BITS - 1]
-  parameter integer ROUNDING = 0      // rastersim_pkg::ROUNDING_NEAREST: out adds 2^(F-1) before the shift; _TRUNCATE: not
+  parameter integer ROUNDING = 0,     // rastersim_pkg::ROUNDING_NEAREST: out adds 2^(F-1) before the shift; _TRUNCATE: not
+  parameter integer ENTRY_AHEAD = 1   // 1: each slot's entry value ready in registers (wide planes); 0: formed on entry
 ) (
   input  wire clk,
   input  wire load,         // take the record; value = start, or the entered slot's left_start
@@ -24,7 +25,8 @@ module plane_register #(
   input  wire [2*REG_BITS-1:0] left_start,  // slot j at [j*REG_BITS]: the plane at its span start, first row
   input  wire [2*REG_BITS-1:0] left_step,   // its change per row without the DDA's carry
   output wire [OUT_BITS-1:0] out,       // clamp((value + 2^(F-1) or 0) >>> F, 0, 2^OUT_BITS - 1)
-  output wire [REG_BITS-1:0] value      // the register itself (the texture planes' divide takes it)
+  output wire [REG_BITS-1:0] value,     // the register itself (the texture planes' divide takes it)
+  output wire [REG_BITS-1:0] next_value  // its value from the next cycle on
 );
   // Parameter legality, as RS_REQUIRE of rastersim_widths.vh checks it (that header is not included
   // here: Verilator 5.006's lint then reports its functions as hiding themselves in rastersim_core).
@@ -39,6 +41,9 @@ module plane_register #(
   // Per left-edge slot j, with the DDA's carry one row behind so that no sum waits for it:
   // along_q - carry_q * step_x = the plane at the slot edge's span start on the row after the
   // current one; along_step_q and along_step_carry_q (= along_step_q - step_x) step along_q.
+  // With ENTRY_AHEAD, along_carry_q = along_q - step_x is kept beside along_q (stepped by the same
+  // sums), so that entering a row selects registers and adds nothing; without it (a narrow plane,
+  // whose subtraction is short) the entry subtracts.
   reg [REG_BITS-1:0] along_q [0:1];
   reg [REG_BITS-1:0] along_step_q [0:1];
   reg [REG_BITS-1:0] along_step_carry_q [0:1];
@@ -54,14 +59,36 @@ module plane_register #(
     for (j = 0; j < 2; j = j + 1) begin : slots
       assign record_left[j] = left_start[j*REG_BITS +: REG_BITS];
       assign record_step[j] = left_step[j*REG_BITS +: REG_BITS];
-      assign entered[j] = carry_q[j] ? along_q[j] - step_x_q : along_q[j];
+      if (ENTRY_AHEAD != 0) begin : ahead
+        reg [REG_BITS-1:0] along_carry_q;
+        // The record's left + step - step_x through one carry chain: a carry-save layer, then one
+        // adder; -step_x is ~step_x + 1, the 1 in the shifted carries' empty low bit.
+        wire [REG_BITS-1:0] a = record_left[j], b = record_step[j], c = ~step_x_in;
+        wire [REG_BITS-1:0] save_sum = a ^ b ^ c;
+        /* verilator lint_off UNUSEDSIGNAL */
+        wire [REG_BITS-1:0] save_carry = (a & b) | (a & c) | (b & c);  // its top bit leaves the width
+        /* verilator lint_on UNUSEDSIGNAL */
+        always @(posedge clk)
+          if (load) along_carry_q <= save_sum + {save_carry[REG_BITS-2:0], 1'b1};
+          else if (row_enter) along_carry_q <= along_carry_q + (carry_q[j] ? along_step_carry_q[j] : along_step_q[j]);
+        assign entered[j] = carry_q[j] ? along_carry_q : along_q[j];
+      end else begin : on_entry
+        assign entered[j] = carry_q[j] ? along_q[j] - step_x_q : along_q[j];
+      end
     end
   endgenerate
 
+  // The value the register takes at this cycle's end (the Z adder's bias works ahead on its low bits).
+  assign next_value = load ? (enter_left ? record_left[enter_slot] : start)
+                    : row_enter ? (enter_left ? entered[enter_slot] : next_row_value)
+                    : next_row ? next_row_value
+                    : step_x ? value_q + step_x_q
+                    : value_q;
+
   integer k;
   always @(posedge clk) begin
+    value_q <= next_value;
     if (load) begin
-      value_q <= enter_left ? record_left[enter_slot] : start;
       row_q <= start;
       step_x_q <= step_x_in;
       step_y_q <= step_y_in;
@@ -72,15 +99,11 @@ module plane_register #(
       end
       carry_q <= left_carry;
     end else if (row_enter) begin
-      value_q <= enter_left ? entered[enter_slot] : next_row_value;
       row_q <= next_row_value;
       for (k = 0; k < 2; k = k + 1) along_q[k] <= along_q[k] + (carry_q[k] ? along_step_carry_q[k] : along_step_q[k]);
       carry_q <= left_carry;
     end else if (next_row) begin
-      value_q <= next_row_value;
       row_q <= next_row_value;
-    end else if (step_x) begin
-      value_q <= value_q + step_x_q;
     end
   end
 

@@ -65,14 +65,14 @@ module z_adder `RS_IMPORT #(
   always @(posedge clk) if (load) flat_q <= flat_rgb;
 
   wire [NP-1:0] depth_rounded;  // clamp((V + R) >> F, 0, 2^Np - 1), R = 2^(F-1) (nearest) or 0 (truncate)
-  wire [Z_REG_BITS-1:0] depth_value;
+  wire [Z_REG_BITS-1:0] depth_value, depth_next;
   plane_register #(.REG_BITS(Z_REG_BITS), .GUARD_BITS(F), .OUT_BITS(NP), .ROUNDING(DEPTH_ROUNDING)) depth_plane (
     .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter),
     .enter_left(enter_left), .enter_slot(enter_slot), .left_carry(left_carry),
     .start(depth_start), .step_x_in(depth_step_x), .step_y_in(depth_step_y),
     .left_start({left_start[SLOT_BITS +: Z_REG_BITS], left_start[0 +: Z_REG_BITS]}),
     .left_step({left_step[SLOT_BITS +: Z_REG_BITS], left_step[0 +: Z_REG_BITS]}),
-    .out(depth_rounded), .value(depth_value));
+    .out(depth_rounded), .value(depth_value), .next_value(depth_next));
 
   // The plane output X with the triangle's bias B: clamp((V + B + R) >> F, 0, 2^Np - 1).
   wire [NP-1:0] depth_x;
@@ -80,22 +80,28 @@ module z_adder `RS_IMPORT #(
     if (DEPTH_BIAS != 0) begin : bias
       reg signed [Z_REG_BITS:0] bias_q;  // B + R
       always @(posedge clk) if (load) bias_q <= depth_bias;
-      // V + (B + R) in Np + F + 3 bits (two operands: R comes with B), then the rounding shift and
-      // the clamp by bit tests: below 0 when the sign is set, above 2^Np - 1 when a bit above
+      // (V + (B + R)) >> F in Np + 3 bits: the high parts' sum and the carry out of the low F
+      // bits' sum, which is registered from the register's next value (its low bits come early
+      // in the plane's carry chains), so the output's chain is Np + 3 bits, not Np + F + 3.
+      wire [F-1:0] bias_next = load ? depth_bias[F-1:0] : bias_q[F-1:0];
+      wire [F:0] low_sum = {1'b0, depth_next[F-1:0]} + {1'b0, bias_next};
+      reg low_carry_q;
+      always @(posedge clk) low_carry_q <= low_sum[F];
+      wire [Z_REG_BITS+1-F:0] rounded = {{2{depth_value[Z_REG_BITS-1]}}, depth_value[Z_REG_BITS-1:F]} +
+                                        {bias_q[Z_REG_BITS], bias_q[Z_REG_BITS:F]} +
+                                        {{(Z_REG_BITS+1-F){1'b0}}, low_carry_q};  // Np + 3 bits, the top one the sign
+      // The clamp by bit tests: below 0 when the sign is set, above 2^Np - 1 when a bit above
       // Np - 1 is.
-      wire signed [Z_REG_BITS+1:0] sum = $signed({{2{depth_value[Z_REG_BITS-1]}}, depth_value}) +
-                                         $signed({bias_q[Z_REG_BITS], bias_q});
-      wire [Z_REG_BITS+1-F:0] rounded = sum[Z_REG_BITS+1:F];  // Np + 3 bits, the top one the sign
       wire negative = rounded[NP+2];
       wire above = |rounded[NP+1:NP];
       assign depth_x = negative ? {NP{1'b0}} : above ? {NP{1'b1}} : rounded[NP-1:0];
       /* verilator lint_off UNUSEDSIGNAL */
-      wire rounded_unused = ^depth_rounded ^ ^sum[F-1:0];
+      wire rounded_unused = ^depth_rounded ^ ^depth_value[F-1:0] ^ ^depth_next[Z_REG_BITS-1:F] ^ ^low_sum[F-1:0];
       /* verilator lint_on UNUSEDSIGNAL */
     end else begin : no_bias
       assign depth_x = depth_rounded;
       /* verilator lint_off UNUSEDSIGNAL */
-      wire bias_unused = ^depth_bias ^ ^depth_value;
+      wire bias_unused = ^depth_bias ^ ^depth_value ^ ^depth_next;
       /* verilator lint_on UNUSEDSIGNAL */
     end
   endgenerate
@@ -109,16 +115,17 @@ module z_adder `RS_IMPORT #(
       // Channel c is r, g, b for c = 0, 1, 2; rgb holds r in [23:16].
       localparam integer AT = Z_REG_BITS + c * COLOR_REG_BITS;  // the channel in a left-edge slot
       /* verilator lint_off UNUSEDSIGNAL */
-      wire [COLOR_REG_BITS-1:0] value_unused;
+      wire [COLOR_REG_BITS-1:0] value_unused, next_unused;
       /* verilator lint_on UNUSEDSIGNAL */
-      plane_register #(.REG_BITS(COLOR_REG_BITS), .GUARD_BITS(F), .OUT_BITS(8), .ROUNDING(COLOR_ROUNDING)) plane (
+      // A colour register is short: its row entry subtracts (ENTRY_AHEAD 0), saving registers.
+      plane_register #(.REG_BITS(COLOR_REG_BITS), .GUARD_BITS(F), .OUT_BITS(8), .ROUNDING(COLOR_ROUNDING), .ENTRY_AHEAD(0)) plane (
         .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter),
         .enter_left(enter_left), .enter_slot(enter_slot), .left_carry(left_carry),
         .start(color_start[c*COLOR_REG_BITS +: COLOR_REG_BITS]), .step_x_in(color_step_x[c*COLOR_REG_BITS +: COLOR_REG_BITS]),
         .step_y_in(color_step_y[c*COLOR_REG_BITS +: COLOR_REG_BITS]),
         .left_start({left_start[SLOT_BITS + AT +: COLOR_REG_BITS], left_start[AT +: COLOR_REG_BITS]}),
         .left_step({left_step[SLOT_BITS + AT +: COLOR_REG_BITS], left_step[AT +: COLOR_REG_BITS]}),
-        .out(gouraud_rgb[8*(2-c) +: 8]), .value(value_unused));
+        .out(gouraud_rgb[8*(2-c) +: 8]), .value(value_unused), .next_value(next_unused));
     end
   endgenerate
 
@@ -135,6 +142,7 @@ module z_adder `RS_IMPORT #(
       for (c = 0; c < 3; c = c + 1) begin : planes
         /* verilator lint_off UNUSEDSIGNAL */
         wire [7:0] rounded_unused;
+        wire [TR-1:0] next_unused;
         /* verilator lint_on UNUSEDSIGNAL */
         plane_register #(.REG_BITS(TR), .GUARD_BITS(F), .OUT_BITS(8)) plane (
           .clk(clk), .load(load), .step_x(step_x), .next_row(next_row), .row_enter(row_enter),
@@ -143,7 +151,7 @@ module z_adder `RS_IMPORT #(
           .step_y_in(texture_record[1 + (6 + c)*TR +: TR]),
           .left_start({texture_record[1 + (15 + c)*TR +: TR], texture_record[1 + (9 + c)*TR +: TR]}),
           .left_step({texture_record[1 + (18 + c)*TR +: TR], texture_record[1 + (12 + c)*TR +: TR]}),
-          .out(rounded_unused), .value(stq[c*TR +: TR]));
+          .out(rounded_unused), .value(stq[c*TR +: TR]), .next_value(next_unused));
       end
     end else begin : no_texture
       /* verilator lint_off UNUSEDSIGNAL */

@@ -172,10 +172,10 @@ python3 - "$work/rtl-bug/plane_register.sv" <<'PY'
 import sys
 path = sys.argv[1]
 text = open(path).read()
-old = "value_q <= value_q + step_x_q;"
+old = ": step_x ? value_q + step_x_q"
 if text.count(old) != 1:
     sys.exit(f"check-install: mutation anchor found {text.count(old)} times in {path}")
-open(path, "w").write(text.replace(old, "value_q <= value_q + step_x_q + 1'b1;"))
+open(path, "w").write(text.replace(old, ": step_x ? value_q + step_x_q + 1'b1"))
 PY
 dpi_example dpi-bug "$work/rtl-bug"
 if "$work/dpi-bug/scoreboard_tb" > "$work/dpi-bug.out"; then

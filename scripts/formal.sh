@@ -36,7 +36,7 @@ declare -A unit includes params mode mutated mutation
 while IFS='|' read -r name u inc par m file mut; do
   unit[$name]=$u includes[$name]=$inc params[$name]=$par mode[$name]=$m mutated[$name]=$file mutation[$name]=$mut
 done <<'TABLE'
-z_adder_recurrence|plane_register|plane_register_recurrence.svh|REG_BITS 6 GUARD_BITS 2 OUT_BITS 3|-tempinduct|plane_register|s/value_q <= value_q + step_x_q;/value_q <= value_q + step_y_q;/
+z_adder_recurrence|plane_register|plane_register_recurrence.svh|REG_BITS 6 GUARD_BITS 2 OUT_BITS 3|-tempinduct|plane_register|s/: step_x ? value_q + step_x_q/: step_x ? value_q + step_y_q/
 walker_edges|scanline_walker|scanline_walker_inputs.svh scanline_walker_edges.svh|WIDTH 2 HEIGHT 2 SUBPIXEL_BITS 1|-seq 5|scanline_walker|s/frag_x + 1'b1 >= span_start_q/frag_x + 1'b1 > span_start_q/
 walker_bounds|scanline_walker|scanline_walker_inputs.svh scanline_walker_bounds.svh|WIDTH 4 HEIGHT 3 SUBPIXEL_BITS 1|-seq 14|span_bounds|s/({X_BITS{hi_pick_3}} \& x1)/({X_BITS{hi_pick_3}} \& (x1 + 1'b1))/
 zbuffer_hazard|zbuffer|zbuffer_hazard.svh|WIDTH 2 HEIGHT 2 Z_BITS 2 MAX_MEMORY_LATENCY 4|-seq 10|zbuffer|s/(issued_q \&\& ahead_q\[head_q\])/1'b0/

@@ -86,14 +86,14 @@ file[entry_covered_first]=scanline_walker.sv
 from[entry_covered_first]='covered_q <= !in_entry[LSB_ROW_EMPTY] && !in_entry[LSB_ENTER_LEFT];'
 to[entry_covered_first]='covered_q <= !in_entry[LSB_ROW_EMPTY];'  # bbox: x0 covered on a non-empty first row
 file[z_adder_first_row]=plane_register.sv
-from[z_adder_first_row]='value_q <= enter_left ? record_left[enter_slot] : start;'
-to[z_adder_first_row]='value_q <= start;'  # the first row's planes not moved to its span start
+from[z_adder_first_row]='assign next_value = load ? (enter_left ? record_left[enter_slot] : start)'
+to[z_adder_first_row]='assign next_value = load ? start'  # the first row's planes not moved to its span start
 file[z_adder_carry]=plane_register.sv
-from[z_adder_carry]='value_q <= value_q + step_x_q;'
-to[z_adder_carry]='value_q <= value_q + step_x_q + 1'"'"'b1;'  # carry-in of the x-step adder flipped
+from[z_adder_carry]=': step_x ? value_q + step_x_q'
+to[z_adder_carry]=': step_x ? value_q + step_x_q + 1'"'"'b1'  # carry-in of the x-step adder flipped
 # The planes along the left edges and the walker's slot and carry mapping.
 file[z_adder_slot_carry]=plane_register.sv
-from[z_adder_slot_carry]='assign entered[j] = carry_q[j] ? along_q[j] - step_x_q : along_q[j];'
+from[z_adder_slot_carry]='assign entered[j] = carry_q[j] ? along_carry_q : along_q[j];'
 to[z_adder_slot_carry]='assign entered[j] = along_q[j];'  # a carried edge's span start entered a pixel off
 file[z_adder_slot_step]=plane_register.sv
 from[z_adder_slot_step]='along_q[k] <= along_q[k] + (carry_q[k] ? along_step_carry_q[k] : along_step_q[k]);'

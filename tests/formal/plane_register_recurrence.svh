@@ -75,3 +75,12 @@
       end
     end
   end
+  // ENTRY_AHEAD: each slot's along_q - step_x, kept in a register of its own.
+  generate
+    if (ENTRY_AHEAD != 0) begin : f_ahead
+      always @* if (f_loaded && !f_wrapped) begin
+        assert(slots[0].ahead.along_carry_q == f_e0 + f_dy - f_sq0 - f_dx);
+        assert(slots[1].ahead.along_carry_q == f_e1 + f_dy - f_sq1 - f_dx);
+      end
+    end
+  endgenerate
