@@ -30,7 +30,8 @@ texture_mutants=(texture_capacity texture_bank_route texture_stall_ignored textu
 texture_sampler_mutants=(texture_clamp_below texture_blend_rounding)
 # The depth output stage's (DEPTH_EXPONENT_BITS 3, DEPTH_BIAS 1; ctest rtl.injected_depth_bugs_are_caught,
 # label long):
-depth_mutants=(depth_bias_shift depth_bias_smaller_step depth_float_mantissa depth_bias_slope_unsigned depth_bias_ready_early)
+depth_mutants=(depth_bias_shift depth_bias_smaller_step depth_float_mantissa depth_bias_slope_unsigned depth_bias_ready_early
+              depth_bias_low_carry)
 # name -> file, text to replace, replacement (fixed strings); params: extra verilator -G settings;
 # check: mutant_check's mode (--cosim-only: the frames of `rastersim cosim --count 100` must catch it;
 # --directed-only: its directed and coverage frames).
@@ -209,6 +210,7 @@ to[setup_credit_count]='credits_held_q <= setup_fifo_depth_q;'  # one record cre
 # bias constants and slopes).
 cosim_only_mutants depth_bias.sv "-GSETUP_INTERVAL=4 -GDEPTH_EXPONENT_BITS=3 -GDEPTH_BIAS=1" "${depth_mutants[@]}"
 file[depth_float_mantissa]=depth_word.sv
+file[depth_bias_low_carry]=z_adder.sv
 from[depth_bias_shift]='wire signed [PB-1:0] product_floor = product_q >>> 4;'
 to[depth_bias_shift]='wire signed [PB-1:0] product_floor = product_q >>> 3;'  # the slope factor read as s5.3
 from[depth_bias_smaller_step]='always @(posedge clk) slope_q <= magnitude_x_q > magnitude_y_q ? magnitude_x_q : magnitude_y_q;'
@@ -219,6 +221,8 @@ from[depth_bias_ready_early]='wire push = biased ? valid_q[STAGES-2] : in_valid;
 to[depth_bias_ready_early]='wire push = biased ? valid_q[STAGES-3] : in_valid;'  # the bias written a stage early: the walker loads a cycle early
 from[depth_float_mantissa]='if (value[NM + e - 1]) encoded = {e[NE-1:0], value[e - 1 +: NM]};'
 to[depth_float_mantissa]='if (value[NM + e - 1]) encoded = {e[NE-1:0], value[e +: NM]};'  # the mantissa one bit too high
+from[depth_bias_low_carry]="{{(Z_REG_BITS+1-F){1'b0}}, low_carry_q};"
+to[depth_bias_low_carry]="{(Z_REG_BITS+2-F){1'b0}};"  # the carry out of the low bits' sum dropped: the biased output an LSB low at times
 file[setup_fifo_empty]=setup_fifo.sv
 from[setup_fifo_empty]='assign empty = count_q == {COUNT_BITS{1'"'"'b0}};'
 to[setup_fifo_empty]='assign empty = count_q <= {{(COUNT_BITS-1){1'"'"'b0}}, 1'"'"'b1};'  # one record looks like none
