@@ -3,8 +3,9 @@
 // S, T, Q plane registers (s9.(P+Ft), q > 0). Pipelined, one fragment per clock, no stall: inputs
 // present in a cycle are in the output registers 29 rising edges later (docs/cycle-model.md,
 // "Texture unit": taken in t, u and v registered at the end of t + 29). Stage 0 takes the
-// magnitudes and the clamp tests, stages 1..27 one quotient bit each (restoring; q's pipeline
-// serves u and v), stage 28 the sign (floor for a negative dividend) and the clamp.
+// operands (a negative one inverted) and the clamp tests, stages 1..27 one quotient bit each
+// (restoring, on q's P + Ft + 1 bits; q's pipeline serves u and v), stage 28 the sign and the
+// clamp.
 `include "rastersim_pkg.sv"
 module texture_divide #(
   parameter integer WIDTH = 640,
@@ -29,20 +30,28 @@ module texture_divide #(
 
   localparam integer REG_BITS = 50 + $clog2(2 * (WIDTH + HEIGHT - 1));
   `RS_REQUIRE(reg_bits_match, REG_BITS == rs_texture_reg_bits(WIDTH, HEIGHT), "texture_divide: register width")
+  // At a textured fragment's pixel 0 < q <= 2^(P+Ft) (docs/arithmetic.md section 5: the Q plane
+  // lies below 2^Ft times its vertex values, all at most 2^P; texture_unit asserts it), so q has
+  // DIVISOR_BITS = P + Ft + 1 bits, 8 fewer than its register, and a partial remainder (< q) one
+  // bit less. An untextured fragment's quotients are not used.
+  localparam integer DIVISOR_BITS = REG_BITS - 8;
+  localparam integer REMAINDER_BITS = DIVISOR_BITS - 1;
   localparam integer QUOTIENT_BITS = rastersim_pkg::UV_BITS - 1;           // 27: |u| < 2^27 unless clamped
   localparam integer SHIFT = QUOTIENT_BITS - rastersim_pkg::UV_FRAC_BITS;  // 7 dividend bits below the first remainder
   localparam integer STAGES = QUOTIENT_BITS + 2;               // 29
   `RS_REQUIRE(stages_match_model, STAGES == RS_TEXTURE_DIVIDE_STAGES, "texture_divide: stage count")
 
-  // Per coordinate (0: u, 1: v) and stage: the partial remainder (< q, one bit more while doubled),
-  // the dividend bits still to shift in (the magnitude's low 7 bits, then zeros), the quotient so
-  // far, the sign and the clamp test.
-  reg [REG_BITS:0] remainder_q [0:1][0:QUOTIENT_BITS];
+  // Per coordinate (0: u, 1: v) and stage: the partial remainder, the dividend bits still to shift
+  // in (the operand's low 7 bits, then 20 fill bits), the quotient so far, the sign and the clamp
+  // test.
+  reg [REMAINDER_BITS-1:0] remainder_q [0:1][0:QUOTIENT_BITS];
   reg [QUOTIENT_BITS-1:0] pending_q [0:1][0:QUOTIENT_BITS];
   reg [QUOTIENT_BITS-1:0] quotient_q [0:1][0:QUOTIENT_BITS];
   reg negative_q [0:1][0:QUOTIENT_BITS];
   reg clamp_q [0:1][0:QUOTIENT_BITS];
-  reg [REG_BITS-1:0] divisor_q [0:QUOTIENT_BITS];
+  // -q modulo 2^(DIVISOR_BITS+1), its top bit (always 1) not kept: a step then adds, and no
+  // inverter stands between the pipeline's register and the step's carry chain.
+  reg [DIVISOR_BITS-1:0] negated_divisor_q [0:QUOTIENT_BITS];
   reg valid_q [0:QUOTIENT_BITS];
   reg [27:0] result_q [0:1];
   reg result_valid_q;
@@ -50,19 +59,28 @@ module texture_divide #(
   wire [REG_BITS-1:0] dividend [0:1];
   assign dividend[0] = in_s;
   assign dividend[1] = in_t;
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [REG_BITS-1:0] q_register = in_q;  // its top 8 bits are 0 at a covered pixel
+  /* verilator lint_on UNUSEDSIGNAL */
+  wire [DIVISOR_BITS-1:0] q = q_register[DIVISOR_BITS-1:0];
 
-  // Stage 0.
+  // Stage 0. A negative dividend d is divided as ~d = -d - 1 (its 20 fraction bits ones), the
+  // quotient inverted at the end: floor(d 2^20 / q) = ~floor(~(d 2^20) / q). No negation, and the
+  // clamp test is the same for both signs.
   genvar c;
   generate
     for (c = 0; c < 2; c = c + 1) begin : coordinate
       wire negative = dividend[c][REG_BITS-1];
-      wire [REG_BITS-1:0] magnitude = negative ? -dividend[c] : dividend[c];
-      // |d| 2^20 / q >= 2^27, |d| >= q 2^7: u clamps (for a negative d, exactly -2^27 is the
-      // floor when |d| = q 2^7, and the clamp gives the same).
-      wire clamp = {7'd0, magnitude} >= {in_q, 7'd0};
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire [REG_BITS-1:0] operand = negative ? ~dividend[c] : dividend[c];  // >= 0: the top bit is 0
+      /* verilator lint_on UNUSEDSIGNAL */
+      // The quotient reaches 2^27 (u clamps: to 2^27 - 1, or to -2^27 below it) when
+      // operand 2^20 (+ 2^20 - 1) >= q 2^27, that is when operand >> 7 >= q.
+      wire clamp = operand[REG_BITS-2:SHIFT] >= q;
       always @(posedge clk) begin
-        remainder_q[c][0] <= {8'd0, magnitude[REG_BITS-1:SHIFT]};
-        pending_q[c][0] <= {magnitude[SHIFT-1:0], {rastersim_pkg::UV_FRAC_BITS{1'b0}}};
+        // Unless the quotient clamps, operand >> 7 < q fits the remainder.
+        remainder_q[c][0] <= operand[SHIFT +: REMAINDER_BITS];
+        pending_q[c][0] <= {operand[SHIFT-1:0], {rastersim_pkg::UV_FRAC_BITS{negative}}};
         quotient_q[c][0] <= {QUOTIENT_BITS{1'b0}};
         negative_q[c][0] <= negative;
         clamp_q[c][0] <= clamp;
@@ -70,7 +88,7 @@ module texture_divide #(
     end
   endgenerate
   always @(posedge clk) begin
-    divisor_q[0] <= in_q;
+    negated_divisor_q[0] <= -q;
     valid_q[0] <= in_valid && !rst;
   end
 
@@ -79,11 +97,11 @@ module texture_divide #(
   generate
     for (k = 1; k <= QUOTIENT_BITS; k = k + 1) begin : step
       for (c = 0; c < 2; c = c + 1) begin : coordinate
-        wire [REG_BITS+1:0] doubled = {remainder_q[c][k-1], pending_q[c][k-1][QUOTIENT_BITS-1]};
-        wire [REG_BITS+1:0] difference = doubled - {2'd0, divisor_q[k-1]};
-        wire fits = !difference[REG_BITS+1];  // doubled >= q
+        wire [DIVISOR_BITS-1:0] doubled = {remainder_q[c][k-1], pending_q[c][k-1][QUOTIENT_BITS-1]};
+        wire [DIVISOR_BITS:0] difference = {1'b0, doubled} + {1'b1, negated_divisor_q[k-1]};  // doubled - q
+        wire fits = !difference[DIVISOR_BITS];  // doubled >= q
         always @(posedge clk) begin
-          remainder_q[c][k] <= fits ? difference[REG_BITS:0] : doubled[REG_BITS:0];
+          remainder_q[c][k] <= fits ? difference[REMAINDER_BITS-1:0] : doubled[REMAINDER_BITS-1:0];
           pending_q[c][k] <= {pending_q[c][k-1][QUOTIENT_BITS-2:0], 1'b0};
           quotient_q[c][k] <= {quotient_q[c][k-1][QUOTIENT_BITS-2:0], fits};
           negative_q[c][k] <= negative_q[c][k-1];
@@ -91,20 +109,22 @@ module texture_divide #(
         end
       end
       always @(posedge clk) begin
-        divisor_q[k] <= divisor_q[k-1];
+        negated_divisor_q[k] <= negated_divisor_q[k-1];
         valid_q[k] <= valid_q[k-1] && !rst;
       end
     end
   endgenerate
 
-  // Stage 28: floor(-m) = -q0 - (remainder != 0); the clamp.
+  // Stage 28: the quotient, inverted for a negative dividend; the clamp.
   generate
     for (c = 0; c < 2; c = c + 1) begin : finish
       wire [27:0] magnitude = {1'b0, quotient_q[c][QUOTIENT_BITS]};
-      wire inexact = |remainder_q[c][QUOTIENT_BITS];
-      wire [27:0] floored = negative_q[c][QUOTIENT_BITS] ? -magnitude - {27'd0, inexact} : magnitude;
       wire [27:0] limit = negative_q[c][QUOTIENT_BITS] ? 28'h8000000 : 28'h7FFFFFF;
-      always @(posedge clk) result_q[c] <= clamp_q[c][QUOTIENT_BITS] ? limit : floored;
+      always @(posedge clk)
+        result_q[c] <= clamp_q[c][QUOTIENT_BITS] ? limit : negative_q[c][QUOTIENT_BITS] ? ~magnitude : magnitude;
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire remainder_unused = ^remainder_q[c][QUOTIENT_BITS];
+      /* verilator lint_on UNUSEDSIGNAL */
     end
   endgenerate
   always @(posedge clk) result_valid_q <= valid_q[QUOTIENT_BITS] && !rst;
