@@ -80,7 +80,9 @@ module texture_divide #(
       always @(posedge clk) begin
         // Unless the quotient clamps, operand >> 7 < q fits the remainder.
         remainder_q[c][0] <= operand[SHIFT +: REMAINDER_BITS];
-        pending_q[c][0] <= {operand[SHIFT-1:0], {rastersim_pkg::UV_FRAC_BITS{negative}}};
+        // The fill is don't-care when the quotient clamps: clearing it there keeps the fill bits
+        // from being a plain delay of the sign, which synthesis would share across the stages.
+        pending_q[c][0] <= {operand[SHIFT-1:0], {rastersim_pkg::UV_FRAC_BITS{negative && !clamp}}};
         quotient_q[c][0] <= {QUOTIENT_BITS{1'b0}};
         negative_q[c][0] <= negative;
         clamp_q[c][0] <= clamp;

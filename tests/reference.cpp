@@ -108,7 +108,6 @@ i128 twice_area(const SnappedTriangle& tri) {
 }
 
 PixelRect bounding_box(const SnappedTriangle& tri, const Profile& profile) {
-  const int S = profile.subpixel_bits;
   const i128 x_min = std::min({tri.v[0].x, tri.v[1].x, tri.v[2].x}), x_max = std::max({tri.v[0].x, tri.v[1].x, tri.v[2].x});
   const i128 y_min = std::min({tri.v[0].y, tri.v[1].y, tri.v[2].y}), y_max = std::max({tri.v[0].y, tri.v[1].y, tri.v[2].y});
   PixelRect r{profile.width, profile.height, -1, -1};
@@ -124,7 +123,6 @@ PixelRect bounding_box(const SnappedTriangle& tri, const Profile& profile) {
 }
 
 bool beyond_outer_centres(const SnappedTriangle& tri, const Profile& profile) {
-  const int S = profile.subpixel_bits;
   const i128 x_min = std::min({tri.v[0].x, tri.v[1].x, tri.v[2].x}), x_max = std::max({tri.v[0].x, tri.v[1].x, tri.v[2].x});
   const i128 y_min = std::min({tri.v[0].y, tri.v[1].y, tri.v[2].y}), y_max = std::max({tri.v[0].y, tri.v[1].y, tri.v[2].y});
   return x_max < sample(profile, 0, 0).x || x_min > sample(profile, profile.width - 1, 0).x ||

@@ -155,7 +155,9 @@ TEST_P(Rounding_, OutputsFollowTheRuleAndItsBound) {
     }
     EXPECT_GT(checker.checked, 2000);
     // Truncation must really differ from rounding on some outputs, or the test shows nothing.
-    if (depth_rounding == Rounding::Truncate || color_rounding == Rounding::Truncate) EXPECT_GT(checker.truncated_lower, 100);
+    if (depth_rounding == Rounding::Truncate || color_rounding == Rounding::Truncate) {
+      EXPECT_GT(checker.truncated_lower, 100);
+    }
   }
 }
 
