@@ -1,6 +1,7 @@
 // Perspective divide: a textured fragment's u and v from its S = u/w, T = v/w and Q = 1/w plane
 // registers (docs/arithmetic.md section 5), the texture sampler's input. The registers share their
-// scale (s9.(P+Ft)), so the quotient needs no alignment: u = floor(Vs 2^20 / Vq), clamped to s8.20.
+// scale (s9.(P+Ft)), so the quotient needs no alignment: with D = Widths::texture_divide_shift,
+// u = floor(floor(Vs / 2^D) 2^20 / floor(Vq / 2^D)), clamped to s8.20.
 #pragma once
 
 #include <cstdint>
@@ -24,8 +25,9 @@ inline int32_t divide_texture_coordinate(int64_t numerator, int64_t q) {
   return int32_t(quotient < kMin ? kMin : quotient > kMax ? kMax : quotient);
 }
 
-inline TextureCoordinate perspective_divide(int64_t s, int64_t t, int64_t q) {
-  return {divide_texture_coordinate(s, q), divide_texture_coordinate(t, q)};
+// The registers' low `shift` bits dropped first (arithmetic shifts: floors).
+inline TextureCoordinate perspective_divide(int64_t s, int64_t t, int64_t q, int shift) {
+  return {divide_texture_coordinate(s >> shift, q >> shift), divide_texture_coordinate(t >> shift, q >> shift)};
 }
 
 }  // namespace rastersim

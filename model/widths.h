@@ -12,10 +12,14 @@ namespace rastersim {
 
 // Textured triangles (docs/arithmetic.md section 5): the vertices' Q = 1/w, S = u/w, T = v/w carry
 // P fraction bits, and one triangle's w ratio is at most 2^kMaxTextureWRatioLog2, which with P bounds
-// the divided u, v within 0.0024 texel of a 1024-texel texture. P = 41 makes the largest profile's
+// the divided u, v within 0.0026 texel of a 1024-texel texture. P = 41 makes the largest profile's
 // texture registers exactly 64 bits (docs/widths.md).
 constexpr int kTextureFractionBits = 41;
 constexpr int kMaxTextureWRatioLog2 = 14;
+// The perspective divide keeps this many of the registers' Ft guard bits (the rest shifted out of
+// dividend and divisor, a divisor of P + 1 + min(Ft, 4) bits): the bound's constant grows from 194
+// to 202 and the divider's steps shorten (docs/arithmetic.md section 5).
+constexpr int kTextureDivideGuardBits = 4;
 constexpr int kTextureVertexBits = kTextureFractionBits + 9;  // m_t: S, T s8.P (Q u1.P with leading zeros)
 
 struct Widths {
@@ -35,6 +39,7 @@ struct Widths {
   int texture_guard_bits;    // Ft, the texture planes' fraction bits beyond P: always the derived F
   int texture_reg_bits;      // texture plane registers (S, T, Q), s9.(P+Ft), wrap
   int texture_divider_bits;  // widest texture plane dividend magnitude
+  int texture_divide_shift;  // Ft - min(Ft, kTextureDivideGuardBits): register bits the divide drops
   int x_bits;            // pixel x counter, u
   int y_bits;            // pixel y counter, u
   int addr_bits;         // z-buffer word address y * W + x
@@ -75,6 +80,8 @@ constexpr Widths derive_widths(int width, int height, int subpixel_bits, int z_b
   w.texture_reg_bits = kTextureFractionBits + w.texture_guard_bits + 9;
   w.texture_divider_bits =
       unsigned_bits(36 * (i128(1) << (kTextureFractionBits + 7)) * WH * (i128(1) << w.texture_guard_bits));
+  w.texture_divide_shift =
+      w.texture_guard_bits > kTextureDivideGuardBits ? w.texture_guard_bits - kTextureDivideGuardBits : 0;
   w.x_bits = unsigned_bits(W - 1);
   w.y_bits = unsigned_bits(H - 1);
   w.addr_bits = unsigned_bits(W * H - 1);

@@ -135,6 +135,7 @@ class ZAdder {
                       profile.depth_rounding},
         color_format_{widths.color_reg_bits, widths.guard_bits, 255, profile.color_rounding},
         texture_format_{widths.texture_reg_bits, widths.texture_guard_bits, 0, Rounding::Nearest},
+        texture_divide_shift_(widths.texture_divide_shift),
         depth_output_{depth_format_, profile} {}
 
   // The depth output is the depth register's rounded value (no bias, the fixed-point word): what the
@@ -202,7 +203,8 @@ class ZAdder {
   // A textured triangle's u, v at the current pixel: the perspective divide of its S, T, Q registers.
   TextureCoordinate texture_coordinate() const {
     const uint64_t* v = texture_.value;
-    return perspective_divide(texture_format_.wrap(v[0]), texture_format_.wrap(v[1]), texture_format_.wrap(v[2]));
+    return perspective_divide(texture_format_.wrap(v[0]), texture_format_.wrap(v[1]), texture_format_.wrap(v[2]),
+                              texture_divide_shift_);
   }
 
   PlaneRegister depth_register() const { return {value_[0], depth_format_}; }
@@ -269,6 +271,7 @@ class ZAdder {
   bool gouraud_;
   bool textured_ = false;
   PlaneFormat depth_format_, color_format_, texture_format_;
+  int texture_divide_shift_;  // Widths::texture_divide_shift
   DepthOutput depth_output_;
   int64_t depth_bias_ = 0;  // the loaded triangle's B (DepthOutput::bias)
   TextureRegisters texture_;

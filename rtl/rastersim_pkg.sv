@@ -53,6 +53,8 @@ package rastersim_pkg;
   // A vertex's texture coordinates (model/triangle.h SnappedVertex): S and T s8.P, Q u1.P with
   // leading zeros, P = TEXTURE_FRACTION_BITS; the command's cmd_texture0..2, S in the low bits.
   localparam integer TEXTURE_FRACTION_BITS = 41;
+  // The perspective divide keeps this many of the registers' Ft guard bits (model/widths.h).
+  localparam integer TEXTURE_DIVIDE_GUARD_BITS = 4;
   localparam integer TEXTURE_VERTEX_BITS = TEXTURE_FRACTION_BITS + 9;
   typedef struct packed {
     logic signed [TEXTURE_VERTEX_BITS-1:0] q, t, s;

@@ -157,6 +157,11 @@ localparam integer RS_TEXTURE_DIVIDE_STAGES = 29;
 function automatic integer rs_texture_reg_bits(input integer w, input integer h);
   rs_texture_reg_bits = rastersim_pkg::TEXTURE_FRACTION_BITS + rs_guard_bits(w, h, 0) + 9;
 endfunction
+// The register bits the perspective divide drops: Ft - min(Ft, TEXTURE_DIVIDE_GUARD_BITS).
+function automatic integer rs_texture_divide_shift(input integer w, input integer h);
+  rs_texture_divide_shift = rs_guard_bits(w, h, 0) > rastersim_pkg::TEXTURE_DIVIDE_GUARD_BITS
+                                ? rs_guard_bits(w, h, 0) - rastersim_pkg::TEXTURE_DIVIDE_GUARD_BITS : 0;
+endfunction
 
 // The texture record beside the setup record (builds with TEXTURE = 1; model/triangle_setup.h
 // SetupResult::textured, texture, left[j].texture): bit 0 the textured flag, then 21 registers of

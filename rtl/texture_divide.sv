@@ -1,11 +1,11 @@
 // The texture unit's perspective divide (model/texture_divide.h; docs/arithmetic.md section 5): a textured
-// fragment's u = clamp(floor(s 2^20 / q), -2^27, 2^27 - 1) and v from t likewise, s8.20, from its
-// S, T, Q plane registers (s9.(P+Ft), q > 0). Pipelined, one fragment per clock, no stall: inputs
-// present in a cycle are in the output registers 29 rising edges later (docs/cycle-model.md,
-// "Texture unit": taken in t, u and v registered at the end of t + 29). Stage 0 takes the
-// operands (a negative one inverted) and the clamp tests, stages 1..27 one quotient bit each
-// (restoring, on q's P + Ft + 1 bits; q's pipeline serves u and v), stage 28 the sign and the
-// clamp.
+// fragment's u = clamp(floor(floor(s / 2^D) 2^20 / floor(q / 2^D)), -2^27, 2^27 - 1) and v from t
+// likewise, s8.20, from its S, T, Q plane registers (s9.(P+Ft), q > 0; D = Ft - min(Ft, 4)).
+// Pipelined, one fragment per clock, no stall: inputs present in a cycle are in the output
+// registers 29 rising edges later (docs/cycle-model.md, "Texture unit": taken in t, u and v
+// registered at the end of t + 29). Stage 0 takes the operands (a negative one inverted) and the
+// clamp tests, stages 1..27 one quotient bit each (restoring, on the shifted q's P + 1 + min(Ft, 4)
+// bits; q's pipeline serves u and v), stage 28 the sign and the clamp.
 `include "rastersim_pkg.sv"
 module texture_divide #(
   parameter integer WIDTH = 640,
@@ -30,11 +30,15 @@ module texture_divide #(
 
   localparam integer REG_BITS = 50 + $clog2(2 * (WIDTH + HEIGHT - 1));
   `RS_REQUIRE(reg_bits_match, REG_BITS == rs_texture_reg_bits(WIDTH, HEIGHT), "texture_divide: register width")
+  // The registers' low DIVIDE_SHIFT bits are dropped (the model's Widths::texture_divide_shift):
+  // the divide keeps min(Ft, 4) of their Ft guard bits.
+  localparam integer DIVIDE_SHIFT = rs_texture_divide_shift(WIDTH, HEIGHT);
+  localparam integer OPERAND_BITS = REG_BITS - DIVIDE_SHIFT;
   // At a textured fragment's pixel 0 < q <= 2^(P+Ft) (docs/arithmetic.md section 5: the Q plane
-  // lies below 2^Ft times its vertex values, all at most 2^P; texture_unit asserts it), so q has
-  // DIVISOR_BITS = P + Ft + 1 bits, 8 fewer than its register, and a partial remainder (< q) one
-  // bit less. An untextured fragment's quotients are not used.
-  localparam integer DIVISOR_BITS = REG_BITS - 8;
+  // lies below 2^Ft times its vertex values, all at most 2^P; texture_unit asserts it), so the
+  // shifted q has DIVISOR_BITS = P + min(Ft, 4) + 1 bits, 8 fewer than its operand, and a partial
+  // remainder (< q) one bit less. An untextured fragment's quotients are not used.
+  localparam integer DIVISOR_BITS = OPERAND_BITS - 8;
   localparam integer REMAINDER_BITS = DIVISOR_BITS - 1;
   localparam integer QUOTIENT_BITS = rastersim_pkg::UV_BITS - 1;           // 27: |u| < 2^27 unless clamped
   localparam integer SHIFT = QUOTIENT_BITS - rastersim_pkg::UV_FRAC_BITS;  // 7 dividend bits below the first remainder
@@ -56,13 +60,15 @@ module texture_divide #(
   reg [27:0] result_q [0:1];
   reg result_valid_q;
 
-  wire [REG_BITS-1:0] dividend [0:1];
-  assign dividend[0] = in_s;
-  assign dividend[1] = in_t;
+  // The operands, floor(V / 2^DIVIDE_SHIFT) (an arithmetic shift).
   /* verilator lint_off UNUSEDSIGNAL */
+  wire [REG_BITS-1:0] s_register = in_s, t_register = in_t;
   wire [REG_BITS-1:0] q_register = in_q;  // its top 8 bits are 0 at a covered pixel
   /* verilator lint_on UNUSEDSIGNAL */
-  wire [DIVISOR_BITS-1:0] q = q_register[DIVISOR_BITS-1:0];
+  wire [OPERAND_BITS-1:0] dividend [0:1];
+  assign dividend[0] = s_register[REG_BITS-1:DIVIDE_SHIFT];
+  assign dividend[1] = t_register[REG_BITS-1:DIVIDE_SHIFT];
+  wire [DIVISOR_BITS-1:0] q = q_register[DIVIDE_SHIFT +: DIVISOR_BITS];
 
   // Stage 0. A negative dividend d is divided as ~d = -d - 1 (its 20 fraction bits ones), the
   // quotient inverted at the end: floor(d 2^20 / q) = ~floor(~(d 2^20) / q). No negation, and the
@@ -70,13 +76,13 @@ module texture_divide #(
   genvar c;
   generate
     for (c = 0; c < 2; c = c + 1) begin : coordinate
-      wire negative = dividend[c][REG_BITS-1];
+      wire negative = dividend[c][OPERAND_BITS-1];
       /* verilator lint_off UNUSEDSIGNAL */
-      wire [REG_BITS-1:0] operand = negative ? ~dividend[c] : dividend[c];  // >= 0: the top bit is 0
+      wire [OPERAND_BITS-1:0] operand = negative ? ~dividend[c] : dividend[c];  // >= 0: the top bit is 0
       /* verilator lint_on UNUSEDSIGNAL */
       // The quotient reaches 2^27 (u clamps: to 2^27 - 1, or to -2^27 below it) when
       // operand 2^20 (+ 2^20 - 1) >= q 2^27, that is when operand >> 7 >= q.
-      wire clamp = operand[REG_BITS-2:SHIFT] >= q;
+      wire clamp = operand[OPERAND_BITS-2:SHIFT] >= q;
       always @(posedge clk) begin
         // Unless the quotient clamps, operand >> 7 < q fits the remainder.
         remainder_q[c][0] <= operand[SHIFT +: REMAINDER_BITS];

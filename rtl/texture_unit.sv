@@ -219,7 +219,9 @@ module texture_unit `RS_IMPORT #(
   `RS_ASSERT_HELD(read_held, tex_rd_valid, tex_rd_ready, tex_rd_addr)
   `RS_ASSERT_HELD(fragment_held, out_valid, out_ready, {out_rgb, out_z, out_y, out_x})
   `RS_ASSERT(within_capacity, {1'b0, held_q} <= capacity)
-  // A textured fragment's Q register lies in (0, 2^(P+Ft)]: the divider is that wide (texture_divide.sv).
+  // A textured fragment's Q register lies in [2^D, 2^(P+Ft)] (D the bits the divide drops): the
+  // shifted divisor is positive and as wide as texture_divide.sv's divider.
   `RS_ASSERT(divisor_in_range, !taken_q || !taken_frag_q[FRAG_BITS-1] ||
-                               (taken_q_q != {TR{1'b0}} && taken_q_q <= (TR'(1) << (TR - 9))))
+                               (taken_q_q >= (TR'(1) << rs_texture_divide_shift(WIDTH, HEIGHT)) &&
+                                taken_q_q <= (TR'(1) << (TR - 9))))
 endmodule

@@ -1,7 +1,7 @@
 // Texture coordinates of textured triangles (docs/arithmetic.md section 5): the snapped Q, S, T
 // against their defining inequalities, and every covered pixel's divided u, v against a
 // perspective-correct reference in long double from the vertices' exact u, v, w and the exact
-// pixel centre, within the documented bound 194 rho 2^-P + 2^-20 and 1/256 texel of a 1024-texel
+// pixel centre, within the documented bound 202 rho 2^-P + 2^-20 and 1/256 texel of a 1024-texel
 // texture, on random perspective triangles at S = 1, 4 and 8.
 #include <gtest/gtest.h>
 
@@ -119,7 +119,7 @@ std::vector<PixelCoordinate> absolute_coordinates(const SetupResult& r, const Wi
       auto reg = [&](const PlaneSetup& p) {
         return wrap_signed(i128(p.start) + i128(i) * p.step_x + i128(j) * p.step_y, w.texture_reg_bits);
       };
-      out.push_back({x, y, perspective_divide(reg(r.texture[0]), reg(r.texture[1]), reg(r.texture[2]))});
+      out.push_back({x, y, perspective_divide(reg(r.texture[0]), reg(r.texture[1]), reg(r.texture[2]), w.texture_divide_shift)});
     }
   return out;
 }
@@ -139,7 +139,7 @@ void check_triangle(const ScreenTriangle& tri, const Profile& profile, bool pers
     w_max = std::max({tri.v[0].w, tri.v[1].w, tri.v[2].w});
   }
   const long double rho = static_cast<long double>(w_max) / w_min;
-  const long double bound = 194 * rho * std::ldexp(1.0L, -P) + std::ldexp(1.0L, -kUvFracBits);
+  const long double bound = 202 * rho * std::ldexp(1.0L, -P) + std::ldexp(1.0L, -kUvFracBits);
   const long double one_256th_texel = std::ldexp(1.0L, -8 - kMaxTextureLog2);
   // The vertices' screen positions are on the subpixel grid: these doubles are the snapped ones.
   const ScreenVertex* v = tri.v;
@@ -232,6 +232,25 @@ TEST(PerspectiveDivide, FloorsAndClamps) {
   EXPECT_EQ(divide_texture_coordinate(int64_t(128) * q, q), (1 << 27) - 1);  // 128 clamps
   EXPECT_EQ(divide_texture_coordinate(-int64_t(128) * q, q), -(1 << 27));   // -128 is representable
   EXPECT_THROW(divide_texture_coordinate(1, 0), WidthOverflow);
+}
+
+// The registers' low bits dropped before the divide are floors of both operands: (-2^20 - 1) / 2^3
+// floors to -2^17 - 1 and (3 2^20 + 7) / 2^3 to 3 2^17, and (-2^37 - 2^20) / (3 2^17) = -349528
+// exactly (a dividend shifted toward zero would give floor(-2^20 / 3) = -349526).
+TEST(PerspectiveDivide, DropsLowBitsAsFloors) {
+  const TextureCoordinate uv = perspective_divide(-(int64_t(1) << 20) - 1, int64_t(1) << 20, (int64_t(3) << 20) + 7, 3);
+  EXPECT_EQ(uv.u, -349528);
+  EXPECT_EQ(uv.v, 349525);
+  EXPECT_THROW(perspective_divide(0, 0, 7, 3), WidthOverflow);  // 7 / 2^3 floors to 0
+}
+
+// The divide keeps 4 of the texture registers' guard bits: none dropped up to Ft = 4.
+TEST(PerspectiveDivide, ShiftKeepsFourGuardBits) {
+  EXPECT_EQ(derive_widths(4, 2, 4, 24, 0).texture_guard_bits, 4);
+  EXPECT_EQ(derive_widths(4, 2, 4, 24, 0).texture_divide_shift, 0);
+  EXPECT_EQ(derive_widths(640, 480, 4, 24, 0).texture_guard_bits, 12);
+  EXPECT_EQ(derive_widths(640, 480, 4, 24, 0).texture_divide_shift, 8);
+  EXPECT_EQ(derive_widths(4096, 4096, 4, 24, 0).texture_divide_shift, 10);
 }
 
 }  // namespace

@@ -68,7 +68,7 @@ void check_divide_unit(int width, int height, uint64_t seed, int64_t count) {
     if (expect) {
       const Operands o = in_flight.front().second;
       in_flight.pop_front();
-      const TextureCoordinate want = perspective_divide(o.s, o.t, o.q);
+      const TextureCoordinate want = perspective_divide(o.s, o.t, o.q, w.texture_divide_shift);
       const int32_t u = int32_t(uint32_t(unit->out_u) << 4) >> 4, v = int32_t(uint32_t(unit->out_v) << 4) >> 4;
       ASSERT_EQ(u, want.u) << "s " << o.s << " q " << o.q;
       ASSERT_EQ(v, want.v) << "t " << o.t << " q " << o.q;
