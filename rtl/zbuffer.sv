@@ -149,18 +149,21 @@ module zbuffer `RS_IMPORT #(
   assign stall = head_valid && !issue;
 
   // The fragment in its data cycle r+L: slot done_slot (done_onehot_q), live until the end of this
-  // cycle; its word is on mem_rd_depth. Its data was read from the RAM and its live bit taken in
-  // the cycle before (slot next_done_slot then), or, at L = 1, it is the fragment issued in that
-  // cycle (latest_q, issued_q).
+  // cycle; its word is on mem_rd_depth. Its data is in a register (done_data_q), so the depth test
+  // starts from flip-flops: chosen in the cycle before from the RAM's read of two cycles before
+  // (slot read_slot then: the same age two cycles on), or, at L = 2, the fragment issued two
+  // cycles before (latest_q), or, at L = 1, the head issued in the cycle before. Its live bit is
+  // taken in the cycle before (next_done_onehot), or, at L = 1, it is that cycle's issue (issued_q).
   wire [RING_BITS-1:0] done_slot = slot_of_age(now_slot_q, cfg_memory_latency);
-  wire [RING_BITS-1:0] next_done_slot = done_slot + 1'b1;  // the same age one cycle on
+  wire [RING_BITS-1:0] read_slot = done_slot + RING_BITS'(2);
   reg  [RING-1:0]      done_onehot_q;
   wire [RING-1:0]      next_done_onehot = {done_onehot_q[RING-2:0], done_onehot_q[RING-1]};
   reg                  done_live_q;  // at L >= 2 the issue of the last cycle is not the done slot's
   wire                 latency_one = cfg_memory_latency == LATENCY_BITS'(1);
+  wire                 latency_two = cfg_memory_latency == LATENCY_BITS'(2);
   wire                 done_valid = latency_one ? issued_q : done_live_q;
-  reg  [DATA_BITS-1:0] ram_read_q, latest_q;
-  wire [DATA_BITS-1:0] done_data = latency_one ? latest_q : ram_read_q;
+  reg  [DATA_BITS-1:0] ram_read_q, latest_q, done_data_q;
+  wire [DATA_BITS-1:0] done_data = done_data_q;
   wire [ADDR_BITS-1:0] done_addr = done_data[Z_BITS + 24 +: ADDR_BITS];
   wire [Z_BITS-1:0]    done_z = done_data[24 +: Z_BITS];
   wire [23:0]          done_rgb = done_data[23:0];
@@ -215,7 +218,8 @@ module zbuffer `RS_IMPORT #(
   always @(posedge clk) begin
     ring_pixel_q[now_slot_q] <= head_pixel;
     ring_data_q[now_slot_q] <= head_data;
-    ram_read_q <= ring_data_q[next_done_slot];
+    ram_read_q <= ring_data_q[read_slot];
+    done_data_q <= latency_one ? head_data : latency_two ? latest_q : ram_read_q;
     last_onehot_q <= now_onehot_q;
     latest_q <= head_data;
     for (e = 0; e < 2; e = e + 1)

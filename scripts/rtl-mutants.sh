@@ -116,11 +116,11 @@ for m in hazard_window_short hazard_address_bit ring_read_slot hazard_last_read 
   params[$m]="-GSETUP_INTERVAL=4"
 done
 from[hazard_window_short]='1'"'"'b1} << done_slot;'
-to[hazard_window_short]='1'"'"'b1} << next_done_slot;'  # the done slot one age short: results and retirement a cycle early
+to[hazard_window_short]='1'"'"'b1} << (done_slot + RING_BITS'"'"'(1));'  # the done slot one age short: results and retirement a cycle early
 from[hazard_address_bit]='frag_ahead : ring_pixel_q[k] == frag_pixel;'
 to[hazard_address_bit]='frag_ahead : ring_pixel_q[k][PIXEL_BITS-1:1] == frag_pixel[PIXEL_BITS-1:1];'  # the compare ignores bit 0 of x
-from[ring_read_slot]='ram_read_q <= ring_data_q[next_done_slot];'
-to[ring_read_slot]='ram_read_q <= ring_data_q[done_slot];'  # the in-flight RAM read a cycle late
+from[ring_read_slot]='ram_read_q <= ring_data_q[read_slot];'
+to[ring_read_slot]='ram_read_q <= ring_data_q[done_slot + RING_BITS'"'"'(1)];'  # the in-flight RAM read a cycle late
 from[hazard_last_read]=' || (issued_q && ahead_q[head_q]);'
 to[hazard_last_read]=';'  # the fragment read in the last cycle not compared with the head
 from[hazard_taken_slot]='frag_match[k] = now_onehot_q[k] ? frag_ahead : ring_pixel_q[k] == frag_pixel;'
