@@ -12,7 +12,7 @@ namespace rastersim {
 
 // Textured triangles (docs/arithmetic.md section 5): the vertices' Q = 1/w, S = u/w, T = v/w carry
 // P fraction bits, and one triangle's w ratio is at most 2^kMaxTextureWRatioLog2, which with P bounds
-// the divided u, v within 0.0026 texel of a 1024-texel texture. P = 41 makes the largest profile's
+// the divided u, v within 0.0025 texel of a 1024-texel texture. P = 41 makes the largest profile's
 // texture registers exactly 64 bits (docs/widths.md).
 constexpr int kTextureFractionBits = 41;
 constexpr int kMaxTextureWRatioLog2 = 14;
