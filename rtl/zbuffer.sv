@@ -163,10 +163,9 @@ module zbuffer `RS_IMPORT #(
   wire                 latency_two = cfg_memory_latency == LATENCY_BITS'(2);
   wire                 done_valid = latency_one ? issued_q : done_live_q;
   reg  [DATA_BITS-1:0] ram_read_q, latest_q, done_data_q;
-  wire [DATA_BITS-1:0] done_data = done_data_q;
-  wire [ADDR_BITS-1:0] done_addr = done_data[Z_BITS + 24 +: ADDR_BITS];
-  wire [Z_BITS-1:0]    done_z = done_data[24 +: Z_BITS];
-  wire [23:0]          done_rgb = done_data[23:0];
+  wire [ADDR_BITS-1:0] done_addr = done_data_q[Z_BITS + 24 +: ADDR_BITS];
+  wire [Z_BITS-1:0]    done_z = done_data_q[24 +: Z_BITS];
+  wire [23:0]          done_rgb = done_data_q[23:0];
   reg pass;
   always @(*) begin
     case (cfg_depth_func)
